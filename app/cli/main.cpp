@@ -1,0 +1,28 @@
+// plumb-cli: the headless front end of the Plumb core. Same core, same results as the GUI.
+#include <iostream>
+
+#include "cli/command.hpp"
+#include "common/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Plumb: registration of building survey data (scans to scans, scans to BIM)",
+               "plumb-cli"};
+  app.set_version_flag("--version", std::string("plumb-cli ") + PLUMB_VERSION);
+  app.require_subcommand(1);
+  plumb::cli::Action action;
+  // One line per subcommand (each defined in its own cli/<name>_command.cpp).
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return action ? action() : 0;
+  } catch (const plumb::Canceled&) {
+    std::cerr << "plumb-cli: cancelled\n";
+    return 130;
+  } catch (const std::exception& e) {
+    std::cerr << "plumb-cli: error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,32 @@
+# plumb_core_module(NAME [DEPENDS targets...] [PRIVATE_DEPENDS targets...])
+# Builds the *.cpp of the calling folder into the static library plumb_<NAME> and adds it to
+# the plumb_core umbrella target. Headers are included relative to core/, e.g.
+# #include "model/point_cloud.hpp" or #include "io/e57/e57_reader.hpp".
+function(plumb_core_module name)
+  cmake_parse_arguments(ARG "" "" "DEPENDS;PRIVATE_DEPENDS" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  add_library(plumb_${name} STATIC ${sources})
+  target_include_directories(plumb_${name} PUBLIC ${PROJECT_SOURCE_DIR}/core)
+  target_link_libraries(plumb_${name} PUBLIC ${ARG_DEPENDS} PRIVATE ${ARG_PRIVATE_DEPENDS})
+  target_compile_options(plumb_${name} PRIVATE -Wall -Wextra)
+  set_target_properties(plumb_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  set_property(GLOBAL APPEND PROPERTY PLUMB_CORE_MODULES plumb_${name})
+endfunction()
+
+# plumb_add_test(NAME SOURCES files... LIBS targets... [LABELS labels...] [TIMEOUT s])
+# A GoogleTest executable registered with CTest, one CTest test per gtest case.
+function(plumb_add_test name)
+  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
+  if(NOT ARG_TIMEOUT)
+    set(ARG_TIMEOUT 300)
+  endif()
+  if(NOT ARG_LABELS)
+    set(ARG_LABELS unit)
+  endif()
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main plumb_test_support)
+  target_compile_options(${name} PRIVATE -Wall -Wextra)
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
+    PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT ${ARG_TIMEOUT}
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+endfunction()

@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Plumb developer entry point (Debian 12, as root or with sudo).
+#   packaging/dev.sh demo   install dependencies, build, run the demo registration
+#                           (the GUI when a display exists, headless otherwise)
+#   packaging/dev.sh test   install dependencies, build, run the whole test suite
+#   packaging/dev.sh deps | build | package
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$PWD
+BUILD=${PLUMB_BUILD_DIR:-$ROOT/build}
+JOBS=${PLUMB_JOBS:-$(nproc)}
+
+# Every dependency is a Debian 12 package (see README.md "Dependencies").
+PACKAGES=(
+  build-essential cmake ninja-build ccache pkg-config git
+  libeigen3-dev libpcl-dev libcgal-dev libassimp-dev libtbb-dev
+  nlohmann-json3-dev libpugixml-dev libcli11-dev
+  qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libvtk9-dev
+  libgtest-dev libgmock-dev
+  clang libclang-rt-14-dev
+  xvfb xauth libgl1-mesa-dri
+)
+
+deps() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if ((${#missing[@]})); then
+    echo "== installing: ${missing[*]}"
+    local SUDO=""
+    [[ $(id -u) -ne 0 ]] && SUDO=sudo
+    $SUDO apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends "${missing[@]}"
+  fi
+}
+
+build() {
+  cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  cmake --build "$BUILD" -j "$JOBS"
+}
+
+have_display() { [[ -n "${DISPLAY:-}" || -n "${WAYLAND_DISPLAY:-}" ]]; }
+
+demo() {
+  deps
+  build
+  "$BUILD/app/plumb-cli" demo -o "$BUILD/demo-output" "$@"
+  if have_display && [[ -x "$BUILD/app/plumb" ]]; then
+    exec "$BUILD/app/plumb" --project "$BUILD/demo-output/demo.plumb.json"
+  fi
+}
+
+run_tests() {
+  deps
+  build
+  cd "$BUILD"
+  # GUI tests need a display: CI has none, so every test runs under a virtual X server.
+  local runner=()
+  have_display || runner=(xvfb-run -a -s "-screen 0 1280x1024x24")
+  "${runner[@]}" ctest --output-on-failure -j "$JOBS" --timeout 900 "$@"
+}
+
+case "${1:-}" in
+  deps) deps ;;
+  build) deps; build ;;
+  demo) shift; demo "$@" ;;
+  test) shift; run_tests "$@" ;;
+  package) deps; build; cmake --build "$BUILD" --target package ;;
+  *) sed -n '2,7p' "$0"; exit 2 ;;
+esac
