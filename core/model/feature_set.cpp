@@ -1,0 +1,40 @@
+#include "model/feature_set.hpp"
+
+#include <cmath>
+
+namespace plumb {
+
+bool PlanarPolygon::isVertical(double tolerance_deg) const {
+  return std::abs(normal.z()) <= std::sin(tolerance_deg * M_PI / 180.0);
+}
+
+bool PlanarPolygon::isHorizontal(double tolerance_deg) const {
+  return std::abs(normal.z()) >= std::cos(tolerance_deg * M_PI / 180.0);
+}
+
+void PlanarPolygon::transform(const RigidTransform& t) {
+  // n' = R n, d' = d + n'·t (ALGORITHMS.md "Frames").
+  normal = t.rotation() * normal;
+  offset += normal.dot(t.translation());
+  centroid = t.apply(centroid);
+  origin = t.apply(origin);
+  u_axis = t.rotation() * u_axis;
+  v_axis = t.rotation() * v_axis;
+}
+
+std::array<Segment3D, 4> Opening::edges() const {
+  std::array<Segment3D, 4> e;
+  for (int i = 0; i < 4; ++i) {
+    e[i].a = corners[i];
+    e[i].b = corners[(i + 1) % 4];
+  }
+  return e;
+}
+
+void FeatureSet::transform(const RigidTransform& t) {
+  for (auto& p : planes) p.transform(t);
+  for (auto& o : openings) o.transform(t);
+  for (auto& s : segments) s.transform(t);
+}
+
+}  // namespace plumb
