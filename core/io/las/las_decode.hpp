@@ -1,0 +1,48 @@
+#pragma once
+// Decoding of point data records into PointCloud columns, chunk by chunk. Internal to io/las.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "io/las/las_header.hpp"
+#include "io/las/las_vlr.hpp"
+#include "model/point_cloud.hpp"
+
+namespace plumb::las {
+
+class PointDecoder {
+ public:
+  /// Prepares `cloud` (its offset must already be set) to receive h.point_count points.
+  PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, bool auxiliary,
+               PointCloud& cloud);
+
+  /// Decodes `n` records starting at `records` (h.record_length apart) as points
+  /// [first, first+n).
+  void decode(const std::uint8_t* records, std::size_t n, std::size_t first);
+
+  /// Applies the RGB rule after the last chunk; true when the file held 16-bit colour.
+  bool finishColors();
+  /// Min/max of the decoded world coordinates (empty when no point).
+  Bounds worldBounds() const;
+
+ private:
+  PointLayout layout_;
+  std::size_t stride_;
+  std::array<double, 3> scale_;
+  std::array<double, 3> shift_;  ///< header offset - cloud offset
+  std::array<double, 3> world_offset_;
+  std::vector<ExtraField> extras_;
+  bool auxiliary_;
+  PointCloud& cloud_;
+  std::array<std::int32_t, 3> raw_min_, raw_max_;
+  std::uint16_t color_max_ = 0;
+  ScalarField* angle_ = nullptr;
+  ScalarField* user_ = nullptr;
+  ScalarField* source_ = nullptr;
+  ScalarField* flags_ = nullptr;
+  ScalarField* channel_ = nullptr;
+  ScalarField* nir_ = nullptr;
+  std::vector<ScalarField*> extra_fields_;
+};
+
+}  // namespace plumb::las

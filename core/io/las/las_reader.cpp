@@ -1,0 +1,201 @@
+#include "io/las/las_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+#include "common/error.hpp"
+#include "io/las/las_decode.hpp"
+#include "io/las/las_header.hpp"
+#include "io/las/las_source.hpp"
+#include "io/las/las_vlr.hpp"
+
+namespace plumb {
+namespace {
+using namespace las;
+
+constexpr std::size_t kChunkRecords = 1 << 15;
+
+std::string num(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::string triple(const std::array<double, 3>& v) {
+  return num(v[0]) + " " + num(v[1]) + " " + num(v[2]);
+}
+
+std::string vlrSummary(const LasVlr& v) {
+  std::ostringstream s;
+  s << v.user_id << " " << v.record_id << ", " << v.length << " bytes at byte " << v.at;
+  if (!v.description.empty()) s << ": " << v.description;
+  return s.str();
+}
+
+// Centre of the header bounds rounded to 1 m, unless the header bounds are unusable or do not
+// hold the first point; then the first point rounded to 1 m.
+Eigen::Vector3d chooseOffset(const LasHeader& h, const ByteSource& src) {
+  if (h.point_count == 0) return Eigen::Vector3d::Zero();
+  std::uint8_t rec[12];
+  src.read(h.offset_to_points, rec, sizeof rec);
+  Eigen::Vector3d first;
+  for (int a = 0; a < 3; ++a) {
+    std::int32_t raw;
+    std::memcpy(&raw, rec + 4 * a, 4);
+    first[a] = raw * h.scale[a] + h.offset[a];
+  }
+  bool header_ok = true;
+  Eigen::Vector3d centre;
+  for (int a = 0; a < 3; ++a) {
+    const double lo = h.min[a], hi = h.max[a];
+    header_ok = header_ok && std::isfinite(lo) && std::isfinite(hi) && lo <= hi &&
+                first[a] >= lo - 1.0 && first[a] <= hi + 1.0;
+    centre[a] = (lo + hi) / 2;
+  }
+  const Eigen::Vector3d o = header_ok ? centre : first;
+  Eigen::Vector3d rounded;
+  for (int a = 0; a < 3; ++a) rounded[a] = std::isfinite(o[a]) ? std::round(o[a]) : 0.0;
+  return rounded;
+}
+
+Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
+                       const LasReadOptions& options, Progress* progress) {
+  const std::uint64_t size = src.size();
+  // Header and VLRs: [0, offset_to_points), read once (or used in place for memory input).
+  std::vector<std::uint8_t> owned;
+  std::span<const std::uint8_t> prefix;
+  auto view = [&](std::uint64_t n) {
+    if (src.data()) {
+      prefix = {src.data(), static_cast<std::size_t>(n)};
+    } else {
+      owned.resize(n);
+      src.read(0, owned.data(), n);
+      prefix = owned;
+    }
+  };
+  view(std::min<std::uint64_t>(size, 1 << 16));
+  LasHeader h = parseHeader(prefix, size, file);
+  if (h.offset_to_points > prefix.size()) view(h.offset_to_points);
+  std::vector<std::string> warnings = h.warnings;
+  std::vector<LasVlr> vlrs = parseVlrs(prefix.first(h.offset_to_points), h, file);
+  parseEvlrs(src, h, file, vlrs, warnings);
+  for (const auto& v : vlrs)
+    if (v.user_id == "laszip encoded" && v.record_id == 22204)
+      throw FileError(file, lazMessage("it carries the LASzip VLR"), atByte(v.at, "VLR"));
+
+  const PointLayout layout = pointLayout(h.format());
+  const std::size_t extra_bytes = h.record_length - layout.min_size;
+  std::vector<ExtraField> extras;
+  const LasVlr* extra_vlr = nullptr;
+  for (const auto& v : vlrs)
+    if (v.user_id == "LASF_Spec" && v.record_id == 4 && !extra_vlr) extra_vlr = &v;
+  if (extra_bytes > 0 && !extra_vlr)
+    warnings.push_back(std::to_string(extra_bytes) +
+                       " extra bytes per point without an Extra Bytes VLR; ignored");
+  if (extra_vlr) extras = parseExtraBytes(*extra_vlr, extra_bytes, file, warnings);
+  if (!options.extra_bytes) extras.clear();
+
+  Dataset d;
+  d.source = file;
+  d.format = "las";
+  d.coordinate_system = coordinateSystem(vlrs, h, warnings);
+  Scan scan;
+  scan.name = file.stem().string();
+  PointCloud& cloud = scan.cloud;
+  cloud.offset = chooseOffset(h, src);
+
+  PointDecoder decoder(h, std::move(extras), options.auxiliary_fields, cloud);
+  const std::uint64_t n = h.point_count;
+  std::vector<std::uint8_t> chunk;
+  for (std::uint64_t first = 0; first < n; first += kChunkRecords) {
+    checkCanceled(progress);
+    const std::size_t count = static_cast<std::size_t>(std::min<std::uint64_t>(kChunkRecords, n - first));
+    const std::uint64_t at = h.offset_to_points + first * h.record_length;
+    const std::uint8_t* records;
+    if (src.data()) {
+      records = src.data() + at;
+    } else {
+      chunk.resize(count * h.record_length);
+      src.read(at, chunk.data(), chunk.size());
+      records = chunk.data();
+    }
+    decoder.decode(records, count, static_cast<std::size_t>(first));
+    reportProgress(progress, static_cast<double>(first + count) / static_cast<double>(n),
+                   "reading LAS points");
+  }
+  const bool rgb16 = decoder.finishColors();
+
+  // Header bounds are informative; a disagreement beyond scale rounding is reported.
+  const Bounds actual = decoder.worldBounds();
+  if (!actual.empty()) {
+    for (int a = 0; a < 3; ++a) {
+      const double tol = 2 * std::abs(h.scale[a]) + 1e-6 * std::abs(actual.max[a]);
+      if (!(std::abs(actual.min[a] - h.min[a]) <= tol && std::abs(actual.max[a] - h.max[a]) <= tol)) {
+        warnings.push_back("header bounds (min " + triple(h.min) + ", max " + triple(h.max) +
+                           ") disagree with the points (min " + num(actual.min.x()) + " " +
+                           num(actual.min.y()) + " " + num(actual.min.z()) + ", max " +
+                           num(actual.max.x()) + " " + num(actual.max.y()) + " " +
+                           num(actual.max.z()) + ")");
+        break;
+      }
+    }
+  }
+
+  auto& m = d.metadata;
+  m.emplace_back("LAS version", std::to_string(h.version_major) + "." + std::to_string(h.version_minor));
+  m.emplace_back("point format", std::to_string(h.format()));
+  m.emplace_back("point record length", std::to_string(h.record_length) + " bytes (" +
+                                            std::to_string(extra_bytes) + " extra)");
+  m.emplace_back("point count", std::to_string(n));
+  if (!h.system_identifier.empty()) m.emplace_back("system identifier", h.system_identifier);
+  if (!h.generating_software.empty()) m.emplace_back("generating software", h.generating_software);
+  if (h.creation_year)
+    m.emplace_back("creation date", "day " + std::to_string(h.creation_day) + " of " +
+                                        std::to_string(h.creation_year));
+  m.emplace_back("file source id", std::to_string(h.file_source_id));
+  m.emplace_back("global encoding", std::to_string(h.global_encoding));
+  if (layout.gps_at >= 0)
+    m.emplace_back("GPS time", (h.global_encoding & 1) ? "adjusted standard GPS time"
+                                                       : "GPS week time");
+  if (layout.rgb_at >= 0)
+    m.emplace_back("RGB", rgb16 ? "16-bit (high byte kept)"
+                                : "8-bit values in 16-bit fields (kept as they are)");
+  if (layout.wave_at >= 0) m.emplace_back("waveform packets", "present, not read");
+  m.emplace_back("scale", triple(h.scale));
+  m.emplace_back("offset", triple(h.offset));
+  m.emplace_back("header bounds", "min " + triple(h.min) + ", max " + triple(h.max));
+  std::size_t nv = 0, ne = 0;
+  for (const auto& v : vlrs)
+    m.emplace_back(v.extended ? "EVLR " + std::to_string(++ne) : "VLR " + std::to_string(++nv),
+                   vlrSummary(v));
+  for (auto& w : warnings) m.emplace_back("warning", std::move(w));
+
+  d.scans.push_back(std::move(scan));
+  return d;
+}
+
+bool hasLazExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".laz";
+}
+}  // namespace
+
+Dataset readLas(const std::filesystem::path& path, const LasReadOptions& options,
+                Progress* progress) {
+  if (hasLazExtension(path)) throw FileError(path, lazMessage(".laz file name"));
+  FileSource src(path);
+  return readFromSource(src, path, options, progress);
+}
+
+Dataset readLasBuffer(std::span<const std::uint8_t> bytes, const std::filesystem::path& name,
+                      const LasReadOptions& options, Progress* progress) {
+  MemorySource src(bytes, name);
+  return readFromSource(src, name, options, progress);
+}
+
+}  // namespace plumb

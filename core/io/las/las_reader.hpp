@@ -1,0 +1,55 @@
+#pragma once
+// LAS 1.0-1.4 reader, point data record formats 0-10 (uncompressed).
+//
+// Rules (see also shared/docs/LAS_FACTS.md):
+// - Positions: world = record_int32 * scale + header offset, computed in double. The cloud's
+//   double `offset` is the centre of the header bounds rounded to 1 m (the first point
+//   rounded to 1 m when the header bounds are absent or do not contain it), so float local
+//   coordinates keep sub-millimetre precision for georeferenced data.
+// - Intensity is kept as stored (0..65535, no rescale); return number/count and
+//   classification as stored (PDRF 0-5: class = bits 0-4 of the class byte; 6-10: full byte).
+// - RGB: LAS channels are 16-bit. If any channel of any point exceeds 255 the file is 16-bit
+//   and each channel becomes value >> 8 (the high byte; the writer stores v * 257, so a
+//   round trip is exact). If no channel exceeds 255 the writer stored 8-bit values (common
+//   in older files) and they are kept as they are.
+// - GPS time goes to `timestamps` as stored; its kind (week time / adjusted standard) is in
+//   the metadata ("GPS time").
+// - Extra bytes described by the Extra Bytes VLR (LASF_Spec 4) become ScalarFields named after
+//   their descriptor (arrays: "name[0]".."name[2]"), scale/offset applied. Undescribed extra
+//   bytes are ignored with a "warning" metadata entry.
+// - VLRs/EVLRs are listed in the metadata ("VLR n" / "EVLR n"). The coordinate system comes
+//   from the WKT record (2112), else "EPSG:<code>" from the GeoTIFF keys (34735), else the
+//   GeoTIFF ASCII citation.
+// - Every malformed header, VLR or record is a FileError with the byte offset. Counts are
+//   checked against the file size before anything is allocated.
+// - LAZ (compression bits in the point format byte, the LASzip VLR, or a .laz name) is refused
+//   with a message saying how to decompress it (laszip / las2las).
+#include <cstdint>
+#include <filesystem>
+#include <span>
+
+#include "common/progress.hpp"
+#include "model/dataset.hpp"
+
+namespace plumb {
+
+struct LasReadOptions {
+  /// Keep described extra bytes as ScalarFields.
+  bool extra_bytes = true;
+  /// Also keep the LAS fields the model has no column for as ScalarFields: "scan_angle"
+  /// (degrees), "user_data", "point_source_id", "nir" (formats 8/10), "scanner_channel"
+  /// (formats 6-10) and "classification_flags" (synthetic=1, key-point=2, withheld=4,
+  /// overlap=8). The LAS writer writes these names back into their LAS fields.
+  bool auxiliary_fields = false;
+};
+
+/// Reads an uncompressed LAS file into a one-scan Dataset (format "las").
+Dataset readLas(const std::filesystem::path& path, const LasReadOptions& options = {},
+                Progress* progress = nullptr);
+
+/// Same, from bytes in memory (fuzzing, tests, embedded data). `name` is used in errors.
+Dataset readLasBuffer(std::span<const std::uint8_t> bytes,
+                      const std::filesystem::path& name = "<memory>",
+                      const LasReadOptions& options = {}, Progress* progress = nullptr);
+
+}  // namespace plumb

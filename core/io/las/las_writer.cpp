@@ -1,0 +1,254 @@
+#include "io/las/las_writer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <limits>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "io/las/las_bytes.hpp"
+#include "io/las/las_header.hpp"
+#include "io/las/las_vlr.hpp"
+
+namespace plumb {
+namespace {
+using namespace las;
+
+constexpr std::size_t kChunk = 1 << 15;
+
+bool isAuxiliary(const std::string& name) {
+  return name == "scan_angle" || name == "user_data" || name == "point_source_id" ||
+         name == "classification_flags" || name == "scanner_channel";
+}
+
+template <class T>
+T clampRound(double v) {
+  if (!(v == v)) return 0;
+  v = std::round(v);
+  return static_cast<T>(std::clamp(v, static_cast<double>(std::numeric_limits<T>::min()),
+                                   static_cast<double>(std::numeric_limits<T>::max())));
+}
+
+// GeoKeyDirectory with one ProjectedCSTypeGeoKey (or GeographicTypeGeoKey for codes < 5000,
+// the EPSG geographic range).
+std::vector<std::uint8_t> geoKeys(int code) {
+  const std::uint16_t words[] = {1, 1, 0, 1, static_cast<std::uint16_t>(code < 5000 ? 2048 : 3072),
+                                 0, 1, static_cast<std::uint16_t>(code)};
+  std::vector<std::uint8_t> out(sizeof words);
+  std::memcpy(out.data(), words, sizeof words);
+  return out;
+}
+}  // namespace
+
+void writeLas(const std::filesystem::path& path, const Dataset& data,
+              const LasWriteOptions& options, Progress* progress) {
+  if (options.version_minor != 2 && options.version_minor != 4)
+    throw InputError("LAS version 1." + std::to_string(options.version_minor) +
+                     " cannot be written (1.2 or 1.4)");
+  if (!(options.scale > 0.0) || !std::isfinite(options.scale))
+    throw InputError("LAS scale must be a positive number of metres");
+  const PointCloud cloud = data.scans.size() == 1 && data.scans[0].pose.isIdentity()
+                               ? data.scans[0].cloud
+                               : data.merged();
+  const bool v14 = options.version_minor == 4;
+  const bool has_time = cloud.hasTimestamps();
+  const int format = v14 ? 7 : (has_time ? 3 : 2);
+  const PointLayout layout = pointLayout(format);
+
+  // Which scalar fields go where.
+  auto aux = [&](const char* name) -> const std::vector<float>* {
+    const ScalarField* f = cloud.findScalarField(name);
+    return f && f->values.size() == cloud.size() ? &f->values : nullptr;
+  };
+  std::vector<const ScalarField*> extras;
+  if (options.extra_fields)
+    for (const auto& f : cloud.scalar_fields)
+      if (!isAuxiliary(f.name) && f.values.size() == cloud.size()) extras.push_back(&f);
+  const std::size_t record_length = layout.min_size + 4 * extras.size();
+  if (record_length > 65535) throw InputError("too many scalar fields for one LAS record");
+
+  // Offset and the int32 range check, in world coordinates.
+  std::vector<std::uint8_t> keep(cloud.size());
+  Bounds bounds;
+  std::uint64_t count = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    keep[i] = cloud.positions[i].allFinite();
+    if (keep[i]) {
+      bounds.extend(cloud.world(i));
+      ++count;
+    }
+  }
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  if (options.offset) {
+    offset = *options.offset;
+  } else if (!bounds.empty()) {
+    offset = bounds.center().array().round();
+  }
+  const double limit = 2147483647.0 * options.scale;
+  if (!bounds.empty()) {
+    for (int a = 0; a < 3; ++a)
+      if (std::abs(bounds.min[a] - offset[a]) >= limit || std::abs(bounds.max[a] - offset[a]) >= limit)
+        throw FileError(path, std::string("the points span too far from the offset along ") +
+                                  "XYZ"[a] + " for LAS integers at scale " +
+                                  std::to_string(options.scale) + " m (limit +-" +
+                                  std::to_string(limit) + " m); use a coarser scale");
+  }
+  if (!v14 && count > std::numeric_limits<std::uint32_t>::max())
+    throw InputError("LAS 1.2 holds at most 4294967295 points; write LAS 1.4");
+
+  // VLRs.
+  std::vector<std::uint8_t> vlrs;
+  std::uint32_t vlr_count = 0;
+  auto addVlr = [&](const std::string& user, std::uint16_t id, const std::string& desc,
+                    std::span<const std::uint8_t> payload) {
+    auto v = serializeVlr(user, id, desc, payload);
+    vlrs.insert(vlrs.end(), v.begin(), v.end());
+    ++vlr_count;
+  };
+  const std::string& crs = data.coordinate_system;
+  bool wrote_wkt = false;
+  if (!crs.empty()) {
+    if (crs.rfind("EPSG:", 0) == 0 && crs.find('[') == std::string::npos) {
+      int code = 0;
+      try {
+        code = std::stoi(crs.substr(5));
+      } catch (...) {
+      }
+      if (!v14 && code > 0 && code < 32767) {
+        const auto keys = geoKeys(code);
+        addVlr("LASF_Projection", 34735, "GeoTIFF GeoKeyDirectoryTag", keys);
+      }
+    } else if (crs.size() + 1 <= 65535) {
+      std::vector<std::uint8_t> wkt(crs.begin(), crs.end());
+      wkt.push_back(0);
+      addVlr("LASF_Projection", 2112, "OGC coordinate system WKT", wkt);
+      wrote_wkt = true;
+    }
+  }
+  if (!extras.empty()) {
+    if (extras.size() * 192 > 65535) throw InputError("too many scalar fields for LAS extra bytes");
+    std::vector<std::uint8_t> desc;
+    for (const auto* f : extras) {
+      const auto d = floatExtraDescriptor(f->name);
+      desc.insert(desc.end(), d.begin(), d.end());
+    }
+    addVlr("LASF_Spec", 4, "Extra Bytes", desc);
+  }
+
+  // Header.
+  LasHeader h;
+  h.version_minor = static_cast<std::uint8_t>(options.version_minor);
+  h.header_size = static_cast<std::uint16_t>(v14 ? kHeaderSize14 : kHeaderSize12);
+  h.offset_to_points = static_cast<std::uint32_t>(h.header_size + vlrs.size());
+  h.vlr_count = vlr_count;
+  h.format_byte = static_cast<std::uint8_t>(format);
+  h.record_length = static_cast<std::uint16_t>(record_length);
+  h.system_identifier = "Plumb";
+  h.generating_software = options.software;
+  bool adjusted_time = false;
+  for (const auto& [k, v] : data.metadata)
+    if (k == "GPS time" && v == "adjusted standard GPS time") adjusted_time = true;
+  h.global_encoding = static_cast<std::uint16_t>((has_time && adjusted_time ? 1 : 0) |
+                                                 (v14 || wrote_wkt ? 0x10 : 0));
+  {
+    const std::time_t now = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&now, &tm);
+    h.creation_day = static_cast<std::uint16_t>(tm.tm_yday + 1);
+    h.creation_year = static_cast<std::uint16_t>(tm.tm_year + 1900);
+  }
+  for (int a = 0; a < 3; ++a) {
+    h.scale[a] = options.scale;
+    h.offset[a] = offset[a];
+  }
+
+  // Records, streamed in chunks; header rewritten at the end with counts and bounds.
+  AtomicFileWriter writer(path);
+  std::ostream& out = writer.stream();
+  out.write(reinterpret_cast<const char*>(serializeHeader(h).data()), h.header_size);
+  out.write(reinterpret_cast<const char*>(vlrs.data()), static_cast<std::streamsize>(vlrs.size()));
+
+  const auto* angle = aux("scan_angle");
+  const auto* user = aux("user_data");
+  const auto* source = aux("point_source_id");
+  const auto* flags = aux("classification_flags");
+  const auto* channel = aux("scanner_channel");
+  const int max_return = v14 ? 15 : 7;
+  std::array<std::int32_t, 3> lo, hi;
+  lo.fill(std::numeric_limits<std::int32_t>::max());
+  hi.fill(std::numeric_limits<std::int32_t>::min());
+  std::array<std::uint64_t, 15> by_return{};
+  std::vector<std::uint8_t> buf;
+  const Eigen::Vector3d shift = cloud.offset - offset;
+  const double inv = 1.0 / options.scale;
+  for (std::size_t begin = 0; begin < cloud.size(); begin += kChunk) {
+    checkCanceled(progress);
+    const std::size_t end = std::min(cloud.size(), begin + kChunk);
+    buf.assign((end - begin) * record_length, 0);
+    std::uint8_t* r = buf.data();
+    for (std::size_t i = begin; i < end; ++i) {
+      if (!keep[i]) continue;
+      const Eigen::Vector3f& p = cloud.positions[i];
+      std::int32_t xyz[3];
+      for (int a = 0; a < 3; ++a) {
+        xyz[a] = static_cast<std::int32_t>(std::llround((p[a] + shift[a]) * inv));
+        lo[a] = std::min(lo[a], xyz[a]);
+        hi[a] = std::max(hi[a], xyz[a]);
+        store<std::int32_t>(r + 4 * a, xyz[a]);
+      }
+      if (cloud.hasIntensity()) store<std::uint16_t>(r + 12, clampRound<std::uint16_t>(cloud.intensity[i]));
+      const int ret = cloud.hasReturns() ? std::min<int>(cloud.return_index[i], max_return) : 1;
+      const int cnt = cloud.hasReturns() ? std::min<int>(cloud.return_count[i], max_return) : 1;
+      if (ret >= 1) ++by_return[std::min(ret, 15) - 1];
+      const int cls = cloud.hasClassification() ? cloud.classification[i] : 0;
+      const int fl = flags ? clampRound<std::uint8_t>((*flags)[i]) : 0;
+      r[17] = user ? clampRound<std::uint8_t>((*user)[i]) : 0;
+      if (v14) {
+        r[14] = static_cast<std::uint8_t>(ret | (cnt << 4));
+        const int ch = channel ? clampRound<std::uint8_t>((*channel)[i]) & 3 : 0;
+        r[15] = static_cast<std::uint8_t>((fl & 0x0F) | (ch << 4));
+        r[16] = static_cast<std::uint8_t>(cls);
+        store<std::int16_t>(r + 18, angle ? clampRound<std::int16_t>((*angle)[i] / 0.006) : 0);
+        store<std::uint16_t>(r + 20, source ? clampRound<std::uint16_t>((*source)[i]) : 0);
+      } else {
+        r[14] = static_cast<std::uint8_t>(ret | (cnt << 3));
+        r[15] = static_cast<std::uint8_t>((cls & 0x1F) | ((fl & 0x07) << 5));
+        r[16] = static_cast<std::uint8_t>(angle ? clampRound<std::int8_t>((*angle)[i]) : 0);
+        store<std::uint16_t>(r + 18, source ? clampRound<std::uint16_t>((*source)[i]) : 0);
+      }
+      if (layout.gps_at >= 0 && has_time) store<double>(r + layout.gps_at, cloud.timestamps[i]);
+      if (layout.rgb_at >= 0 && cloud.hasColors()) {
+        const Rgb8& c = cloud.colors[i];
+        for (int k = 0; k < 3; ++k)
+          store<std::uint16_t>(r + layout.rgb_at + 2 * k, static_cast<std::uint16_t>(c[k] * 257));
+      }
+      for (std::size_t e = 0; e < extras.size(); ++e)
+        store<float>(r + layout.min_size + 4 * e, extras[e]->values[i]);
+      r += record_length;
+    }
+    out.write(reinterpret_cast<const char*>(buf.data()), r - buf.data());
+    reportProgress(progress, static_cast<double>(end) / static_cast<double>(cloud.size()),
+                   "writing LAS points");
+  }
+
+  h.count64 = count;
+  h.by_return = by_return;
+  const bool legacy_ok = !v14 || (format < 6 && count <= 0xFFFFFFFFu);
+  if (legacy_ok) {
+    h.legacy_count = static_cast<std::uint32_t>(count);
+    for (int k = 0; k < 5; ++k) h.legacy_by_return[k] = static_cast<std::uint32_t>(by_return[k]);
+  }
+  if (count > 0) {
+    for (int a = 0; a < 3; ++a) {
+      h.min[a] = lo[a] * options.scale + offset[a];
+      h.max[a] = hi[a] * options.scale + offset[a];
+    }
+  }
+  out.seekp(0);
+  out.write(reinterpret_cast<const char*>(serializeHeader(h).data()), h.header_size);
+  writer.commit();
+}
+
+}  // namespace plumb
