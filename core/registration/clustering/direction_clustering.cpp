@@ -1,0 +1,125 @@
+#include "registration/clustering/direction_clustering.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace plumb {
+
+const ParamSchema<DirectionClusteringParams>& DirectionClusteringParams::schema() {
+  static const auto s =
+      ParamSchema<DirectionClusteringParams>("direction-clustering")
+          .real(&DirectionClusteringParams::angle_tolerance_deg, "cluster-angle", "Cluster angle",
+                "deg", 0.5, 45.0, "Angle tolerance of direction clustering")
+          .integer(&DirectionClusteringParams::max_clusters, "max-clusters", "Max clusters", "", 1,
+                   8, "Number of direction clusters", true);
+  return s;
+}
+
+std::vector<Eigen::Vector3d> DirectionClusteringResult::directions() const {
+  std::vector<Eigen::Vector3d> d;
+  for (const auto& c : clusters) d.push_back(c.direction);
+  return d;
+}
+
+DirectionClusteringResult clusterDirections(const std::vector<DirectionItem>& items,
+                                            const DirectionClusteringParams& p) {
+  DirectionClusteringResult r;
+  r.cluster_of_item.assign(items.size(), -1);
+  const double cos_tol = std::cos(p.angle_tolerance_deg * M_PI / 180.0);
+  std::vector<int> order;
+  std::vector<Eigen::Vector3d> unit(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const double n = items[i].direction.norm();
+    if (n > 0 && std::isfinite(n) && items[i].weight > 0) {
+      unit[i] = items[i].direction / n;
+      order.push_back(int(i));
+    }
+  }
+  // Decreasing weight (inliers / length), ties by index: deterministic.
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return items[a].weight > items[b].weight; });
+  // Seeds: heaviest item, then the heaviest one farther than theta from every seed (|.|).
+  struct Acc {
+    Eigen::Vector3d ref, sum;
+  };
+  std::vector<Acc> acc;
+  for (int i : order) {
+    if (int(acc.size()) >= p.max_clusters) break;
+    bool far = true;
+    for (const auto& a : acc)
+      if (std::abs(unit[i].dot(a.ref)) >= cos_tol) far = false;
+    if (!far) continue;
+    acc.push_back({unit[i], items[i].weight * unit[i]});
+    r.clusters.push_back({unit[i], items[i].weight, {i}});
+    r.cluster_of_item[i] = int(r.clusters.size()) - 1;
+  }
+  // Remaining items by decreasing weight join the closest cluster within theta; the cluster
+  // direction is the weighted mean with members flipped to agree with the seed (2023 step 5).
+  for (int i : order) {
+    if (r.cluster_of_item[i] >= 0) continue;
+    int best = -1;
+    double best_dot = cos_tol;
+    for (std::size_t k = 0; k < r.clusters.size(); ++k) {
+      const double d = std::abs(unit[i].dot(r.clusters[k].direction));
+      if (d >= best_dot) {
+        best_dot = d;
+        best = int(k);
+      }
+    }
+    if (best < 0) continue;
+    auto& c = r.clusters[best];
+    const double s = unit[i].dot(acc[best].ref) >= 0 ? 1.0 : -1.0;
+    acc[best].sum += s * items[i].weight * unit[i];
+    c.direction = acc[best].sum.normalized();
+    c.weight += items[i].weight;
+    c.members.push_back(i);
+    r.cluster_of_item[i] = best;
+  }
+  // Heaviest cluster first (stable), remapping indices.
+  std::vector<int> perm(r.clusters.size());
+  std::iota(perm.begin(), perm.end(), 0);
+  std::stable_sort(perm.begin(), perm.end(),
+                   [&](int a, int b) { return r.clusters[a].weight > r.clusters[b].weight; });
+  std::vector<DirectionCluster> sorted;
+  std::vector<int> inv(perm.size());
+  for (std::size_t k = 0; k < perm.size(); ++k) {
+    sorted.push_back(r.clusters[perm[k]]);
+    inv[perm[k]] = int(k);
+  }
+  r.clusters = std::move(sorted);
+  for (auto& c : r.cluster_of_item)
+    if (c >= 0) c = inv[c];
+  // Canonical sign: the larger of |z|, |x|, |y| component positive, so directions are stable.
+  for (auto& c : r.clusters) {
+    Eigen::Index k;
+    c.direction.cwiseAbs().maxCoeff(&k);
+    if (c.direction[k] < 0) c.direction = -c.direction;
+  }
+  double best_z = -1;
+  for (std::size_t k = 0; k < r.clusters.size(); ++k) {
+    const double z = std::abs(r.clusters[k].direction.z());
+    if (z > best_z) {
+      best_z = z;
+      r.horizontal = int(k);
+    }
+  }
+  return r;
+}
+
+DirectionClusteringResult clusterPlaneNormals(const std::vector<PlanarPolygon>& planes,
+                                              const DirectionClusteringParams& params) {
+  std::vector<DirectionItem> items;
+  for (const auto& pl : planes)
+    items.push_back({pl.normal, pl.inlier_count > 0 ? double(pl.inlier_count) : pl.area});
+  return clusterDirections(items, params);
+}
+
+DirectionClusteringResult clusterSegmentDirections(const std::vector<Segment3D>& segments,
+                                                   const DirectionClusteringParams& params) {
+  std::vector<DirectionItem> items;
+  for (const auto& s : segments) items.push_back({s.b - s.a, s.length()});
+  return clusterDirections(items, params);
+}
+
+}  // namespace plumb

@@ -1,0 +1,75 @@
+#pragma once
+// What every global registration method returns (ALGORITHMS.md §8): the chosen transform, its
+// score, the runner-up hypothesis and the score gap (ambiguity), inlier counts and a status
+// that makes failures explicit. A failed result never carries a transform to be trusted.
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/rigid_transform.hpp"
+
+namespace plumb {
+
+enum class RegistrationStatus {
+  Success,
+  TooFewFeatures,  ///< inputs do not carry enough features for the method
+  NoHypothesis,    ///< no hypothesis scored above the acceptance threshold
+  Ambiguous,       ///< a clearly different hypothesis scored almost as well
+  NotConverged,    ///< refinement diverged or lost its overlap
+};
+const char* toString(RegistrationStatus s);
+
+/// One candidate transform and its score (higher is better; unit given by the method).
+struct Hypothesis {
+  RigidTransform transform;
+  double score = 0.0;
+  std::string label;  ///< how it was built, e.g. "clusters 0->+1, 1->-2"
+};
+
+struct GlobalRegistrationResult {
+  RegistrationStatus status = RegistrationStatus::NoHypothesis;
+  std::string method;      ///< "planes", "segments", "openings", "icp"
+  std::string message;     ///< plain-language explanation (why it failed, what was used)
+  RigidTransform transform;  ///< source -> target; meaningful only when ok()
+  double score = 0.0;
+  std::string score_unit;  ///< e.g. "m^2 of overlapping polygons", "matched segments"
+  std::optional<Hypothesis> runner_up;  ///< best hypothesis clearly different from the chosen one
+  double relative_gap = 1.0;  ///< (score - runner_up) / score, 1 when no runner-up
+  std::size_t hypotheses_evaluated = 0;
+  std::size_t source_features = 0;
+  std::size_t target_features = 0;
+  std::size_t inlier_features = 0;  ///< source features matched under the chosen transform
+  double feature_rms = 0.0;         ///< m, RMS residual on matched features
+  /// Method-specific figures for the report, e.g. {"wall thickness (m)", 0.31}.
+  std::vector<std::pair<std::string, double>> figures;
+
+  bool ok() const { return status == RegistrationStatus::Success; }
+};
+
+/// Keeps the best hypothesis and the best one that is "clearly different" from it (rotation
+/// differs by more than `min_rotation_deg` or translation by more than `min_translation`).
+class HypothesisRanking {
+ public:
+  HypothesisRanking(double min_rotation_deg, double min_translation)
+      : min_rot_(min_rotation_deg), min_trans_(min_translation) {}
+  void add(const Hypothesis& h);
+  const std::optional<Hypothesis>& best() const { return best_; }
+  /// Runner-up among all hypotheses seen (computed lazily from the kept list).
+  std::optional<Hypothesis> runnerUp() const;
+  std::size_t count() const { return count_; }
+
+ private:
+  bool distinct(const Hypothesis& a, const Hypothesis& b) const;
+  double min_rot_, min_trans_;
+  std::optional<Hypothesis> best_;
+  std::vector<Hypothesis> top_;  ///< a few best hypotheses, kept to find the runner-up
+  std::size_t count_ = 0;
+};
+
+/// Fills status / runner_up / relative_gap from a ranking: NoHypothesis when the best score is
+/// below `min_score`, Ambiguous when a distinct runner-up is within `min_relative_gap`.
+void finalizeFromRanking(const HypothesisRanking& ranking, double min_score,
+                         double min_relative_gap, GlobalRegistrationResult& result);
+
+}  // namespace plumb
