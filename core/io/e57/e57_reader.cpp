@@ -1,0 +1,67 @@
+#include "io/e57/e57_reader.hpp"
+
+#include <string>
+#include <vector>
+
+#include "io/e57/e57_header.hpp"
+#include "io/e57/e57_pages.hpp"
+#include "io/e57/e57_scan_reader.hpp"
+#include "io/e57/e57_xml.hpp"
+
+namespace plumb {
+namespace {
+
+Dataset readFromSource(const e57::ByteSource& source, const std::filesystem::path& name,
+                       const E57ReadOptions& options, Progress* progress) {
+  e57::PagedReader file(source, name);
+  const e57::FileHeader header = e57::readHeader(source, file);
+  const std::uint64_t xml_logical = e57::physicalToLogical(header.xml_physical_offset);
+  std::string xml(static_cast<std::size_t>(header.xml_logical_length), '\0');
+  file.readLogical(xml_logical, xml.size(), reinterpret_cast<std::uint8_t*>(xml.data()), "XML section");
+  const e57::FileInfo info = e57::parseXml(xml.data(), xml.size(), name, xml_logical);
+  xml.clear();
+  xml.shrink_to_fit();
+
+  Dataset data;
+  data.source = name;
+  data.format = "e57";
+  data.coordinate_system = info.coordinate_metadata;
+  data.metadata.emplace_back("E57 version", std::to_string(header.major) + "." + std::to_string(header.minor));
+  if (!info.library_version.empty()) data.metadata.emplace_back("writer", info.library_version);
+  if (!info.guid.empty()) data.metadata.emplace_back("file GUID", info.guid);
+  data.metadata.emplace_back("scans", std::to_string(info.scans.size()));
+  if (info.image_count) data.metadata.emplace_back("images2D (skipped)", std::to_string(info.image_count));
+
+  std::uint64_t total = 0;
+  for (const auto& s : info.scans) total += s.record_count;
+  std::uint64_t done = 0;
+  for (std::size_t k = 0; k < info.scans.size(); ++k) {
+    checkCanceled(progress);
+    const auto& s = info.scans[k];
+    if (progress && total > 0) {
+      Progress sub = progress->sub(static_cast<double>(done) / total,
+                                   static_cast<double>(done + s.record_count) / total);
+      data.scans.push_back(e57::readScan(file, s, k, options, &sub, data.metadata));
+    } else {
+      data.scans.push_back(e57::readScan(file, s, k, options, nullptr, data.metadata));
+    }
+    done += s.record_count;
+  }
+  reportProgress(progress, 1.0, "reading E57");
+  return data;
+}
+
+}  // namespace
+
+Dataset readE57(const std::filesystem::path& path, const E57ReadOptions& options, Progress* progress) {
+  const auto source = e57::openFileSource(path);
+  return readFromSource(*source, path, options, progress);
+}
+
+Dataset readE57FromMemory(const void* data, std::size_t size, const std::filesystem::path& name,
+                          const E57ReadOptions& options, Progress* progress) {
+  const auto source = e57::memorySource(data, size);
+  return readFromSource(*source, name, options, progress);
+}
+
+}  // namespace plumb

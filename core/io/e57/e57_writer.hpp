@@ -1,0 +1,33 @@
+#pragma once
+// E57 writer. Each Scan becomes one data3D entry with its pose (normalised double quaternion +
+// translation), GUID (kept from the scan or generated), name, description, cartesianBounds,
+// and a point prototype of: cartesianX/Y/Z as ScaledInteger with quantum `scaled_precision`
+// (limits from the data, so bits = ceil(log2(range/precision + 1))) or as Float double;
+// cartesianInvalidState (only when some position is not finite: those points are written as
+// invalid); intensity (Integer when every value is a whole number, else Float single, with
+// intensityLimits); colorRed/Green/Blue Integer 0..255 with colorLimits; rowIndex/columnIndex
+// with indexBounds (all six children, as E57RefImpl tools require); returnIndex (0-based)
+// and returnCount; timeStamp (Float double); normals as the nor:normalX/Y/Z extension.
+// Classification and custom scalar fields have no standard E57 field and are not written.
+// The file is streamed (one packet and one page in memory), has no index packets and writes
+// empty scans in the form both libE57Format 3.x and E57RefImpl tools read (E57_FACTS.md
+// pitfall 8), and is replaced atomically.
+#include <filesystem>
+
+#include "common/progress.hpp"
+#include "model/dataset.hpp"
+
+namespace plumb {
+
+struct E57WriteOptions {
+  /// Position quantum in metres for ScaledInteger coordinates (default 0.1 mm). Valid range
+  /// 1e-9 .. 1.
+  double scaled_precision = 1e-4;
+  /// Write positions as Float double instead of ScaledInteger.
+  bool float_positions = false;
+};
+
+void writeE57(const std::filesystem::path& path, const Dataset& data,
+              const E57WriteOptions& options = {}, Progress* progress = nullptr);
+
+}  // namespace plumb
