@@ -103,9 +103,12 @@ class XmlParser {
     return number(c, path + "/" + name);
   }
 
+  /// Text of a String child: all its text and CDATA pieces joined ("]]>" splits CDATA).
   std::string childString(const pugi::xml_node& parent, const char* name) const {
-    const pugi::xml_node c = parent.child(name);
-    return c ? std::string(trim(c.text().get())) : std::string();
+    std::string out;
+    for (pugi::xml_node t = parent.child(name).first_child(); t; t = t.next_sibling())
+      if (t.type() == pugi::node_pcdata || t.type() == pugi::node_cdata) out += t.value();
+    return std::string(trim(out));
   }
 
   std::optional<Limits> limits(const pugi::xml_node& parent, const char* min_name,
