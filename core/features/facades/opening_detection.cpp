@@ -1,0 +1,295 @@
+#include "features/facades/opening_detection.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "common/error.hpp"
+
+namespace plumb {
+
+const ParamSchema<OpeningDetectionParams>& OpeningDetectionParams::schema() {
+  using P = OpeningDetectionParams;
+  static const auto s =
+      ParamSchema<P>("openings")
+          .choice(&P::source, "source", "Evidence", {"auto", "ray-tracing", "holes"},
+                  "auto: ray tracing when sensor origins exist, plus holes of wall polygons")
+          .real(&P::vertical_tolerance_deg, "vertical-tolerance", "Verticality", "deg", 0, 45,
+                "façade normals within this angle of horizontal")
+          .real(&P::min_facade_area, "min-facade-area", "Minimum façade area", "m2", 0, 1e6, "")
+          .real(&P::min_depth, "min-depth", "Minimum depth", "m", 0, 100,
+                "d_min: a point must lie this far behind the façade")
+          .real(&P::link_distance, "link-distance", "Evidence link", "m", 0.005, 5,
+                "evidence points closer than this form one opening")
+          .integer(&P::min_evidence, "min-evidence", "Minimum evidence", "points", 1, 1e7, "")
+          .real(&P::min_width, "min-width", "Minimum width", "m", 0, 100, "")
+          .real(&P::min_height, "min-height", "Minimum height", "m", 0, 100, "")
+          .real(&P::max_width, "max-width", "Maximum width", "m", 0, 1000, "")
+          .real(&P::max_height, "max-height", "Maximum height", "m", 0, 1000, "")
+          .real(&P::snap_distance, "snap-distance", "Snap distance", "m", 0, 2,
+                "sides move to façade inliers within this distance", true);
+  return s;
+}
+
+std::vector<int> selectFacades(const std::vector<PlanarPolygon>& planes,
+                               double vertical_tolerance_deg, double min_facade_area) {
+  std::vector<int> out;
+  for (std::size_t k = 0; k < planes.size(); ++k)
+    if (planes[k].isVertical(vertical_tolerance_deg) && planes[k].area >= min_facade_area &&
+        !planes[k].rings.empty())
+      out.push_back(static_cast<int>(k));
+  return out;
+}
+
+namespace {
+
+struct Rect {
+  double u0, v0, u1, v1;
+  double area() const { return std::max(0.0, u1 - u0) * std::max(0.0, v1 - v0); }
+};
+
+double overlap(const Rect& a, const Rect& b) {
+  const Rect i{std::max(a.u0, b.u0), std::max(a.v0, b.v0), std::min(a.u1, b.u1), std::min(a.v1, b.v1)};
+  const double u = a.area() + b.area() - i.area();
+  return u > 0 ? i.area() / u : 0.0;
+}
+
+bool insideRing(const std::vector<Eigen::Vector2d>& r, const Eigen::Vector2d& p) {
+  bool in = false;
+  for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+    if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
+        p.x() < (r[j].x() - r[i].x()) * (p.y() - r[i].y()) / (r[j].y() - r[i].y()) + r[i].x())
+      in = !in;
+  return in;
+}
+
+/// Rasterised outer ring for fast inside tests (cell 5 cm).
+struct RingMask {
+  double u0 = 0, v0 = 0, cell = 0.05;
+  int nu = 0, nv = 0;
+  std::vector<char> in;
+  explicit RingMask(const std::vector<Eigen::Vector2d>& ring) {
+    double u1 = -1e300, v1 = -1e300;
+    u0 = v0 = 1e300;
+    for (const auto& p : ring) {
+      u0 = std::min(u0, p.x()); v0 = std::min(v0, p.y());
+      u1 = std::max(u1, p.x()); v1 = std::max(v1, p.y());
+    }
+    nu = static_cast<int>(std::ceil((u1 - u0) / cell)) + 1;
+    nv = static_cast<int>(std::ceil((v1 - v0) / cell)) + 1;
+    in.assign(static_cast<std::size_t>(nu) * nv, 0);
+    for (int j = 0; j < nv; ++j)
+      for (int i = 0; i < nu; ++i)
+        in[static_cast<std::size_t>(j) * nu + i] =
+            insideRing(ring, {u0 + (i + 0.5) * cell, v0 + (j + 0.5) * cell});
+  }
+  bool contains(const Eigen::Vector2d& p) const {
+    const int i = static_cast<int>(std::floor((p.x() - u0) / cell));
+    const int j = static_cast<int>(std::floor((p.y() - v0) / cell));
+    return i >= 0 && j >= 0 && i < nu && j < nv && in[static_cast<std::size_t>(j) * nu + i];
+  }
+};
+
+/// 8-connected components of points on a grid of cell `link`.
+std::vector<std::vector<std::size_t>> components(const std::vector<Eigen::Vector2d>& pts, double link) {
+  std::map<std::pair<std::int64_t, std::int64_t>, int> label;
+  auto key = [link](const Eigen::Vector2d& p) {
+    return std::pair<std::int64_t, std::int64_t>(std::int64_t(std::floor(p.x() / link)),
+                                                 std::int64_t(std::floor(p.y() / link)));
+  };
+  for (const auto& p : pts) label.emplace(key(p), -1);
+  int n = 0;
+  for (auto& [c, l] : label) {
+    if (l >= 0) continue;
+    l = n;
+    std::vector<std::pair<std::int64_t, std::int64_t>> stack{c};
+    while (!stack.empty()) {
+      auto cur = stack.back();
+      stack.pop_back();
+      for (int di = -1; di <= 1; ++di)
+        for (int dj = -1; dj <= 1; ++dj) {
+          auto it = label.find({cur.first + di, cur.second + dj});
+          if (it != label.end() && it->second < 0) {
+            it->second = n;
+            stack.push_back(it->first);
+          }
+        }
+    }
+    ++n;
+  }
+  std::vector<std::vector<std::size_t>> out(n);
+  for (std::size_t k = 0; k < pts.size(); ++k) out[label[key(pts[k])]].push_back(k);
+  return out;
+}
+
+/// Moves each side of r to the nearest façade inlier beyond it (the wall edge).
+Rect snapToWall(const Rect& r, const std::vector<Eigen::Vector2d>& wall, double snap) {
+  if (snap <= 0 || wall.empty()) return r;
+  Rect out = r;
+  const double mu = 0.2 * (r.u1 - r.u0), mv = 0.2 * (r.v1 - r.v0);
+  const double cu = 0.5 * (r.u0 + r.u1), cv = 0.5 * (r.v0 + r.v1);
+  double left = -1e300, right = 1e300, bottom = -1e300, top = 1e300;
+  for (const auto& p : wall) {
+    if (p.y() > r.v0 + mv && p.y() < r.v1 - mv) {
+      if (p.x() <= cu && p.x() >= r.u0 - snap) left = std::max(left, p.x());
+      if (p.x() >= cu && p.x() <= r.u1 + snap) right = std::min(right, p.x());
+    }
+    if (p.x() > r.u0 + mu && p.x() < r.u1 - mu) {
+      if (p.y() <= cv && p.y() >= r.v0 - snap) bottom = std::max(bottom, p.y());
+      if (p.y() >= cv && p.y() <= r.v1 + snap) top = std::min(top, p.y());
+    }
+  }
+  // Only move outwards (evidence lies inside the opening; wall points inside it are noise).
+  if (left > -1e300 && left < r.u0) out.u0 = left;
+  if (right < 1e300 && right > r.u1) out.u1 = right;
+  if (bottom > -1e300 && bottom < r.v0) out.v0 = bottom;
+  if (top < 1e300 && top > r.v1) out.v1 = top;
+  return out;
+}
+
+Opening makeOpening(const PlanarPolygon& f, const Rect& r, const Eigen::Vector3d& view_normal,
+                    int facade, std::size_t evidence) {
+  std::array<Eigen::Vector3d, 4> c = {f.to3d({r.u0, r.v0}), f.to3d({r.u1, r.v0}),
+                                      f.to3d({r.u1, r.v1}), f.to3d({r.u0, r.v1})};
+  // Order: bottom-left, bottom-right, top-right, top-left seen from view_normal's side.
+  const Eigen::Vector3d right = Eigen::Vector3d::UnitZ().cross(view_normal);
+  std::sort(c.begin(), c.end(), [](const auto& a, const auto& b) { return a.z() < b.z(); });
+  Opening o;
+  const bool bottom_swap = c[0].dot(right) > c[1].dot(right);
+  o.corners[0] = bottom_swap ? c[1] : c[0];
+  o.corners[1] = bottom_swap ? c[0] : c[1];
+  const bool top_swap = c[2].dot(right) < c[3].dot(right);
+  o.corners[2] = top_swap ? c[3] : c[2];
+  o.corners[3] = top_swap ? c[2] : c[3];
+  o.facade = facade;
+  o.evidence_count = evidence;
+  return o;
+}
+
+}  // namespace
+
+OpeningDetectionResult detectOpenings(const PointCloud& cloud,
+                                      const std::vector<PlanarPolygon>& planes,
+                                      const OpeningDetectionParams& params, Progress* progress) {
+  for (const auto& f : OpeningDetectionParams::schema().fields()) validateParamValue(f.spec, f.get(params));
+  OpeningDetectionResult result;
+  result.facades = selectFacades(planes, params.vertical_tolerance_deg, params.min_facade_area);
+  const bool has_origins = cloud.hasSensorOrigins();
+  const bool want_rays = params.source != OpeningSource::Holes;
+  if (params.source == OpeningSource::RayTracing && !has_origins)
+    throw InputError("ray tracing cannot run: the cloud has no sensor origins (per-point origins "
+                     "or scan poses are needed to know where each ray came from)");
+  if (want_rays && !has_origins)
+    result.messages.push_back("ray tracing cannot run: the cloud has no sensor origins; "
+                              "openings come from holes in wall polygons only");
+  const std::size_t nf = result.facades.size();
+  // Which side each façade was seen from.
+  std::vector<Eigen::Vector3d> view(nf);
+  Eigen::Vector3d mean_origin = Eigen::Vector3d::Zero(), mean_point = Eigen::Vector3d::Zero();
+  {
+    const std::size_t step = std::max<std::size_t>(1, cloud.size() / 20000);
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < cloud.size(); i += step) {
+      if (!cloud.positions[i].allFinite()) continue;
+      mean_point += cloud.world(i);
+      if (has_origins) mean_origin += cloud.offset + cloud.sensor_origins[i].cast<double>();
+      ++n;
+    }
+    if (n) { mean_point /= double(n); mean_origin /= double(n); }
+  }
+  for (std::size_t k = 0; k < nf; ++k) {
+    const auto& f = planes[result.facades[k]];
+    const Eigen::Vector3d ref = has_origins ? mean_origin : mean_point;
+    view[k] = f.signedDistance(ref) >= 0 ? f.normal : Eigen::Vector3d(-f.normal);
+  }
+  std::vector<std::vector<Eigen::Vector2d>> evidence(nf);
+  std::vector<Rect> ray_rects;
+  std::vector<int> ray_rect_facade;
+  if (want_rays && has_origins && nf > 0) {
+    result.ray_tracing_ran = true;
+    std::vector<RingMask> masks;
+    for (auto fi : result.facades) masks.emplace_back(planes[fi].rings[0]);
+    // Per point: nearest façade crossed by O->P with |P - hit| > d_min inside the outer ring.
+    std::vector<int> hit_facade(cloud.size(), -1);
+    std::vector<Eigen::Vector2d> hit_uv(cloud.size());
+    const std::size_t blocks = std::max<std::size_t>(1, cloud.size() / 32768);
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+      const std::size_t begin = cloud.size() * b / blocks, end = cloud.size() * (b + 1) / blocks;
+      for (std::size_t i = begin; i < end; ++i) {
+        if (!cloud.positions[i].allFinite()) continue;
+        const Eigen::Vector3d P = cloud.world(i);
+        const Eigen::Vector3d O = cloud.offset + cloud.sensor_origins[i].cast<double>();
+        double best_t = 2.0;
+        for (std::size_t k = 0; k < nf; ++k) {
+          const auto& f = planes[result.facades[k]];
+          const double so = f.signedDistance(O), sp = f.signedDistance(P);
+          if (so * sp >= 0) continue;
+          const double t = so / (so - sp);
+          const Eigen::Vector3d hit = O + t * (P - O);
+          if ((P - hit).norm() <= params.min_depth || t >= best_t) continue;
+          const Eigen::Vector2d uv = f.to2d(hit);
+          if (!masks[k].contains(uv)) continue;
+          best_t = t;
+          hit_facade[i] = static_cast<int>(k);
+          hit_uv[i] = uv;
+        }
+      }
+    });
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      if (hit_facade[i] >= 0) {
+        evidence[hit_facade[i]].push_back(hit_uv[i]);
+        result.interior_points.push_back(static_cast<std::uint32_t>(i));
+      }
+    result.evidence_count = result.interior_points.size();
+    reportProgress(progress, 0.6, "ray tracing");
+  }
+  checkCanceled(progress);
+  auto sizeOk = [&](const Rect& r) {
+    const double w = r.u1 - r.u0, h = r.v1 - r.v0;
+    return w >= params.min_width && h >= params.min_height && w <= params.max_width &&
+           h <= params.max_height;
+  };
+  for (std::size_t k = 0; k < nf; ++k) {
+    const auto& f = planes[result.facades[k]];
+    std::vector<Eigen::Vector2d> wall;
+    for (auto i : f.inliers)
+      if (i < cloud.size()) wall.push_back(f.to2d(cloud.world(i)));
+    std::vector<Rect> rects;
+    // Ray-traced openings: components -> vertical bounding rectangles -> snapped to the wall.
+    for (const auto& comp : components(evidence[k], params.link_distance)) {
+      if (comp.size() < static_cast<std::size_t>(params.min_evidence)) continue;
+      Rect r{1e300, 1e300, -1e300, -1e300};
+      for (auto c : comp) {
+        const auto& p = evidence[k][c];
+        r.u0 = std::min(r.u0, p.x()); r.v0 = std::min(r.v0, p.y());
+        r.u1 = std::max(r.u1, p.x()); r.v1 = std::max(r.v1, p.y());
+      }
+      r = snapToWall(r, wall, params.snap_distance);
+      if (!sizeOk(r)) continue;
+      rects.push_back(r);
+      result.openings.push_back(makeOpening(f, r, view[k], result.facades[k], comp.size()));
+    }
+    // Holes of the wall polygon (indoor side, or no sensor origins).
+    if (params.source != OpeningSource::RayTracing) {
+      for (std::size_t h = 1; h < f.rings.size(); ++h) {
+        Rect r{1e300, 1e300, -1e300, -1e300};
+        for (const auto& p : f.rings[h]) {
+          r.u0 = std::min(r.u0, p.x()); r.v0 = std::min(r.v0, p.y());
+          r.u1 = std::max(r.u1, p.x()); r.v1 = std::max(r.v1, p.y());
+        }
+        if (!sizeOk(r)) continue;
+        bool dup = false;
+        for (const auto& q : rects) dup = dup || overlap(q, r) > 0.3;
+        if (dup) continue;
+        rects.push_back(r);
+        result.openings.push_back(makeOpening(f, r, view[k], result.facades[k], f.rings[h].size()));
+      }
+    }
+  }
+  reportProgress(progress, 1.0, "openings");
+  return result;
+}
+
+}  // namespace plumb

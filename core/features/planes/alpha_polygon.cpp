@@ -1,0 +1,229 @@
+// Polygons of a detected plane: connected parts of its inliers (grid flood fill in the plane,
+// cell = component_distance), then per part a CGAL 2D alpha shape (REGULARIZED) whose
+// boundary edges are chained into rings: outer ring counter-clockwise, holes clockwise.
+#include <CGAL/Alpha_shape_2.h>
+#include <CGAL/Alpha_shape_face_base_2.h>
+#include <CGAL/Alpha_shape_vertex_base_2.h>
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include "features/planes/detected_plane.hpp"
+
+namespace plumb::planes_detail {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Alpha_shape_vertex_base_2<K>;
+using Fb = CGAL::Alpha_shape_face_base_2<K>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
+using AlphaShape = CGAL::Alpha_shape_2<Delaunay>;
+
+using Ring = std::vector<Eigen::Vector2d>;
+
+double signedArea(const Ring& r) {
+  double a = 0;
+  for (std::size_t i = 0, n = r.size(); i < n; ++i) {
+    const auto& p = r[i];
+    const auto& q = r[(i + 1) % n];
+    a += p.x() * q.y() - q.x() * p.y();
+  }
+  return 0.5 * a;
+}
+
+bool insideRing(const Ring& r, const Eigen::Vector2d& p) {
+  bool in = false;
+  for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
+    if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
+        p.x() < (r[j].x() - r[i].x()) * (p.y() - r[i].y()) / (r[j].y() - r[i].y()) + r[i].x())
+      in = !in;
+  }
+  return in;
+}
+
+void simplifyRange(const Ring& r, std::size_t a, std::size_t b, double tol,
+                   std::vector<bool>& keep) {
+  if (b <= a + 1) return;
+  const Eigen::Vector2d d = r[b % r.size()] - r[a];
+  const double len = d.norm();
+  double best = -1;
+  std::size_t best_i = a;
+  for (std::size_t i = a + 1; i < b; ++i) {
+    const Eigen::Vector2d v = r[i] - r[a];
+    const double dist = len > 0 ? std::abs(d.x() * v.y() - d.y() * v.x()) / len : v.norm();
+    if (dist > best) {
+      best = dist;
+      best_i = i;
+    }
+  }
+  if (best > tol) {
+    keep[best_i] = true;
+    simplifyRange(r, a, best_i, tol, keep);
+    simplifyRange(r, best_i, b, tol, keep);
+  }
+}
+
+/// Douglas-Peucker on a closed ring (split at vertex 0 and the vertex farthest from it).
+Ring simplifyRing(const Ring& r, double tol) {
+  if (tol <= 0 || r.size() < 5) return r;
+  std::size_t far = 0;
+  double far_d = -1;
+  for (std::size_t i = 1; i < r.size(); ++i) {
+    const double d = (r[i] - r[0]).squaredNorm();
+    if (d > far_d) {
+      far_d = d;
+      far = i;
+    }
+  }
+  std::vector<bool> keep(r.size(), false);
+  keep[0] = keep[far] = true;
+  simplifyRange(r, 0, far, tol, keep);
+  simplifyRange(r, far, r.size(), tol, keep);
+  Ring out;
+  for (std::size_t i = 0; i < r.size(); ++i)
+    if (keep[i]) out.push_back(r[i]);
+  return out.size() >= 3 ? out : r;
+}
+
+/// Alpha-shape rings of 2D points: outer ring (CCW) first, then holes (CW).
+std::vector<Ring> alphaRings(const std::vector<K::Point_2>& pts, double alpha_radius,
+                             double simplify_tol) {
+  AlphaShape shape(pts.begin(), pts.end(), K::FT(alpha_radius * alpha_radius),
+                   AlphaShape::REGULARIZED);
+  using VH = AlphaShape::Vertex_handle;
+  std::map<VH, std::vector<VH>> out_edges;
+  std::size_t edge_count = 0;
+  for (auto it = shape.alpha_shape_edges_begin(); it != shape.alpha_shape_edges_end(); ++it) {
+    if (shape.classify(*it) != AlphaShape::REGULAR) continue;
+    auto f = it->first;
+    const int i = it->second;
+    VH a = f->vertex(f->ccw(i)), b = f->vertex(f->cw(i));
+    // Face f lies left of a->b; orient so the interior is on the left.
+    if (shape.classify(f) != AlphaShape::INTERIOR) std::swap(a, b);
+    out_edges[a].push_back(b);
+    ++edge_count;
+  }
+  std::vector<Ring> rings;
+  for (auto& [start, outs] : out_edges) {
+    while (!outs.empty()) {
+      Ring ring;
+      VH cur = start;
+      for (std::size_t guard = 0; guard <= edge_count; ++guard) {
+        auto& o = out_edges[cur];
+        if (o.empty()) break;
+        VH next = o.back();
+        o.pop_back();
+        ring.emplace_back(cur->point().x(), cur->point().y());
+        cur = next;
+        if (cur == start) break;
+      }
+      if (ring.size() >= 3) rings.push_back(simplifyRing(ring, simplify_tol));
+    }
+  }
+  if (rings.empty()) return rings;
+  // Outer = largest positive area; holes = negative rings inside it.
+  std::size_t outer = 0;
+  double best = -1;
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    const double a = signedArea(rings[k]);
+    if (a > best) {
+      best = a;
+      outer = k;
+    }
+  }
+  if (best <= 0) return {};
+  std::vector<Ring> result{rings[outer]};
+  for (std::size_t k = 0; k < rings.size(); ++k)
+    if (k != outer && signedArea(rings[k]) < 0 && insideRing(rings[outer], rings[k][0]))
+      result.push_back(rings[k]);
+  return result;
+}
+
+}  // namespace
+
+std::vector<PlanarPolygon> makePolygons(const PointCloud& cloud, const DetectedPlane& plane,
+                                        const PlaneExtractionParams& params) {
+  // Plane frame in local coordinates.
+  PlanarPolygon frame;
+  frame.normal = plane.fit.normal;
+  frame.offset = plane.fit.offset;
+  frame.centroid = plane.fit.centroid;
+  setPlaneFrame(frame);
+  const std::size_t n = plane.inliers.size();
+  std::vector<Eigen::Vector2d> uv(n);
+  for (std::size_t k = 0; k < n; ++k)
+    uv[k] = frame.to2d(cloud.positions[plane.inliers[k]].cast<double>());
+  // Connected parts: 8-connected occupied cells of size component_distance.
+  const double cell = params.component_distance;
+  auto key = [cell](const Eigen::Vector2d& p) {
+    const auto i = static_cast<std::int64_t>(std::floor(p.x() / cell));
+    const auto j = static_cast<std::int64_t>(std::floor(p.y() / cell));
+    return std::pair<std::int64_t, std::int64_t>(i, j);
+  };
+  std::map<std::pair<std::int64_t, std::int64_t>, int> cell_label;
+  for (const auto& p : uv) cell_label.emplace(key(p), -1);
+  int labels = 0;
+  for (auto& [c, label] : cell_label) {
+    if (label >= 0) continue;
+    std::vector<std::pair<std::int64_t, std::int64_t>> stack{c};
+    label = labels;
+    while (!stack.empty()) {
+      const auto cur = stack.back();
+      stack.pop_back();
+      for (int di = -1; di <= 1; ++di)
+        for (int dj = -1; dj <= 1; ++dj) {
+          auto it = cell_label.find({cur.first + di, cur.second + dj});
+          if (it != cell_label.end() && it->second < 0) {
+            it->second = labels;
+            stack.push_back(it->first);
+          }
+        }
+    }
+    ++labels;
+  }
+  std::vector<std::vector<std::uint32_t>> parts(labels);
+  for (std::size_t k = 0; k < n; ++k) parts[cell_label[key(uv[k])]].push_back(static_cast<std::uint32_t>(k));
+
+  std::vector<PlanarPolygon> polygons;
+  for (const auto& part : parts) {
+    if (part.size() < static_cast<std::size_t>(std::max(3, params.min_component_inliers))) continue;
+    std::vector<std::uint32_t> idx;
+    idx.reserve(part.size());
+    for (auto k : part) idx.push_back(plane.inliers[k]);
+    PlaneFit fit = fitPlaneLocal(cloud, idx);
+    if (!fit.valid) continue;
+    if (fit.normal.dot(plane.fit.normal) < 0) {
+      fit.normal = -fit.normal;
+      fit.offset = -fit.offset;
+    }
+    PlanarPolygon poly;
+    poly.normal = fit.normal;
+    poly.offset = fit.offset + fit.normal.dot(cloud.offset);  // world plane
+    poly.centroid = fit.centroid + cloud.offset;
+    poly.inlier_count = idx.size();
+    setPlaneFrame(poly);
+    // Thin the projected points (one per cell of alpha_radius/4) before the alpha shape.
+    const double thin = params.alpha_radius / 4.0;
+    std::unordered_map<std::uint64_t, std::size_t> seen;
+    std::vector<K::Point_2> pts;
+    for (auto i : idx) {
+      const Eigen::Vector2d q = poly.to2d(cloud.world(i));
+      const auto a = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(q.x() / thin)) + (1 << 30));
+      const auto b = static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(q.y() / thin)) + (1 << 30));
+      if (seen.emplace((a << 32) | b, pts.size()).second) pts.emplace_back(q.x(), q.y());
+    }
+    if (pts.size() >= 3) poly.rings = alphaRings(pts, params.alpha_radius, params.simplify_tolerance);
+    poly.area = 0;
+    for (std::size_t r = 0; r < poly.rings.size(); ++r) poly.area += signedArea(poly.rings[r]);
+    if (params.keep_inlier_indices) poly.inliers = std::move(idx);
+    polygons.push_back(std::move(poly));
+  }
+  return polygons;
+}
+
+}  // namespace plumb::planes_detail

@@ -1,0 +1,78 @@
+#pragma once
+// Planar polygon extraction (2021 §2, ALGORITHMS.md §1): detect planes, split each plane's
+// inliers into connected parts, and outline each part with a 2D alpha shape (outer ring +
+// holes). Three detectors share this entry point:
+//  - Msac: MSAC (eq. 2) on the whole cloud, refit on inliers, remove, repeat.
+//  - SensorTopology: RANSAC with samples drawn in the scan-grid neighbourhood of the first one
+//    and region growing over grid adjacency (2021 §2.1); needs row/column (organized scan).
+//  - RegionGrowing: PCL's normal-based region growing, then a least-squares plane per region.
+// Auto picks SensorTopology when the cloud has a grid, Msac otherwise (measured, see
+// tests/bench/features: MSAC is both faster and more precise than PCL region growing on
+// building scans because its planes are fitted on all coplanar points at once).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "common/params.hpp"
+#include "common/progress.hpp"
+#include "model/feature_set.hpp"
+#include "model/point_cloud.hpp"
+
+namespace plumb {
+
+enum class PlaneDetector { Auto, Msac, SensorTopology, RegionGrowing };
+
+struct PlaneExtractionParams {
+  PlaneDetector detector = PlaneDetector::Auto;
+  /// Inlier distance t of eq. (2), metres, [0.001, 1]. Ignored when auto_threshold is set.
+  double distance_threshold = 0.02;
+  /// Select the threshold by the a-contrario NFA criterion (2021 eqs. 3-6) among
+  /// `threshold_candidates` values spread geometrically over [0.005, 0.1] m.
+  bool auto_threshold = false;
+  int threshold_candidates = 6;  ///< [2, 20]
+  /// Smallest plane (min_size of eq. 3), points, [3, 1e7]. Detection stops below it.
+  int min_inliers = 300;
+  int max_planes = 60;  ///< [1, 10000]
+  /// MSAC hypotheses per extracted plane, [10, 100000].
+  int iterations = 400;
+  /// Hypotheses are scored on a random subset of this many points (whole cloud if smaller),
+  /// then the best is refitted on the whole remaining cloud. [1000, 1e8]
+  int score_sample = 40000;
+  /// Inliers closer than this (metres, in the plane) are connected; each connected part
+  /// becomes one polygon. [0.005, 10]
+  double component_distance = 0.15;
+  /// Parts with fewer inliers than this are dropped, points, [1, 1e7].
+  int min_component_inliers = 100;
+  /// Alpha-shape radius, metres, [0.01, 10] (CGAL alpha = radius^2).
+  double alpha_radius = 0.12;
+  /// Ring vertices are simplified (Douglas-Peucker) with this tolerance, metres, [0, 1].
+  double simplify_tolerance = 0.01;
+  /// Region growing (PCL) and sensor topology: max normal angle between neighbours, degrees.
+  double smoothness_deg = 5.0;
+  int normal_neighbours = 16;  ///< k of the kNN normals (region growing), [3, 100]
+  /// Sensor topology: grid half-window for the 2nd/3rd samples, cells, [1, 100].
+  int grid_window = 4;
+  bool keep_inlier_indices = true;  ///< fill PlanarPolygon::inliers
+  std::uint64_t seed = 42;
+  static const ParamSchema<PlaneExtractionParams>& schema();
+};
+
+struct PlaneExtractionResult {
+  std::vector<PlanarPolygon> planes;  ///< one per connected part, by decreasing inlier count
+  PlaneDetector detector_used = PlaneDetector::Msac;
+  double distance_threshold_used = 0.0;  ///< metres
+  /// Per point: index into planes, or -1 (unassigned / dropped part).
+  std::vector<int> point_plane;
+  std::size_t planes_detected = 0;  ///< planes before splitting into connected parts
+  double seconds = 0.0;
+};
+
+/// Detects planar polygons in the cloud (world coordinates of the result = cloud.world()).
+/// Throws InputError for invalid params, or SensorTopology without a grid.
+PlaneExtractionResult extractPlanes(const PointCloud& cloud,
+                                    const PlaneExtractionParams& params = {},
+                                    Progress* progress = nullptr);
+
+std::string detectorName(PlaneDetector d);
+
+}  // namespace plumb

@@ -1,0 +1,134 @@
+// RANSAC on the sensor topology (2021 §2.1, after Guinard et al. 2020): the first sample is
+// drawn among free points, the 2nd and 3rd in its grid window (rows/columns of an organized
+// scan); a hypothesis is scored by growing a region from the first sample over 4-connected
+// grid neighbours within the distance threshold, instead of scoring the whole cloud. The
+// largest region is refitted by least squares, regrown, kept, and its points removed.
+#include <algorithm>
+#include <random>
+
+#include "common/error.hpp"
+#include "features/planes/detected_plane.hpp"
+
+namespace plumb::planes_detail {
+namespace {
+
+struct Grid {
+  int rows = 0, cols = 0;
+  std::vector<std::int64_t> cell;  // point index or -1
+  std::int64_t at(int r, int c) const {
+    if (r < 0 || c < 0 || r >= rows || c >= cols) return -1;
+    return cell[static_cast<std::size_t>(r) * cols + c];
+  }
+};
+
+std::vector<std::uint32_t> grow(const PointCloud& cloud, const Grid& g,
+                                const std::vector<char>& used, std::uint32_t seed,
+                                const Eigen::Vector3d& n, double d, double t,
+                                std::vector<int>& stamp, int stamp_id) {
+  std::vector<std::uint32_t> region{seed};
+  stamp[seed] = stamp_id;
+  const Eigen::Vector3f nf = n.cast<float>();
+  for (std::size_t k = 0; k < region.size(); ++k) {
+    const auto i = region[k];
+    const int r = cloud.row[i], c = cloud.column[i];
+    const int dr[4] = {1, -1, 0, 0}, dc[4] = {0, 0, 1, -1};
+    for (int e = 0; e < 4; ++e) {
+      const auto j = g.at(r + dr[e], c + dc[e]);
+      if (j < 0 || used[j] || stamp[j] == stamp_id) continue;
+      if (std::abs(double(nf.dot(cloud.positions[j])) - d) >= t) continue;
+      stamp[j] = stamp_id;
+      region.push_back(static_cast<std::uint32_t>(j));
+    }
+  }
+  return region;
+}
+
+}  // namespace
+
+std::vector<DetectedPlane> detectSensorTopology(const PointCloud& cloud, double threshold,
+                                                const PlaneExtractionParams& params,
+                                                Progress* progress) {
+  if (!cloud.hasGrid())
+    throw InputError("sensor-topology RANSAC needs an organized scan (row/column per point)");
+  Grid g;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    g.rows = std::max(g.rows, cloud.row[i] + 1);
+    g.cols = std::max(g.cols, cloud.column[i] + 1);
+  }
+  g.cell.assign(static_cast<std::size_t>(g.rows) * g.cols, -1);
+  std::vector<std::uint32_t> free_points;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!cloud.positions[i].allFinite() || cloud.row[i] < 0 || cloud.column[i] < 0) continue;
+    g.cell[static_cast<std::size_t>(cloud.row[i]) * g.cols + cloud.column[i]] = static_cast<std::int64_t>(i);
+    free_points.push_back(static_cast<std::uint32_t>(i));
+  }
+  std::vector<char> used(cloud.size(), 1);
+  for (auto i : free_points) used[i] = 0;
+  std::size_t free_count = free_points.size();
+  const std::size_t initial = std::max<std::size_t>(1, free_count);
+  std::vector<int> stamp(cloud.size(), -1);
+  int stamp_id = 0;
+  std::mt19937_64 rng(params.seed);
+  const int hypotheses = std::max(20, params.iterations / 8);
+  const int w = params.grid_window;
+  std::vector<DetectedPlane> planes;
+  int failures = 0;
+  while (static_cast<int>(planes.size()) < params.max_planes &&
+         free_count >= static_cast<std::size_t>(params.min_inliers) && failures < 5) {
+    checkCanceled(progress);
+    // Compact the free list now and then.
+    if (free_points.size() > 2 * free_count) {
+      std::vector<std::uint32_t> f;
+      for (auto i : free_points)
+        if (!used[i]) f.push_back(i);
+      free_points.swap(f);
+    }
+    std::uniform_int_distribution<std::size_t> pick(0, free_points.size() - 1);
+    std::uniform_int_distribution<int> off(-w, w);
+    std::vector<std::uint32_t> best;
+    for (int h = 0; h < hypotheses; ++h) {
+      std::uint32_t a = free_points[pick(rng)];
+      if (used[a]) continue;
+      std::int64_t b = -1, c = -1;
+      for (int attempt = 0; attempt < 20 && (b < 0 || c < 0 || b == c); ++attempt) {
+        const auto j = g.at(cloud.row[a] + off(rng), cloud.column[a] + off(rng));
+        if (j < 0 || used[j] || j == a) continue;
+        if (b < 0) b = j; else c = j;
+      }
+      if (b < 0 || c < 0 || b == c) continue;
+      const Eigen::Vector3d pa = cloud.positions[a].cast<double>();
+      Eigen::Vector3d n = (cloud.positions[b].cast<double>() - pa).cross(cloud.positions[c].cast<double>() - pa);
+      if (n.norm() < 1e-12) continue;
+      n.normalize();
+      auto region = grow(cloud, g, used, a, n, n.dot(pa), threshold, stamp, stamp_id++);
+      if (region.size() > best.size()) best.swap(region);
+    }
+    if (best.size() < 3) {
+      ++failures;
+      continue;
+    }
+    DetectedPlane plane;
+    plane.fit = fitPlaneLocal(cloud, best);
+    if (plane.fit.valid) {
+      plane.inliers = grow(cloud, g, used, best[0], plane.fit.normal, plane.fit.offset, threshold,
+                           stamp, stamp_id++);
+      if (plane.inliers.size() >= 3) plane.fit = fitPlaneLocal(cloud, plane.inliers);
+    }
+    if (!plane.fit.valid || plane.inliers.size() < static_cast<std::size_t>(params.min_inliers)) {
+      // Mark the small region used so it is not drawn again, count a failure.
+      for (auto i : best) used[i] = 1;
+      free_count -= best.size();
+      ++failures;
+      continue;
+    }
+    failures = 0;
+    for (auto i : plane.inliers) used[i] = 1;
+    free_count -= plane.inliers.size();
+    std::sort(plane.inliers.begin(), plane.inliers.end());
+    planes.push_back(std::move(plane));
+    reportProgress(progress, 1.0 - double(free_count) / double(initial), "topology planes");
+  }
+  return planes;
+}
+
+}  // namespace plumb::planes_detail
