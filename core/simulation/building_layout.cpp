@@ -1,0 +1,261 @@
+#include "simulation/building_layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+
+namespace plumb::sim {
+
+std::vector<double> planLines(const std::vector<double>& sizes) {
+  std::vector<double> lines{0.0};
+  for (double s : sizes) lines.push_back(lines.back() + s);
+  return lines;
+}
+
+Eigen::Vector3d BuildingLayout::planeNormal(int axis) const {
+  // Gradients of u = x - y cot(a) and v = y / sin(a); z is z.
+  if (axis == 0) return Eigen::Vector3d(sin_a, -cos_a, 0.0);
+  if (axis == 1) return Eigen::Vector3d::UnitY();
+  return Eigen::Vector3d::UnitZ();
+}
+
+double BuildingLayout::planeScale(int axis) const { return axis == 2 ? 1.0 : sin_a; }
+
+namespace {
+
+Box makeBox(double u0, double u1, double v0, double v1, double z0, double z1) {
+  Box b;
+  b.lo = {u0, v0, z0};
+  b.hi = {u1, v1, z1};
+  return b;
+}
+
+struct Planner {
+  const BuildingSpec& s;
+  std::vector<double> U, V;
+  double half_ext, half_int;
+  long C, R;
+
+  explicit Planner(const BuildingSpec& spec, double sin_a)
+      : s(spec), U(planLines(spec.column_widths)), V(planLines(spec.row_depths)),
+        half_ext(spec.exterior_wall_thickness / (2 * sin_a)),
+        half_int(spec.interior_wall_thickness / (2 * sin_a)),
+        C(static_cast<long>(spec.columns())), R(static_cast<long>(spec.rows())) {}
+
+  // Half thickness of the wall on u-line i in row r (0 when there is none).
+  double halfU(long i, long r) const {
+    if (r < 0 || r >= R) return 0.0;
+    const bool a = s.isRoom(i - 1, r), b = s.isRoom(i, r);
+    return a && b ? half_int : (a != b ? half_ext : 0.0);
+  }
+  double halfV(long j, long c) const {
+    if (c < 0 || c >= C) return 0.0;
+    const bool a = s.isRoom(c, j - 1), b = s.isRoom(c, j);
+    return a && b ? half_int : (a != b ? half_ext : 0.0);
+  }
+  // Largest half thickness of the walls crossing the node (u-line i, v-line j).
+  double nodeHalfV(long i, long j) const { return std::max(halfV(j, i - 1), halfV(j, i)); }
+  double nodeHalfU(long i, long j) const { return std::max(halfU(i, j - 1), halfU(i, j)); }
+};
+
+// Centres of n equal slots of [a, b] that can each hold `width` plus margins.
+std::vector<double> slotCentres(double a, double b, double width, double spacing) {
+  const double length = b - a;
+  int n = std::max(1, static_cast<int>(std::floor(length / spacing)));
+  while (n > 0 && length / n < width + 0.3) --n;
+  std::vector<double> centres;
+  for (int k = 0; k < n; ++k) centres.push_back(a + (k + 0.5) * length / n);
+  return centres;
+}
+
+void addOpening(BuildingLayout& L, const LayoutWall& w, int wall_index, double a0, double a1,
+                double z0, double z1, bool door, int storey, int number) {
+  LayoutOpening o;
+  o.door = door;
+  o.wall = wall_index;
+  o.storey = storey;
+  o.name = std::string(door ? "door-" : "window-") + std::to_string(storey) + "-" + std::to_string(number);
+  const int along = 1 - w.axis;
+  o.box.lo[w.axis] = w.line - w.half;
+  o.box.hi[w.axis] = w.line + w.half;
+  o.box.lo[along] = a0;
+  o.box.hi[along] = a1;
+  o.box.lo.z() = z0;
+  o.box.hi.z() = z1;
+  L.openings.push_back(o);
+}
+
+std::vector<Eigen::Vector2d> footprint(const Planner& p) {
+  // Directed boundary edges of the room cells (counter-clockwise around each cell).
+  std::map<std::pair<long, long>, std::pair<long, long>> next;
+  for (long r = 0; r < p.R; ++r)
+    for (long c = 0; c < p.C; ++c) {
+      if (!p.s.isRoom(c, r)) continue;
+      if (!p.s.isRoom(c, r - 1)) next[{c, r}] = {c + 1, r};
+      if (!p.s.isRoom(c + 1, r)) next[{c + 1, r}] = {c + 1, r + 1};
+      if (!p.s.isRoom(c, r + 1)) next[{c + 1, r + 1}] = {c, r + 1};
+      if (!p.s.isRoom(c - 1, r)) next[{c, r + 1}] = {c, r};
+    }
+  // Outer ring: start at the lowest-then-leftmost node (a convex corner of the outer ring).
+  std::pair<long, long> start{1L << 30, 1L << 30};
+  for (const auto& [a, b] : next)
+    if (a.second < start.second || (a.second == start.second && a.first < start.first)) start = a;
+  std::vector<std::pair<long, long>> ring{start};
+  for (auto cur = next.at(start); cur != start; cur = next.at(cur)) ring.push_back(cur);
+  // Keep corners only, then offset each corner outwards by the exterior half thickness.
+  std::vector<Eigen::Vector2d> out;
+  const std::size_t n = ring.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& a = ring[(k + n - 1) % n];
+    const auto& b = ring[k];
+    const auto& c = ring[(k + 1) % n];
+    const Eigen::Vector2d d1(b.first - a.first, b.second - a.second);
+    const Eigen::Vector2d d2(c.first - b.first, c.second - b.second);
+    if (d1.x() * d2.y() - d1.y() * d2.x() == 0) continue;  // collinear
+    // Outward normal of a counter-clockwise edge direction d is (d.y, -d.x).
+    const Eigen::Vector2d n1 = Eigen::Vector2d(d1.y(), -d1.x()).normalized();
+    const Eigen::Vector2d n2 = Eigen::Vector2d(d2.y(), -d2.x()).normalized();
+    out.push_back(Eigen::Vector2d(p.U[static_cast<std::size_t>(b.first)], p.V[static_cast<std::size_t>(b.second)]) +
+                  p.half_ext * (n1 + n2));
+  }
+  return out;
+}
+
+}  // namespace
+
+BuildingLayout layoutBuilding(const BuildingSpec& spec) {
+  BuildingLayout L;
+  const double a = spec.axis_angle_deg * M_PI / 180.0;
+  L.cos_a = std::abs(spec.axis_angle_deg - 90.0) < 1e-12 ? 0.0 : std::cos(a);
+  L.sin_a = std::abs(spec.axis_angle_deg - 90.0) < 1e-12 ? 1.0 : std::sin(a);
+  const Planner p(spec, L.sin_a);
+  const double H = spec.storey_height, ts = spec.slab_thickness;
+  int window_number = 0, door_number = 0;
+
+  for (int st = 0; st < spec.storeys; ++st) {
+    const double z0 = st * H + ts, z1 = (st + 1) * H;
+    // Walls on u-lines (run along v), then on v-lines (run along u).
+    for (long i = 0; i <= p.C; ++i)
+      for (long r = 0; r < p.R; ++r) {
+        const double h = p.halfU(i, r);
+        if (h == 0.0) continue;
+        LayoutWall w;
+        w.axis = 0;
+        w.line = p.U[static_cast<std::size_t>(i)];
+        w.half = h;
+        w.storey = st;
+        const bool left = spec.isRoom(i - 1, r), right = spec.isRoom(i, r);
+        w.outside_sign = left && right ? 0 : (left ? +1 : -1);
+        w.box = makeBox(w.line - h, w.line + h, p.V[static_cast<std::size_t>(r)] - p.nodeHalfV(i, r),
+                        p.V[static_cast<std::size_t>(r + 1)] + p.nodeHalfV(i, r + 1), z0, z1);
+        w.name = "wall-" + std::to_string(st) + "-u" + std::to_string(i) + "-r" + std::to_string(r);
+        L.walls.push_back(w);
+      }
+    for (long j = 0; j <= p.R; ++j)
+      for (long c = 0; c < p.C; ++c) {
+        const double h = p.halfV(j, c);
+        if (h == 0.0) continue;
+        LayoutWall w;
+        w.axis = 1;
+        w.line = p.V[static_cast<std::size_t>(j)];
+        w.half = h;
+        w.storey = st;
+        const bool below = spec.isRoom(c, j - 1), above = spec.isRoom(c, j);
+        w.outside_sign = below && above ? 0 : (below ? +1 : -1);
+        w.box = makeBox(p.U[static_cast<std::size_t>(c)] - p.nodeHalfU(c, j),
+                        p.U[static_cast<std::size_t>(c + 1)] + p.nodeHalfU(c + 1, j), w.line - h,
+                        w.line + h, z0, z1);
+        w.name = "wall-" + std::to_string(st) + "-v" + std::to_string(j) + "-c" + std::to_string(c);
+        L.walls.push_back(w);
+      }
+  }
+
+  // Openings: windows in exterior segments, doors in interior ones, one entrance door.
+  bool entrance_done = !spec.entrance_door;
+  for (int wi = 0; wi < static_cast<int>(L.walls.size()); ++wi) {
+    const LayoutWall w = L.walls[static_cast<std::size_t>(wi)];
+    const int along = 1 - w.axis;
+    // Clear span between the walls crossing the segment's end nodes.
+    const double span0 = w.box.lo[along] + 2 * p.half_ext;  // conservative
+    const double span1 = w.box.hi[along] - 2 * p.half_ext;
+    const double floor_z = w.box.lo.z();
+    if (w.outside_sign != 0) {
+      const bool entrance = !entrance_done && w.storey == 0 && w.axis == 1 && w.line == 0.0;
+      if (entrance) {
+        entrance_done = true;
+        const double c = 0.5 * (span0 + span1);
+        addOpening(L, w, wi, c - spec.door_width / 2, c + spec.door_width / 2, floor_z,
+                   floor_z + spec.door_height, true, w.storey, door_number++);
+        continue;
+      }
+      for (double c : slotCentres(span0, span1, spec.window_width, spec.window_spacing))
+        addOpening(L, w, wi, c - spec.window_width / 2, c + spec.window_width / 2,
+                   floor_z + spec.sill_height, floor_z + spec.sill_height + spec.window_height,
+                   false, w.storey, window_number++);
+    } else if (spec.interior_doors && span1 - span0 >= spec.door_width + 0.3) {
+      const double c = 0.5 * (span0 + span1);
+      addOpening(L, w, wi, c - spec.door_width / 2, c + spec.door_width / 2, floor_z,
+                 floor_z + spec.door_height, true, w.storey, door_number++);
+    }
+  }
+
+  // Slabs: ground floor, one per storey above, roof. Cover rooms and wall footprints.
+  for (int level = 0; level <= spec.storeys; ++level) {
+    LayoutPart slab;
+    slab.name = level == 0 ? "ground-slab" : (level == spec.storeys ? "roof-slab" : "slab-" + std::to_string(level));
+    const double z0 = level * H, z1 = level * H + ts;
+    for (long r = 0; r < p.R; ++r)
+      for (long c = 0; c < p.C; ++c)
+        if (spec.isRoom(c, r))
+          slab.boxes.push_back(makeBox(p.U[static_cast<std::size_t>(c)], p.U[static_cast<std::size_t>(c + 1)],
+                                       p.V[static_cast<std::size_t>(r)], p.V[static_cast<std::size_t>(r + 1)], z0, z1));
+    for (const auto& w : L.walls)
+      if (w.storey == 0) {
+        Box b = w.box;
+        b.lo.z() = z0;
+        b.hi.z() = z1;
+        slab.boxes.push_back(b);
+      }
+    L.slabs.push_back(slab);
+  }
+
+  // Furniture: random boxes in each room, away from the room centre (scanner stations).
+  std::mt19937_64 rng(spec.seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double margin = p.half_ext + 0.3;
+  for (int st = 0; st < spec.storeys && spec.furniture_per_room > 0; ++st)
+    for (long r = 0; r < p.R; ++r)
+      for (long c = 0; c < p.C; ++c) {
+        if (!spec.isRoom(c, r)) continue;
+        const double u0 = p.U[static_cast<std::size_t>(c)] + margin, u1 = p.U[static_cast<std::size_t>(c + 1)] - margin;
+        const double v0 = p.V[static_cast<std::size_t>(r)] + margin, v1 = p.V[static_cast<std::size_t>(r + 1)] - margin;
+        const Eigen::Vector2d centre(0.5 * (u0 + u1), 0.5 * (v0 + v1));
+        std::vector<Box> placed;
+        for (int attempt = 0; attempt < 40 && static_cast<int>(placed.size()) < spec.furniture_per_room; ++attempt) {
+          const double w = 0.5 + unit(rng), d = 0.4 + 0.6 * unit(rng), h = 0.4 + 0.8 * unit(rng);
+          if (u1 - u0 < w || v1 - v0 < d) continue;
+          const double bu = u0 + unit(rng) * (u1 - u0 - w), bv = v0 + unit(rng) * (v1 - v0 - d);
+          const double fz = st * H + ts;
+          Box b = makeBox(bu, bu + w, bv, bv + d, fz, fz + h);
+          // Keep 1 m around the room centre free, and 0.3 m between pieces.
+          const bool near_centre = bu - 1.0 < centre.x() && bu + w + 1.0 > centre.x() &&
+                                   bv - 1.0 < centre.y() && bv + d + 1.0 > centre.y();
+          bool overlaps = false;
+          for (const auto& o : placed)
+            overlaps |= b.lo.x() < o.hi.x() + 0.3 && o.lo.x() < b.hi.x() + 0.3 &&
+                        b.lo.y() < o.hi.y() + 0.3 && o.lo.y() < b.hi.y() + 0.3;
+          if (near_centre || overlaps) continue;
+          placed.push_back(b);
+          LayoutPart part;
+          part.boxes.push_back(b);
+          part.name = "furniture-" + std::to_string(L.furniture.size());
+          L.furniture.push_back(part);
+        }
+      }
+
+  L.footprint_uv = footprint(p);
+  return L;
+}
+
+}  // namespace plumb::sim

@@ -1,0 +1,25 @@
+#include "simulation/perturbation.hpp"
+
+#include <cmath>
+
+#include "simulation/pulse_random.hpp"
+
+namespace plumb {
+
+RigidTransform randomPerturbation(double yaw_max_deg, double shift_max_m, std::uint64_t seed) {
+  sim::PulseRandom rng(seed, 0x5EEDull);
+  const double yaw = (2 * rng.uniform() - 1) * yaw_max_deg * M_PI / 180.0;
+  const Eigen::Vector3d t((2 * rng.uniform() - 1) * shift_max_m, (2 * rng.uniform() - 1) * shift_max_m,
+                          (2 * rng.uniform() - 1) * shift_max_m / 4);
+  return RigidTransform::fromYaw(yaw, t);
+}
+
+RigidTransform perturbDataset(Dataset& data, const RigidTransform& perturbation) {
+  for (auto& scan : data.scans) {
+    scan.pose = perturbation * scan.pose;
+    scan.has_pose = true;
+  }
+  return perturbation.inverse();
+}
+
+}  // namespace plumb
