@@ -13,7 +13,7 @@ JOBS=${PLUMB_JOBS:-$(nproc)}
 # Every dependency is a Debian 12 package (see README.md "Dependencies").
 PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config git
-  libeigen3-dev libpcl-dev libcgal-dev libassimp-dev libtbb-dev
+  libeigen3-dev libpcl-dev libcgal-dev libassimp-dev libtbb-dev libembree-dev
   nlohmann-json3-dev libpugixml-dev libcli11-dev
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libvtk9-dev
   libgtest-dev libgmock-dev
