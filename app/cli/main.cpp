@@ -11,6 +11,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   plumb::cli::Action action;
   // One line per subcommand (each defined in its own cli/<name>_command.cpp).
+  plumb::cli::addInfoCommand(app, action);
+  plumb::cli::addConvertCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

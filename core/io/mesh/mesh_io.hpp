@@ -1,0 +1,36 @@
+#pragma once
+// Meshes and BIM models through assimp (headers stay in the .cpp files).
+//
+// Import: IFC, OBJ, glTF/GLB, FBX, DAE, STL, PLY. Triangulated; points and lines dropped.
+// Elements: one per scene node that holds geometry (name = node name, or mesh name). For IFC,
+// assimp names nodes "<IfcType>_<Name>_<GlobalId>": type, name and GlobalId are split out,
+// geometry of "IfcMappedItem" / "$Rel..." helper nodes goes to the nearest IFC element above
+// it, and the IFC2X3 "StandardCase"/"ElementedCase" subtypes are reported as their base type
+// (IfcWallStandardCase -> IfcWall) so IFC2X3 and IFC4 models count alike.
+// Axes and units: Z is up, metres. assimp hands IFC, glTF, COLLADA and FBX over with Y up;
+// those are rotated (x, y, z) -> (x, -z, y). OBJ, STL and PLY have no axis convention and
+// are kept as they are (assumed Z-up). IFC length units are applied by assimp; FBX's
+// UnitScaleFactor (centimetres per unit) is applied here; other formats are taken as metres.
+//
+// Errors: FileError naming the file and what assimp said. For an IFC that assimp cannot
+// parse, the message names the entity (#id and type) it failed on, the line of that entity,
+// the file's schema, and what the user can do (export as IFC2X3, or as glTF/OBJ).
+#include <filesystem>
+#include <string>
+
+#include "common/progress.hpp"
+#include "model/bim_model.hpp"
+
+namespace plumb {
+
+BimModel readMesh(const std::filesystem::path& path, Progress* progress = nullptr);
+
+/// Writes OBJ (no material file; one group per element) or binary STL through assimp's
+/// exporter, chosen by extension. Atomic. Throws FileError for other extensions.
+void writeMesh(const std::filesystem::path& path, const BimModel& model);
+
+/// "IfcWallStandardCase_Basic Wall:Ext:1234_2O2Fr$t4X7Zf8NOew3FNtn" -> {IfcWall, name, guid};
+/// names that do not start with "Ifc" give {"", node name, ""}. Exposed for tests.
+BimElement elementFromIfcNodeName(const std::string& node_name);
+
+}  // namespace plumb

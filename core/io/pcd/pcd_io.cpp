@@ -1,0 +1,384 @@
+#include "io/pcd/pcd_io.hpp"
+
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/console/print.h>
+#include <pcl/io/pcd_io.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+
+namespace plumb {
+namespace {
+
+/// What our own header check learned (PCL's reader only says "failed").
+struct PcdHeader {
+  std::vector<std::string> fields;
+  std::vector<int> sizes, counts;
+  std::vector<char> types;
+  std::uint64_t width = 0, height = 1, points = 0;
+  std::string data;
+  std::uint64_t data_offset = 0;  ///< first byte after the DATA line
+  std::uint64_t data_line = 0;
+  std::size_t recordSize() const {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < sizes.size(); ++i) n += static_cast<std::size_t>(sizes[i] * counts[i]);
+    return n;
+  }
+};
+
+PcdHeader checkHeader(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path, "cannot open file");
+  const auto file_size = std::filesystem::file_size(path);
+  if (file_size == 0) throw FileError(path, "file is empty (0 bytes)");
+  PcdHeader h;
+  std::string line;
+  std::uint64_t line_no = 0, offset = 0;
+  bool have_points = false, have_width = false;
+  while (std::getline(in, line)) {
+    ++line_no;
+    const std::uint64_t line_start = offset;
+    offset += line.size() + 1;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    auto fail = [&](const std::string& what) {
+      FileLocation loc = atLine(line_no, "PCD header");
+      loc.byte_offset = line_start;
+      throw FileError(path, what + ": \"" + line.substr(0, 80) + "\"", loc);
+    };
+    auto readAll = [&](auto& vec) {
+      typename std::decay_t<decltype(vec)>::value_type v;
+      while (words >> v) vec.push_back(v);
+      if (!words.eof()) fail("malformed " + key + " line");
+    };
+    if (key == "VERSION") {
+    } else if (key == "FIELDS" || key == "COLUMNS") {
+      readAll(h.fields);
+    } else if (key == "SIZE") {
+      readAll(h.sizes);
+    } else if (key == "TYPE") {
+      readAll(h.types);
+    } else if (key == "COUNT") {
+      readAll(h.counts);
+    } else if (key == "WIDTH") {
+      if (!(words >> h.width)) fail("WIDTH is not a number");
+      have_width = true;
+    } else if (key == "HEIGHT") {
+      if (!(words >> h.height)) fail("HEIGHT is not a number");
+    } else if (key == "VIEWPOINT") {
+    } else if (key == "POINTS") {
+      if (!(words >> h.points)) fail("POINTS is not a number");
+      have_points = true;
+    } else if (key == "DATA") {
+      words >> h.data;
+      if (h.data != "ascii" && h.data != "binary" && h.data != "binary_compressed")
+        fail("unknown DATA type (expected ascii, binary or binary_compressed)");
+      h.data_offset = offset;
+      h.data_line = line_no + 1;
+      if (h.fields.empty()) fail("PCD header has no FIELDS line before DATA");
+      if (h.counts.empty()) h.counts.assign(h.fields.size(), 1);
+      if (h.sizes.size() != h.fields.size() || h.types.size() != h.fields.size() ||
+          h.counts.size() != h.fields.size())
+        fail("FIELDS, SIZE, TYPE and COUNT have different numbers of entries (" +
+             std::to_string(h.fields.size()) + ", " + std::to_string(h.sizes.size()) + ", " +
+             std::to_string(h.types.size()) + ", " + std::to_string(h.counts.size()) + ")");
+      for (std::size_t i = 0; i < h.types.size(); ++i) {
+        const char t = h.types[i];
+        const int s = h.sizes[i];
+        if (!((t == 'F' && (s == 4 || s == 8)) || ((t == 'I' || t == 'U') && (s == 1 || s == 2 || s == 4 || s == 8))))
+          fail("field '" + h.fields[i] + "' has an invalid TYPE/SIZE " + std::string(1, t) + "/" + std::to_string(s));
+        if (h.counts[i] < 1) fail("field '" + h.fields[i] + "' has COUNT < 1");
+      }
+      if (!have_width) fail("PCD header has no WIDTH line");
+      if (!have_points) h.points = h.width * h.height;
+      if (h.width * h.height != h.points)
+        fail("WIDTH x HEIGHT (" + std::to_string(h.width) + " x " + std::to_string(h.height) +
+             ") differs from POINTS " + std::to_string(h.points));
+      return h;
+    } else {
+      if (line_no == 1 && line.size() > 0)
+        throw FileError(path, "not a PCD file: the first line is not a PCD header keyword", atByte(0));
+      fail("unknown PCD header keyword '" + key + "'");
+    }
+    if (offset > (1u << 20)) break;
+  }
+  throw FileError(path, "PCD header has no DATA line", atLine(line_no, "PCD header"));
+}
+
+/// Checks that the data section is complete before handing the file to PCL.
+void checkDataSize(const std::filesystem::path& path, const PcdHeader& h) {
+  const std::uint64_t file_size = std::filesystem::file_size(path);
+  const std::uint64_t rec = h.recordSize();
+  if (h.data == "binary") {
+    const std::uint64_t need = h.data_offset + h.points * rec;
+    if (file_size < need) {
+      const std::uint64_t k = file_size > h.data_offset ? (file_size - h.data_offset) / rec : 0;
+      throw FileError(path, "truncated data: expected " + std::to_string(h.points) +
+                                " points, file ends at byte " + std::to_string(file_size) +
+                                " in point " + std::to_string(k),
+                      FileLocation{file_size, {}, "point " + std::to_string(k)});
+    }
+  } else if (h.data == "binary_compressed") {
+    std::ifstream in(path, std::ios::binary);
+    in.seekg(static_cast<std::streamoff>(h.data_offset));
+    std::uint32_t sizes[2] = {0, 0};
+    if (!in.read(reinterpret_cast<char*>(sizes), sizeof sizes))
+      throw FileError(path, "truncated data: the compressed block sizes are missing",
+                      atByte(h.data_offset, "binary_compressed header"));
+    if (sizes[1] != h.points * rec)
+      throw FileError(path, "compressed block declares " + std::to_string(sizes[1]) +
+                                " uncompressed bytes, but " + std::to_string(h.points) +
+                                " points need " + std::to_string(h.points * rec),
+                      atByte(h.data_offset, "binary_compressed header"));
+    if (h.data_offset + 8 + sizes[0] > file_size)
+      throw FileError(path, "truncated data: the compressed block has " + std::to_string(sizes[0]) +
+                                " bytes, file ends at byte " + std::to_string(file_size),
+                      atByte(file_size, "binary_compressed block"));
+  }
+}
+
+float getFloat(const std::uint8_t* p, std::uint8_t datatype) {
+  switch (datatype) {
+    case pcl::PCLPointField::INT8: return static_cast<float>(*reinterpret_cast<const std::int8_t*>(p));
+    case pcl::PCLPointField::UINT8: return static_cast<float>(*p);
+    case pcl::PCLPointField::INT16: { std::int16_t v; std::memcpy(&v, p, 2); return v; }
+    case pcl::PCLPointField::UINT16: { std::uint16_t v; std::memcpy(&v, p, 2); return v; }
+    case pcl::PCLPointField::INT32: { std::int32_t v; std::memcpy(&v, p, 4); return static_cast<float>(v); }
+    case pcl::PCLPointField::UINT32: { std::uint32_t v; std::memcpy(&v, p, 4); return static_cast<float>(v); }
+    case pcl::PCLPointField::FLOAT32: { float v; std::memcpy(&v, p, 4); return v; }
+    case pcl::PCLPointField::FLOAT64: { double v; std::memcpy(&v, p, 8); return static_cast<float>(v); }
+    default: break;
+  }
+  return std::numeric_limits<float>::quiet_NaN();
+}
+
+double getDouble(const std::uint8_t* p, std::uint8_t datatype) {
+  if (datatype == pcl::PCLPointField::FLOAT64) {
+    double v;
+    std::memcpy(&v, p, 8);
+    return v;
+  }
+  return getFloat(p, datatype);
+}
+
+/// RAII: silence PCL's console output while reading (we report errors ourselves).
+struct QuietPcl {
+  pcl::console::VERBOSITY_LEVEL old = pcl::console::getVerbosityLevel();
+  QuietPcl() { pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS); }
+  ~QuietPcl() { pcl::console::setVerbosityLevel(old); }
+};
+
+}  // namespace
+
+Dataset readPcd(const std::filesystem::path& path, Progress* progress) {
+  const PcdHeader header = checkHeader(path);
+  checkDataSize(path, header);
+  reportProgress(progress, 0.05, "reading PCD");
+  pcl::PCLPointCloud2 pc;
+  Eigen::Vector4f origin;
+  Eigen::Quaternionf orientation;
+  int version = 0;
+  {
+    QuietPcl quiet;
+    pcl::PCDReader reader;
+    int rc = -1;
+    try {
+      rc = reader.read(path.string(), pc, origin, orientation, version);
+    } catch (const std::exception& e) {
+      throw FileError(path, std::string("PCL could not read the data: ") + e.what(),
+                      atByte(header.data_offset, "data"));
+    }
+    if (rc != 0)
+      throw FileError(path, "PCL could not read the " + header.data + " data (corrupt or truncated)",
+                      atLine(header.data_line, "data"));
+  }
+  checkCanceled(progress);
+  reportProgress(progress, 0.7, "converting PCD");
+
+  const std::size_t n = static_cast<std::size_t>(pc.width) * pc.height;
+  auto field = [&](const char* name) -> const pcl::PCLPointField* {
+    for (const auto& f : pc.fields)
+      if (f.name == name) return &f;
+    return nullptr;
+  };
+  const auto *fx = field("x"), *fy = field("y"), *fz = field("z");
+  if (!fx || !fy || !fz) throw FileError(path, "PCD file has no x, y and z fields", atLine(1, "PCD header"));
+  const auto *fnx = field("normal_x"), *fny = field("normal_y"), *fnz = field("normal_z");
+  const auto* frgb = field("rgb") ? field("rgb") : field("rgba");
+  const auto* fint = field("intensity");
+  Dataset d;
+  d.source = path;
+  d.format = "pcd";
+  Scan scan;
+  scan.name = path.stem().string();
+  PointCloud& c = scan.cloud;
+  const std::uint8_t* data = pc.data.data();
+  const std::size_t step = pc.point_step;
+  if (pc.data.size() < n * step) throw FileError(path, "PCL returned fewer bytes than the header declares");
+  const bool dbl = fx->datatype == pcl::PCLPointField::FLOAT64;
+  if (dbl && n > 0) {  // double coordinates >= 10 km: offset = first finite point rounded to the metre
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint8_t* p = data + i * step;
+      Eigen::Vector3d w(getDouble(p + fx->offset, fx->datatype), getDouble(p + fy->offset, fy->datatype),
+                        getDouble(p + fz->offset, fz->datatype));
+      if (w.allFinite()) {
+        if (w.cwiseAbs().maxCoeff() >= 1e4) c.offset = w.array().round().matrix();
+        break;
+      }
+    }
+  }
+  c.positions.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t* p = data + i * step;
+    if (dbl)
+      c.positions[i] = (Eigen::Vector3d(getDouble(p + fx->offset, fx->datatype), getDouble(p + fy->offset, fy->datatype),
+                                        getDouble(p + fz->offset, fz->datatype)) - c.offset).cast<float>();
+    else
+      c.positions[i] = {getFloat(p + fx->offset, fx->datatype), getFloat(p + fy->offset, fy->datatype),
+                        getFloat(p + fz->offset, fz->datatype)};
+  }
+  if (fnx && fny && fnz) {
+    c.normals.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint8_t* p = data + i * step;
+      c.normals[i] = {getFloat(p + fnx->offset, fnx->datatype), getFloat(p + fny->offset, fny->datatype),
+                      getFloat(p + fnz->offset, fnz->datatype)};
+    }
+  }
+  if (frgb && frgb->count == 1 && (frgb->datatype == pcl::PCLPointField::FLOAT32 || frgb->datatype == pcl::PCLPointField::UINT32)) {
+    c.colors.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      std::uint32_t v;
+      std::memcpy(&v, data + i * step + frgb->offset, 4);  // packed 0x00RRGGBB (PCL convention)
+      c.colors[i] = {static_cast<std::uint8_t>(v >> 16), static_cast<std::uint8_t>(v >> 8), static_cast<std::uint8_t>(v)};
+    }
+  }
+  if (fint && fint->count == 1) {
+    c.intensity.resize(n);
+    for (std::size_t i = 0; i < n; ++i) c.intensity[i] = getFloat(data + i * step + fint->offset, fint->datatype);
+  }
+  std::string skipped;
+  for (const auto& f : pc.fields) {
+    static const char* const known[] = {"x", "y", "z", "normal_x", "normal_y", "normal_z", "rgb", "rgba", "intensity", "_"};
+    bool is_known = false;
+    for (const char* k : known) is_known |= f.name == k;
+    if (is_known && !(f.name == "intensity" && f.count != 1)) continue;
+    if (f.count != 1) {
+      skipped += (skipped.empty() ? "" : " ") + f.name;
+      continue;
+    }
+    ScalarField sf{f.name, std::vector<float>(n)};
+    for (std::size_t i = 0; i < n; ++i) sf.values[i] = getFloat(data + i * step + f.offset, f.datatype);
+    c.scalar_fields.push_back(std::move(sf));
+  }
+  if (pc.height > 1) {  // organized: keep every grid cell, NaN included
+    c.grid_rows = static_cast<std::int32_t>(pc.height);
+    c.grid_columns = static_cast<std::int32_t>(pc.width);
+    c.row.resize(n);
+    c.column.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      c.row[i] = static_cast<std::int32_t>(i / pc.width);
+      c.column[i] = static_cast<std::int32_t>(i % pc.width);
+    }
+  } else {
+    c.removeNonFinite();
+  }
+  d.metadata.emplace_back("PCD data", header.data);
+  d.metadata.emplace_back("PCD size", std::to_string(pc.width) + " x " + std::to_string(pc.height) +
+                                          (pc.height > 1 ? " (organized)" : " (unorganized)"));
+  std::ostringstream vp;
+  vp << origin.x() << " " << origin.y() << " " << origin.z() << " " << orientation.w() << " "
+     << orientation.x() << " " << orientation.y() << " " << orientation.z();
+  d.metadata.emplace_back("viewpoint", vp.str());
+  if (!skipped.empty()) d.metadata.emplace_back("skipped multi-valued fields", skipped);
+  d.scans.push_back(std::move(scan));
+  reportProgress(progress, 1.0, "reading PCD");
+  return d;
+}
+
+void writePcd(const std::filesystem::path& path, const PointCloud& cloud,
+              const PcdWriteOptions& options, Progress* progress) {
+  cloud.validate(true);
+  const std::size_t n = cloud.size();
+  pcl::PCLPointCloud2 pc;
+  const bool organized = cloud.grid_rows > 0 && cloud.grid_columns > 0 &&
+                         static_cast<std::size_t>(cloud.grid_rows) * cloud.grid_columns == n;
+  pc.width = organized ? static_cast<std::uint32_t>(cloud.grid_columns) : static_cast<std::uint32_t>(n);
+  pc.height = organized ? static_cast<std::uint32_t>(cloud.grid_rows) : 1;
+  pc.is_dense = false;
+  std::uint32_t offset = 0;
+  auto add = [&](const std::string& name, std::uint8_t type, std::uint32_t size) {
+    pcl::PCLPointField f;
+    f.name = name;
+    f.offset = offset;
+    f.datatype = type;
+    f.count = 1;
+    pc.fields.push_back(f);
+    offset += size;
+    return f.offset;
+  };
+  const bool dbl = !cloud.offset.isZero();
+  const std::uint8_t pt = dbl ? pcl::PCLPointField::FLOAT64 : pcl::PCLPointField::FLOAT32;
+  const std::uint32_t ps = dbl ? 8 : 4;
+  const std::uint32_t ox = add("x", pt, ps), oy = add("y", pt, ps), oz = add("z", pt, ps);
+  std::uint32_t on = 0, orgb = 0, oi = 0;
+  if (cloud.hasNormals()) {
+    on = add("normal_x", pcl::PCLPointField::FLOAT32, 4);
+    add("normal_y", pcl::PCLPointField::FLOAT32, 4);
+    add("normal_z", pcl::PCLPointField::FLOAT32, 4);
+  }
+  if (cloud.hasColors()) orgb = add("rgb", pcl::PCLPointField::FLOAT32, 4);
+  if (cloud.hasIntensity()) oi = add("intensity", pcl::PCLPointField::FLOAT32, 4);
+  std::vector<std::pair<const ScalarField*, std::uint32_t>> scalars;
+  for (const auto& f : cloud.scalar_fields)
+    if (f.values.size() == n && f.name.find_first_of(" \t\n") == std::string::npos)
+      scalars.emplace_back(&f, add(f.name, pcl::PCLPointField::FLOAT32, 4));
+  pc.point_step = offset;
+  pc.row_step = pc.point_step * pc.width;
+  pc.data.resize(static_cast<std::size_t>(pc.point_step) * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint8_t* p = pc.data.data() + i * pc.point_step;
+    if (dbl) {
+      const Eigen::Vector3d w = cloud.world(i);
+      std::memcpy(p + ox, &w.x(), 8);
+      std::memcpy(p + oy, &w.y(), 8);
+      std::memcpy(p + oz, &w.z(), 8);
+    } else {
+      std::memcpy(p + ox, &cloud.positions[i].x(), 4);
+      std::memcpy(p + oy, &cloud.positions[i].y(), 4);
+      std::memcpy(p + oz, &cloud.positions[i].z(), 4);
+    }
+    if (cloud.hasNormals()) std::memcpy(p + on, cloud.normals[i].data(), 12);
+    if (cloud.hasColors()) {
+      const auto& c = cloud.colors[i];
+      const std::uint32_t v = (std::uint32_t{c[0]} << 16) | (std::uint32_t{c[1]} << 8) | c[2];
+      std::memcpy(p + orgb, &v, 4);
+    }
+    if (cloud.hasIntensity()) std::memcpy(p + oi, &cloud.intensity[i], 4);
+    for (const auto& [f, o] : scalars) std::memcpy(p + o, &f->values[i], 4);
+  }
+  checkCanceled(progress);
+  reportProgress(progress, 0.5, "writing PCD");
+  AtomicFileWriter writer(path);
+  pcl::PCDWriter w;
+  if (options.compressed) {
+    if (w.writeBinaryCompressed(writer.stream(), pc) != 0)
+      throw FileError(path, "PCL could not write the compressed PCD data");
+  } else {
+    writer.stream() << w.generateHeaderBinary(pc, Eigen::Vector4f::Zero(), Eigen::Quaternionf::Identity())
+                    << "DATA binary\n";
+    writer.stream().write(reinterpret_cast<const char*>(pc.data.data()), static_cast<std::streamsize>(pc.data.size()));
+  }
+  writer.commit();
+  reportProgress(progress, 1.0, "writing PCD");
+}
+
+}  // namespace plumb

@@ -1,0 +1,748 @@
+#include "io/ply/ply_reader.hpp"
+
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <cerrno>
+#include <optional>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <sstream>
+#include <type_traits>
+
+#include "common/error.hpp"
+#include "io/ply/block_reader.hpp"
+#include "io/ply/ply_values.hpp"
+
+namespace plumb {
+namespace {
+
+using ply::BlockReader;
+using ply::Element;
+using ply::Encoding;
+using ply::Type;
+
+// Large columns are backed by transparent huge pages when the kernel allows it ("madvise"
+// mode): 512x fewer page faults when the columns are first written.
+template <class V>
+void allocateColumn(V& v, std::size_t n) {
+  v.clear();
+  v.shrink_to_fit();
+  v.reserve(n);
+  const std::size_t bytes = n * sizeof(typename V::value_type);
+  if (bytes >= (8u << 20)) {
+    const std::uintptr_t page = 2u << 20;
+    const auto start = (reinterpret_cast<std::uintptr_t>(v.data()) + page - 1) & ~(page - 1);
+    const auto end = (reinterpret_cast<std::uintptr_t>(v.data()) + bytes) & ~(page - 1);
+    if (end > start) ::madvise(reinterpret_cast<void*>(start), end - start, MADV_HUGEPAGE);
+  }
+  v.resize(n);
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (auto& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+enum class Target : std::uint8_t { Skip, Position, Normal, Color, Intensity, Scalar, Extra };
+// Typed per-point columns other than positions/normals/colors/intensity, read through doubles.
+const char* const kExtraNames[] = {"return_index", "return_count", "timestamp", "gps_time",
+                                   "row", "column", "classification", "scan_id"};
+struct Slot {
+  Target target = Target::Skip;
+  int comp = 0;
+  Type type = Type::Float32;
+  std::size_t offset = 0;  ///< byte offset inside a binary record
+  std::size_t scalar = 0;  ///< index into scalar columns
+};
+
+/// Destination columns of the vertex element.
+struct Columns {
+  float* pos = nullptr;
+  float* nrm = nullptr;
+  std::uint8_t* rgb = nullptr;
+  float* inten = nullptr;
+  std::vector<float*> scalars;
+  std::vector<double*> extras;
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+};
+
+template <class T>
+inline std::uint8_t toColor(T v) {
+  if constexpr (std::is_same_v<T, std::uint8_t>) {
+    return v;
+  } else if constexpr (std::is_same_v<T, std::uint16_t>) {
+    return static_cast<std::uint8_t>(v >> 8);
+  } else if constexpr (std::is_floating_point_v<T>) {
+    const double s = std::clamp(static_cast<double>(v) * 255.0 + 0.5, 0.0, 255.0);
+    return static_cast<std::uint8_t>(s);
+  } else {
+    return static_cast<std::uint8_t>(std::clamp<long long>(v, 0, 255));
+  }
+}
+
+/// Extracts k binary records (stride bytes each) starting at p into the columns at `base`.
+template <bool Swap>
+void extractBlock(const char* p, std::size_t k, std::size_t stride, const std::vector<Slot>& slots,
+                  const Columns& c, std::size_t base) {
+  for (const Slot& s : slots) {
+    if (s.target == Target::Skip) continue;
+    const char* q = p + s.offset;
+    ply::withType(s.type, [&](auto tag) {
+      using T = decltype(tag);
+      switch (s.target) {
+        case Target::Position: {
+          float* d = c.pos + base * 3 + s.comp;
+          const double off = c.offset[s.comp];
+          if (std::is_same_v<T, float> && off == 0.0) {
+            for (std::size_t i = 0; i < k; ++i)
+              d[3 * i] = static_cast<float>(ply::load<T, Swap>(q + i * stride));
+          } else {
+            for (std::size_t i = 0; i < k; ++i)
+              d[3 * i] = static_cast<float>(static_cast<double>(ply::load<T, Swap>(q + i * stride)) - off);
+          }
+          break;
+        }
+        case Target::Normal: {
+          float* d = c.nrm + base * 3 + s.comp;
+          for (std::size_t i = 0; i < k; ++i)
+            d[3 * i] = static_cast<float>(ply::load<T, Swap>(q + i * stride));
+          break;
+        }
+        case Target::Color: {
+          std::uint8_t* d = c.rgb + base * 3 + s.comp;
+          for (std::size_t i = 0; i < k; ++i) d[3 * i] = toColor(ply::load<T, Swap>(q + i * stride));
+          break;
+        }
+        case Target::Intensity:
+        case Target::Scalar: {
+          float* d = (s.target == Target::Intensity ? c.inten : c.scalars[s.scalar]) + base;
+          for (std::size_t i = 0; i < k; ++i)
+            d[i] = static_cast<float>(ply::load<T, Swap>(q + i * stride));
+          break;
+        }
+        case Target::Extra: {
+          double* d = c.extras[s.scalar] + base;
+          for (std::size_t i = 0; i < k; ++i)
+            d[i] = static_cast<double>(ply::load<T, Swap>(q + i * stride));
+          break;
+        }
+        case Target::Skip: break;
+      }
+    });
+  }
+}
+
+/// One value of a generic (ASCII or list-carrying) vertex record.
+void putValue(const Slot& s, const Columns& c, std::size_t i, double v) {
+  switch (s.target) {
+    case Target::Position: c.pos[i * 3 + s.comp] = static_cast<float>(v - c.offset[s.comp]); break;
+    case Target::Normal: c.nrm[i * 3 + s.comp] = static_cast<float>(v); break;
+    case Target::Color:
+      c.rgb[i * 3 + s.comp] = ply::withType(s.type, [&](auto tag) {
+        return toColor(static_cast<decltype(tag)>(v));
+      });
+      break;
+    case Target::Intensity: c.inten[i] = static_cast<float>(v); break;
+    case Target::Scalar: c.scalars[s.scalar][i] = static_cast<float>(v); break;
+    case Target::Extra: c.extras[s.scalar][i] = v; break;
+    case Target::Skip: break;
+  }
+}
+
+/// A column whose file layout equals its memory layout: one memcpy per record.
+struct Copy {
+  std::size_t src = 0;  ///< offset in the record
+  char* dst = nullptr;  ///< column base (record 0)
+  std::size_t bytes = 0;
+  template <std::size_t B>
+  void copy(const char* p, std::size_t k, std::size_t stride, std::size_t base) const {
+    char* d = dst + base * B;
+    p += src;
+    for (std::size_t i = 0; i < k; ++i) std::memcpy(d + i * B, p + i * stride, B);
+  }
+  void run(const char* p, std::size_t k, std::size_t stride, std::size_t base) const {
+    switch (bytes) {
+      case 3: copy<3>(p, k, stride, base); break;
+      case 4: copy<4>(p, k, stride, base); break;
+      case 12: copy<12>(p, k, stride, base); break;
+      default: break;
+    }
+  }
+};
+
+/// Splits slots into plain copies (no byte swap, same type, consecutive components, zero
+/// offset) and the rest (converted value by value).
+void planCopies(const std::vector<Slot>& slots, const Columns& c, bool sw, std::vector<Copy>& copies,
+                std::vector<Slot>& rest) {
+  std::vector<bool> used(slots.size(), false);
+  if (!sw) {
+    auto triple = [&](Target t, Type type, char* dst, std::size_t bytes) {
+      int idx[3] = {-1, -1, -1};
+      for (std::size_t j = 0; j < slots.size(); ++j)
+        if (slots[j].target == t) idx[slots[j].comp] = static_cast<int>(j);
+      if (idx[0] < 0 || !dst) return;
+      const std::size_t sz = bytes / 3;
+      for (int k = 0; k < 3; ++k)
+        if (slots[idx[k]].type != type || slots[idx[k]].offset != slots[idx[0]].offset + k * sz) return;
+      if (t == Target::Position && !c.offset.isZero()) return;
+      copies.push_back({slots[idx[0]].offset, dst, bytes});
+      for (int k : idx) used[k] = true;
+    };
+    triple(Target::Position, Type::Float32, reinterpret_cast<char*>(c.pos), 12);
+    triple(Target::Normal, Type::Float32, reinterpret_cast<char*>(c.nrm), 12);
+    triple(Target::Color, Type::UInt8, reinterpret_cast<char*>(c.rgb), 3);
+    for (std::size_t j = 0; j < slots.size(); ++j) {
+      const Slot& s = slots[j];
+      if (s.type != Type::Float32 || used[j]) continue;
+      float* d = s.target == Target::Intensity ? c.inten : s.target == Target::Scalar ? c.scalars[s.scalar] : nullptr;
+      if (!d) continue;
+      copies.push_back({s.offset, reinterpret_cast<char*>(d), 4});
+      used[j] = true;
+    }
+  }
+  for (std::size_t j = 0; j < slots.size(); ++j)
+    if (!used[j]) rest.push_back(slots[j]);
+}
+
+/// A read-only view of [offset, offset+size) of a file: mapped (populated) when possible,
+/// else read with pread into a buffer. Unmapped on destruction.
+class FileWindow {
+ public:
+  FileWindow(int fd, std::uint64_t offset, std::size_t size, const std::filesystem::path& path) {
+    const std::uint64_t page = static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+    const std::uint64_t aligned = offset & ~(page - 1);
+    map_size_ = size + (offset - aligned);
+    void* m = size ? ::mmap(nullptr, map_size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd,
+                            static_cast<off_t>(aligned))
+                   : MAP_FAILED;
+    if (m != MAP_FAILED) {
+      map_ = m;
+      data_ = static_cast<const char*>(m) + (offset - aligned);
+      return;
+    }
+    buffer_.resize(size);
+    std::size_t got = 0;
+    while (got < size) {
+      const ssize_t r = ::pread(fd, buffer_.data() + got, size - got, static_cast<off_t>(offset + got));
+      if (r < 0 && errno == EINTR) continue;
+      if (r <= 0) throw FileError(path, "read error", atByte(offset + got));
+      got += static_cast<std::size_t>(r);
+    }
+    data_ = buffer_.data();
+  }
+  ~FileWindow() {
+    if (map_) ::munmap(map_, map_size_);
+  }
+  FileWindow(const FileWindow&) = delete;
+  FileWindow& operator=(const FileWindow&) = delete;
+  const char* data() const { return data_; }
+
+ private:
+  void* map_ = nullptr;
+  std::size_t map_size_ = 0;
+  const char* data_ = nullptr;
+  std::vector<char> buffer_;
+};
+
+const char* const kFaceIdNames[] = {"element_id", "element", "object_id", "segment_id"};
+
+/// Reads one PLY file. Holds the state shared by the element readers.
+class Reader {
+ public:
+  Reader(const std::filesystem::path& path, Progress* progress)
+      : path_(path), in_(path), progress_(progress) {}
+
+  PlyData run() {
+    if (in_.fileSize() == 0) throw FileError(path_, "file is empty (0 bytes)");
+    // The header: read until "end_header" is in the buffer (headers are small; cap at 1 MB).
+    std::size_t want = 4096;
+    while (true) {
+      in_.fill(want);
+      const std::string_view text(in_.data(), in_.available());
+      if (text.find("end_header") != std::string_view::npos &&
+          text.find('\n', text.find("end_header")) != std::string_view::npos)
+        break;
+      if (in_.available() < want || want >= (1u << 20)) break;  // EOF or too long: parser reports
+      want *= 4;
+    }
+    out_.header = ply::parseHeader(in_.data(), in_.available(), path_);
+    in_.consume(out_.header.data_offset);
+    line_ = out_.header.data_line;
+    for (const Element& e : out_.header.elements) {
+      if (e.name == "vertex") readVertices(e);
+      else if (e.name == "face") readFaces(e);
+      else skipElement(e);
+    }
+    if (!saw_vertex_)
+      throw FileError(path_, "PLY file has no \"vertex\" element", atLine(1, "PLY header"));
+    checkFaceIndices();
+    readElementComments();
+    readGridComment();
+    return std::move(out_);
+  }
+
+ private:
+  bool binary() const { return out_.header.encoding != Encoding::Ascii; }
+  bool swap() const {
+    const bool little = out_.header.encoding == Encoding::BinaryLittleEndian;
+    return binary() && (little != (std::endian::native == std::endian::little));
+  }
+
+  [[noreturn]] void truncated(const Element& e, std::uint64_t index,
+                              std::optional<std::uint64_t> end_byte = {}) {
+    std::ostringstream msg;
+    msg << "truncated data: expected " << e.count << " " << e.name << "s, file ends at byte "
+        << end_byte.value_or(in_.offset() + in_.available()) << " in " << e.name << " " << index;
+    FileLocation loc;
+    loc.element = e.name + " " + std::to_string(index);
+    if (!binary()) loc.line = line_;
+    throw FileError(path_, msg.str(), loc);
+  }
+
+  [[noreturn]] void badValue(const Element& e, std::uint64_t index, const std::string& what) {
+    FileLocation loc;
+    loc.element = e.name + " " + std::to_string(index);
+    if (binary()) loc.byte_offset = in_.offset();
+    else loc.line = line_;
+    throw FileError(path_, what, loc);
+  }
+
+  void report() {
+    if (!progress_) return;
+    checkCanceled(progress_);
+    const double total = static_cast<double>(std::max<std::uint64_t>(in_.fileSize(), 1));
+    reportProgress(progress_, static_cast<double>(in_.offset()) / total, "reading PLY");
+  }
+
+  // ---- ASCII record access ----------------------------------------------------------------
+  /// Loads the next non-blank line into line_text_; false at end of file.
+  bool nextLine() {
+    while (true) {
+      if (in_.available() == 0 && in_.fill(1) == 0) return false;
+      const void* nl = std::memchr(in_.data(), '\n', in_.available());
+      while (!nl) {
+        const std::size_t have = in_.available();
+        if (in_.fill(have + 1) == have) break;  // end of file: last line has no newline
+        nl = std::memchr(in_.data(), '\n', in_.available());
+      }
+      const std::size_t len =
+          nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - in_.data()) : in_.available();
+      line_text_.assign(in_.data(), len);
+      in_.consume(nl ? len + 1 : len);
+      cursor_ = 0;
+      if (line_text_.find_first_not_of(" \t\r") != std::string::npos) return true;
+      ++line_;  // blank line
+    }
+  }
+
+  double asciiValue(const Element& e, std::uint64_t index) {
+    while (cursor_ < line_text_.size() &&
+           (line_text_[cursor_] == ' ' || line_text_[cursor_] == '\t' || line_text_[cursor_] == '\r'))
+      ++cursor_;
+    if (cursor_ >= line_text_.size())
+      badValue(e, index, "too few values on the line for " + e.name + " " + std::to_string(index));
+    const char* b = line_text_.data() + cursor_;
+    const char* end = line_text_.data() + line_text_.size();
+    double v = 0;
+    auto [p, ec] = std::from_chars(b, end, v);
+    if (ec != std::errc() || (p < end && *p != ' ' && *p != '\t' && *p != '\r')) {
+      const char* tok_end = b;
+      while (tok_end < end && *tok_end != ' ' && *tok_end != '\t' && *tok_end != '\r') ++tok_end;
+      badValue(e, index, "'" + std::string(b, tok_end) + "' is not a number");
+    }
+    cursor_ = static_cast<std::size_t>(p - line_text_.data());
+    return v;
+  }
+
+  void endAsciiRecord(const Element& e, std::uint64_t index) {
+    if (line_text_.find_first_not_of(" \t\r", cursor_) != std::string::npos)
+      badValue(e, index, "more values on the line than the header declares for " + e.name);
+    ++line_;
+  }
+
+  // ---- generic value access (ASCII or binary) ---------------------------------------------
+  bool beginRecord() { return binary() || nextLine(); }
+
+  double value(const Element& e, std::uint64_t index, Type t) {
+    if (!binary()) return asciiValue(e, index);
+    const std::size_t n = ply::typeSize(t);
+    if (in_.fill(n) < n) truncated(e, index);
+    const double v = swap() ? ply::loadAsDouble<true>(t, in_.data())
+                            : ply::loadAsDouble<false>(t, in_.data());
+    in_.consume(n);
+    return v;
+  }
+
+  void endRecord(const Element& e, std::uint64_t index) {
+    if (!binary()) endAsciiRecord(e, index);
+  }
+
+  std::uint64_t listCount(const Element& e, std::uint64_t index, const ply::Property& p) {
+    const double c = value(e, index, p.count_type);
+    if (!(c >= 0) || c > 1e6 || c != std::floor(c))
+      badValue(e, index, "invalid list length " + std::to_string(c) + " for property '" + p.name + "'");
+    return static_cast<std::uint64_t>(c);
+  }
+
+  // ---- elements -----------------------------------------------------------------------------
+  void skipElement(const Element& e) {
+    if (binary() && !e.hasLists()) {
+      const std::uint64_t rs = e.recordSize();
+      for (std::uint64_t i = 0; i < e.count;) {
+        if (in_.fill(rs) < rs) truncated(e, i);
+        const std::uint64_t k = std::min<std::uint64_t>(in_.available() / rs, e.count - i);
+        in_.consume(k * rs);
+        i += k;
+      }
+      return;
+    }
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      if (!beginRecord()) truncated(e, i);
+      for (const auto& p : e.properties) {
+        const std::uint64_t n = p.is_list ? listCount(e, i, p) : 1;
+        for (std::uint64_t j = 0; j < n; ++j) value(e, i, p.type);
+      }
+      endRecord(e, i);
+    }
+  }
+
+  void readVertices(const Element& e) {
+    if (saw_vertex_) throw FileError(path_, "PLY file has two \"vertex\" elements", atLine(e.header_line, "PLY header"));
+    saw_vertex_ = true;
+    PointCloud& cloud = out_.vertices;
+    const std::size_t n = static_cast<std::size_t>(e.count);
+    // Map properties to columns.
+    std::vector<Slot> slots(e.properties.size());
+    std::map<std::string, int> index;
+    for (std::size_t i = 0; i < e.properties.size(); ++i)
+      if (!e.properties[i].is_list) index.emplace(lower(e.properties[i].name), static_cast<int>(i));
+    auto findAny = [&](std::initializer_list<const char*> names) {
+      for (const char* nm : names)
+        if (auto it = index.find(nm); it != index.end() && slots[it->second].target == Target::Skip)
+          return it->second;
+      return -1;
+    };
+    auto mapTriple = [&](Target t, std::initializer_list<std::initializer_list<const char*>> names) {
+      int idx[3];
+      int k = 0;
+      for (const auto& alternatives : names) idx[k++] = findAny(alternatives);
+      if (idx[0] < 0 || idx[1] < 0 || idx[2] < 0) return false;
+      for (int c = 0; c < 3; ++c) slots[idx[c]] = {t, c};
+      return true;
+    };
+    if (!mapTriple(Target::Position, {{"x"}, {"y"}, {"z"}}))
+      throw FileError(path_, "vertex element has no x, y and z properties",
+                      atLine(e.header_line, "PLY header"));
+    const bool has_normals = mapTriple(Target::Normal, {{"nx", "normal_x"}, {"ny", "normal_y"}, {"nz", "normal_z"}});
+    const bool has_colors = mapTriple(Target::Color, {{"red", "diffuse_red", "r"}, {"green", "diffuse_green", "g"},
+                                                      {"blue", "diffuse_blue", "b"}});
+    const int ii = findAny({"intensity", "scalar_intensity"});
+    if (ii >= 0) slots[ii].target = Target::Intensity;
+    std::vector<std::string> extra_names;
+    for (const char* nm : kExtraNames)
+      if (int k = findAny({nm}); k >= 0) {
+        slots[k].target = Target::Extra;
+        slots[k].scalar = extra_names.size();
+        extra_names.emplace_back(nm);
+      }
+    std::vector<std::vector<double>> extra_values(extra_names.size());
+    std::size_t offset = 0;
+    std::size_t n_scalars = 0;
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+      const auto& p = e.properties[i];
+      slots[i].type = p.type;
+      slots[i].offset = offset;
+      offset += ply::typeSize(p.type);
+      if (!p.is_list && slots[i].target == Target::Skip) {
+        slots[i].target = Target::Scalar;
+        slots[i].scalar = n_scalars++;
+        cloud.scalar_fields.push_back({p.name, {}});
+      }
+    }
+    // Double coordinates >= 10 km: offset = first point rounded to the metre (from record 0).
+    const bool double_coords = std::any_of(slots.begin(), slots.end(), [](const Slot& s) {
+      return s.target == Target::Position && s.type == Type::Float64;
+    });
+
+    allocateColumn(cloud.positions, n);
+    if (has_normals) allocateColumn(cloud.normals, n);
+    if (has_colors) allocateColumn(cloud.colors, n);
+    if (ii >= 0) allocateColumn(cloud.intensity, n);
+    for (auto& f : cloud.scalar_fields) allocateColumn(f.values, n);
+    Columns c;
+    c.pos = cloud.positions.empty() ? nullptr : cloud.positions[0].data();
+    c.nrm = has_normals && n ? cloud.normals[0].data() : nullptr;
+    c.rgb = has_colors && n ? cloud.colors[0].data() : nullptr;
+    c.inten = ii >= 0 ? cloud.intensity.data() : nullptr;
+    for (auto& f : cloud.scalar_fields) c.scalars.push_back(f.values.data());
+    for (auto& v : extra_values) {
+      allocateColumn(v, n);
+      c.extras.push_back(v.data());
+    }
+    struct StoreExtras {  // on every exit path that returns normally
+      std::vector<std::string>& names;
+      std::vector<std::vector<double>>& values;
+      PointCloud& cloud;
+      void operator()() {
+        for (std::size_t k = 0; k < names.size(); ++k) {
+          const auto& v = values[k];
+          auto fill = [&](auto& dst) {
+            dst.resize(v.size());
+            for (std::size_t i = 0; i < v.size(); ++i)
+              dst[i] = static_cast<typename std::decay_t<decltype(dst)>::value_type>(v[i]);
+          };
+          const std::string& nm = names[k];
+          if (nm == "return_index") fill(cloud.return_index);
+          else if (nm == "return_count") fill(cloud.return_count);
+          else if (nm == "timestamp" || nm == "gps_time") fill(cloud.timestamps);
+          else if (nm == "row") fill(cloud.row);
+          else if (nm == "column") fill(cloud.column);
+          else if (nm == "classification") fill(cloud.classification);
+          else if (nm == "scan_id") fill(cloud.scan_id);
+          std::vector<double>().swap(values[k]);
+        }
+      }
+    } store_extras{extra_names, extra_values, cloud};
+
+    auto setOffsetFrom = [&](const Eigen::Vector3d& first) {
+      if (double_coords && first.allFinite() && first.cwiseAbs().maxCoeff() >= 1e4)
+        c.offset = first.array().round().matrix();
+      cloud.offset = c.offset;
+    };
+
+    if (binary() && !e.hasLists()) {
+      const std::size_t stride = e.recordSize();
+      const bool sw = swap();
+      const std::uint64_t start = in_.offset();
+      if (n > 0) {
+        if (in_.fill(stride) < stride) truncated(e, 0);
+        Eigen::Vector3d first;
+        for (const auto& s : slots)
+          if (s.target == Target::Position)
+            first[s.comp] = sw ? ply::loadAsDouble<true>(s.type, in_.data() + s.offset)
+                               : ply::loadAsDouble<false>(s.type, in_.data() + s.offset);
+        setOffsetFrom(first);
+      }
+      const std::uint64_t end = start + static_cast<std::uint64_t>(n) * stride;
+      if (end > in_.fileSize())
+        truncated(e, (in_.fileSize() - start) / stride, in_.fileSize());
+      readFixedRecords(start, n, stride, sw, slots, c);
+      in_.seek(end);
+      store_extras();
+      return;
+    }
+    std::vector<double> values(slots.size());
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!beginRecord()) truncated(e, i);
+      for (std::size_t j = 0; j < slots.size(); ++j) {
+        const auto& p = e.properties[j];
+        if (p.is_list) {
+          const std::uint64_t m = listCount(e, i, p);
+          for (std::uint64_t q = 0; q < m; ++q) value(e, i, p.type);
+        } else {
+          values[j] = value(e, i, p.type);
+        }
+      }
+      endRecord(e, i);
+      if (i == 0) {
+        Eigen::Vector3d first;
+        for (std::size_t j = 0; j < slots.size(); ++j)
+          if (slots[j].target == Target::Position) first[slots[j].comp] = values[j];
+        setOffsetFrom(first);
+      }
+      for (std::size_t j = 0; j < slots.size(); ++j) putValue(slots[j], c, i, values[j]);
+      if ((i & 0xFFFF) == 0) report();
+    }
+    store_extras();
+  }
+
+  /// Binary vertex records of fixed size: the file is mapped in windows (never all at once, so
+  /// its pages do not add to peak memory), windows are processed in parallel, and each window
+  /// is converted in L2-sized chunks, one column at a time (plain memcpy where the file layout
+  /// equals the column layout).
+  void readFixedRecords(std::uint64_t start, std::size_t n, std::size_t stride, bool sw,
+                        const std::vector<Slot>& slots, const Columns& c) {
+    std::vector<Copy> copies;
+    std::vector<Slot> rest;
+    planCopies(slots, c, sw, copies, rest);
+    const std::size_t per_window = std::max<std::size_t>(1, (8u << 20) / stride);
+    const std::size_t windows = (n + per_window - 1) / per_window;
+    std::atomic<std::size_t> done{0};
+    const int fd = in_.fd();
+    tbb::parallel_for(std::size_t{0}, windows, [&](std::size_t w) {
+      checkCanceled(progress_);
+      const std::size_t i0 = w * per_window;
+      const std::size_t i1 = std::min(n, i0 + per_window);
+      const std::uint64_t b = start + static_cast<std::uint64_t>(i0) * stride;
+      FileWindow window(fd, b, (i1 - i0) * stride, path_);
+      constexpr std::size_t kChunk = 8192;  // records per column pass (stays in L2)
+      for (std::size_t i = i0; i < i1; i += kChunk) {
+        const std::size_t m = std::min(kChunk, i1 - i);
+        const char* p = window.data() + (i - i0) * stride;
+        for (const Copy& cp : copies) cp.run(p, m, stride, i);
+        if (sw) extractBlock<true>(p, m, stride, rest, c, i);
+        else extractBlock<false>(p, m, stride, rest, c, i);
+      }
+      const std::size_t total = done += i1 - i0;
+      if (progress_ && tbb::this_task_arena::current_thread_index() == 0)
+        reportProgress(progress_, static_cast<double>(total) / static_cast<double>(n), "reading PLY");
+    });
+  }
+
+  void readFaces(const Element& e) {
+    out_.has_faces = true;
+    int list = e.find("vertex_indices");
+    if (list < 0) list = e.find("vertex_index");
+    if (list < 0 || !e.properties[list].is_list)
+      throw FileError(path_, "face element has no list property \"vertex_indices\"",
+                      atLine(e.header_line, "PLY header"));
+    int id_prop = -1;
+    for (const char* nm : kFaceIdNames)
+      if (int k = e.find(nm); k >= 0 && !e.properties[k].is_list && id_prop < 0) id_prop = k;
+    auto& tris = out_.triangles;
+    tris.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(e.count, 1u << 26)));
+    std::vector<std::uint32_t> poly;
+    std::vector<double> ids;
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      if (!beginRecord()) truncated(e, i);
+      double id = 0;
+      for (std::size_t j = 0; j < e.properties.size(); ++j) {
+        const auto& p = e.properties[j];
+        const std::uint64_t m = p.is_list ? listCount(e, i, p) : 1;
+        if (static_cast<int>(j) == list) poly.clear();
+        for (std::uint64_t q = 0; q < m; ++q) {
+          const double v = value(e, i, p.type);
+          if (static_cast<int>(j) == list) {
+            if (!(v >= 0) || v > 4294967295.0)
+              badValue(e, i, "invalid vertex index " + std::to_string(v));
+            poly.push_back(static_cast<std::uint32_t>(v));
+          } else if (static_cast<int>(j) == id_prop) {
+            id = v;
+          }
+        }
+      }
+      endRecord(e, i);
+      for (std::size_t q = 2; q < poly.size(); ++q) {
+        tris.push_back({poly[0], poly[q - 1], poly[q]});
+        if (id_prop >= 0) ids.push_back(id);
+      }
+      if ((i & 0xFFFF) == 0) report();
+    }
+    // Elements: one per distinct id (in order of first appearance), else one for all.
+    if (id_prop >= 0) {
+      std::map<double, std::uint32_t> element_of;
+      out_.triangle_element.reserve(ids.size());
+      for (double id : ids) {
+        auto [it, added] = element_of.emplace(id, static_cast<std::uint32_t>(element_of.size()));
+        if (added) out_.elements.push_back({"", "element " + std::to_string(static_cast<long long>(id)), ""});
+        out_.triangle_element.push_back(it->second);
+      }
+      face_ids_ = std::move(element_of);
+    }
+  }
+
+  void checkFaceIndices() {
+    const std::size_t nv = out_.vertices.size();
+    for (std::size_t t = 0; t < out_.triangles.size(); ++t)
+      for (std::uint32_t v : out_.triangles[t])
+        if (v >= nv)
+          throw FileError(path_, "a face refers to vertex " + std::to_string(v) + " but there are only " +
+                                     std::to_string(nv) + " vertices",
+                          FileLocation{{}, {}, "triangle " + std::to_string(t)});
+  }
+
+  /// "comment plumb-element ID TYPE NAME" lines written by writePlyMesh restore element names.
+  void readElementComments() {
+    for (const auto& cmt : out_.header.comments) {
+      std::istringstream in(cmt);
+      std::string key, type;
+      double id = 0;
+      if (!(in >> key >> id >> type) || key != "plumb-element") continue;
+      std::string name;
+      std::getline(in, name);
+      if (!name.empty() && name[0] == ' ') name.erase(0, 1);
+      auto it = face_ids_.find(id);
+      if (it == face_ids_.end()) continue;
+      auto& el = out_.elements[it->second];
+      el.type = type == "-" ? "" : type;
+      el.name = name;
+    }
+  }
+
+  /// "comment plumb-grid ROWS COLUMNS" restores the grid size of an organized cloud.
+  void readGridComment() {
+    auto& v = out_.vertices;
+    for (const auto& cmt : out_.header.comments) {
+      std::istringstream in(cmt);
+      std::string key;
+      long long rows = 0, cols = 0;
+      if (in >> key >> rows >> cols && key == "plumb-grid" && rows > 0 && cols > 0 &&
+          static_cast<std::size_t>(rows * cols) == v.size()) {
+        v.grid_rows = static_cast<std::int32_t>(rows);
+        v.grid_columns = static_cast<std::int32_t>(cols);
+      }
+    }
+  }
+
+  std::filesystem::path path_;
+  BlockReader in_;
+  Progress* progress_;
+  PlyData out_;
+  bool saw_vertex_ = false;
+  std::uint64_t line_ = 0;  ///< ASCII: 1-based line of the record being parsed
+  std::string line_text_;
+  std::size_t cursor_ = 0;
+  std::map<double, std::uint32_t> face_ids_;
+};
+
+}  // namespace
+
+PlyData readPly(const std::filesystem::path& path, Progress* progress) {
+  Reader reader(path, progress);
+  PlyData data = reader.run();
+  reportProgress(progress, 1.0, "reading PLY");
+  return data;
+}
+
+Dataset plyToDataset(PlyData&& ply, const std::filesystem::path& path) {
+  Dataset d = Dataset::fromCloud(std::move(ply.vertices), path.stem().string());
+  d.source = path;
+  d.format = "ply";
+  d.metadata.emplace_back("encoding", ply.header.encoding == Encoding::Ascii ? "ascii"
+                                      : ply.header.encoding == Encoding::BinaryLittleEndian
+                                          ? "binary_little_endian"
+                                          : "binary_big_endian");
+  return d;
+}
+
+BimModel plyToModel(PlyData&& ply, const std::filesystem::path& path) {
+  BimModel m;
+  m.source = path;
+  m.format = "ply";
+  const PointCloud& v = ply.vertices;
+  m.mesh.vertices.resize(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) m.mesh.vertices[i] = v.world(i);
+  if (v.hasNormals()) m.mesh.vertex_normals = v.normals;
+  if (v.hasColors()) m.mesh.vertex_colors = v.colors;
+  m.mesh.triangles = std::move(ply.triangles);
+  if (ply.elements.empty()) {
+    m.elements.push_back({"", path.stem().string(), ""});
+    m.triangle_element.assign(m.mesh.triangles.size(), 0);
+  } else {
+    m.elements = std::move(ply.elements);
+    m.triangle_element = std::move(ply.triangle_element);
+  }
+  return m;
+}
+
+}  // namespace plumb

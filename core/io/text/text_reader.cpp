@@ -1,0 +1,291 @@
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string_view>
+
+#include "common/error.hpp"
+#include "io/text/text_io.hpp"
+
+namespace plumb {
+namespace {
+
+enum class Col { X, Y, Z, R, G, B, I, NX, NY, NZ, Scalar };
+
+std::string readWhole(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path, "cannot open file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+bool isComment(std::string_view line) { return line.starts_with("#") || line.starts_with("//"); }
+
+/// ',' ';' or ' ' (whitespace runs) for a line.
+char detectDelimiter(std::string_view line) {
+  if (line.find(';') != std::string_view::npos) return ';';
+  if (line.find(',') != std::string_view::npos) return ',';
+  return ' ';
+}
+
+void split(std::string_view line, char delim, std::vector<std::string_view>& out) {
+  out.clear();
+  if (delim == ' ') {
+    std::size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+      std::size_t j = i;
+      while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
+      if (j > i) out.push_back(line.substr(i, j - i));
+      i = j;
+    }
+    return;
+  }
+  std::size_t i = 0;
+  while (true) {
+    const std::size_t j = line.find(delim, i);
+    out.push_back(trim(line.substr(i, j == std::string_view::npos ? std::string_view::npos : j - i)));
+    if (j == std::string_view::npos) break;
+    i = j + 1;
+  }
+  if (!out.empty() && out.back().empty()) out.pop_back();  // trailing delimiter
+}
+
+bool parseNumber(std::string_view tok, bool decimal_comma, double& v) {
+  if (tok.empty()) return false;
+  std::string tmp;
+  if (decimal_comma && tok.find(',') != std::string_view::npos) {
+    tmp.assign(tok);
+    std::replace(tmp.begin(), tmp.end(), ',', '.');
+    tok = tmp;
+  }
+  if (tok.front() == '+') tok.remove_prefix(1);
+  auto [p, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+  return ec == std::errc() && p == tok.data() + tok.size();
+}
+
+Col columnFromName(std::string name) {
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+  name.erase(std::remove(name.begin(), name.end(), '"'), name.end());
+  if (name.starts_with("//")) name.erase(0, 2);
+  if (name == "x") return Col::X;
+  if (name == "y") return Col::Y;
+  if (name == "z") return Col::Z;
+  if (name == "r" || name == "red") return Col::R;
+  if (name == "g" || name == "green") return Col::G;
+  if (name == "b" || name == "blue") return Col::B;
+  if (name == "i" || name == "intensity" || name == "scalar_intensity" || name == "reflectance") return Col::I;
+  if (name == "nx" || name == "normal_x") return Col::NX;
+  if (name == "ny" || name == "normal_y") return Col::NY;
+  if (name == "nz" || name == "normal_z") return Col::NZ;
+  return Col::Scalar;
+}
+
+/// Column roles guessed from the column count and a sample of rows (see text_io.hpp).
+std::vector<Col> guessColumns(std::size_t ncols, const std::vector<std::vector<double>>& sample) {
+  auto colorLike = [&](std::size_t first) {
+    for (const auto& row : sample)
+      for (std::size_t k = first; k < first + 3; ++k)
+        if (!(row[k] >= 0 && row[k] <= 255 && row[k] == std::floor(row[k]))) return false;
+    return true;
+  };
+  std::vector<Col> c{Col::X, Col::Y, Col::Z};
+  auto add = [&](std::initializer_list<Col> cols) { c.insert(c.end(), cols); };
+  if (ncols == 4) add({Col::I});
+  else if (ncols == 6) colorLike(3) ? add({Col::R, Col::G, Col::B}) : add({Col::NX, Col::NY, Col::NZ});
+  else if (ncols == 7) colorLike(4) ? add({Col::I, Col::R, Col::G, Col::B}) : add({Col::R, Col::G, Col::B, Col::I});
+  else if (ncols == 9)
+    colorLike(3) ? add({Col::R, Col::G, Col::B, Col::NX, Col::NY, Col::NZ})
+                 : add({Col::NX, Col::NY, Col::NZ, Col::R, Col::G, Col::B});
+  while (c.size() < ncols) c.push_back(Col::Scalar);
+  return c;
+}
+
+struct Line {
+  std::string_view text;
+  std::uint64_t number;  ///< 1-based
+  std::uint64_t offset;
+};
+
+/// Calls f(Line) for each line from byte `pos`; f returns false to stop.
+template <class F>
+void forEachLine(const std::string& text, std::size_t pos, std::uint64_t line_no, F&& f) {
+  while (pos < text.size()) {
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string::npos) eol = text.size();
+    if (!f(Line{std::string_view(text).substr(pos, eol - pos), line_no, pos})) return;
+    pos = eol + 1;
+    ++line_no;
+  }
+}
+
+}  // namespace
+
+Dataset readText(const std::filesystem::path& path, Progress* progress) {
+  const std::string text = readWhole(path);
+  if (text.empty()) throw FileError(path, "file is empty (0 bytes)");
+  const std::size_t probe = std::min<std::size_t>(text.size(), 65536);
+  if (const void* nul = std::memchr(text.data(), '\0', probe))
+    throw FileError(path, "binary content (NUL byte), not a text point file",
+                    atByte(static_cast<std::uint64_t>(static_cast<const char*>(nul) - text.data())));
+
+  // Pass 1: header, delimiter, column count and a sample of data rows.
+  std::vector<std::string> names;
+  char delim = 0;
+  std::size_t ncols = 0;
+  std::size_t data_pos = std::string::npos;
+  std::uint64_t data_line = 0;
+  std::vector<std::vector<double>> sample;
+  std::vector<std::string_view> toks;
+  forEachLine(text, 0, 1, [&](const Line& ln) {
+    std::string_view line = trim(ln.text);
+    if (line.empty()) return true;
+    if (isComment(line)) {
+      if (data_pos == std::string::npos && names.empty()) {
+        std::string_view body = trim(line.substr(line.starts_with("//") ? 2 : 1));
+        split(body, detectDelimiter(body), toks);
+        int xyz = 0;
+        for (auto t : toks) xyz += static_cast<int>(columnFromName(std::string(t)) <= Col::Z);
+        if (xyz == 3) names.assign(toks.begin(), toks.end());
+      }
+      return true;
+    }
+    const char d = delim ? delim : detectDelimiter(line);
+    split(line, d, toks);
+    std::vector<double> vals(toks.size());
+    bool numeric = !toks.empty();
+    for (std::size_t k = 0; k < toks.size() && numeric; ++k) numeric = parseNumber(toks[k], d == ';', vals[k]);
+    if (data_pos == std::string::npos) {
+      if (numeric && toks.size() == 1 && vals[0] == std::floor(vals[0])) return true;  // PTS count
+      if (!numeric) {
+        if (!names.empty() || sample.size() > 0)
+          throw FileError(path, "'" + std::string(line.substr(0, 60)) + "' is neither a header nor numbers",
+                          atLine(ln.number));
+        names.assign(toks.begin(), toks.end());
+        return true;
+      }
+      delim = d;
+      ncols = toks.size();
+      data_pos = ln.offset;
+      data_line = ln.number;
+    }
+    if (numeric && toks.size() == ncols) sample.push_back(std::move(vals));
+    return sample.size() < 1000;
+  });
+  if (data_pos == std::string::npos)
+    throw FileError(path, "no data lines (only header or comment lines)", atLine(1));
+  if (ncols < 3)
+    throw FileError(path, "data lines have " + std::to_string(ncols) + " value(s); at least x y z are needed",
+                    atLine(data_line));
+
+  std::vector<Col> cols;
+  if (!names.empty()) {
+    if (names.size() != ncols)
+      throw FileError(path, "the header names " + std::to_string(names.size()) + " columns but data lines have " +
+                                std::to_string(ncols) + " values",
+                      atLine(data_line));
+    for (const auto& nm : names) cols.push_back(columnFromName(nm));
+    for (Col need : {Col::X, Col::Y, Col::Z})
+      if (std::count(cols.begin(), cols.end(), need) != 1)
+        throw FileError(path, "the header must name exactly one x, one y and one z column", atLine(data_line - 1));
+    // Colour / normal triples only when complete; otherwise keep them as scalar fields.
+    auto complete = [&](Col a, Col b, Col c) {
+      const bool all = std::count(cols.begin(), cols.end(), a) == 1 && std::count(cols.begin(), cols.end(), b) == 1 &&
+                       std::count(cols.begin(), cols.end(), c) == 1;
+      if (!all) std::replace_if(cols.begin(), cols.end(), [&](Col x) { return x == a || x == b || x == c; }, Col::Scalar);
+    };
+    complete(Col::R, Col::G, Col::B);
+    complete(Col::NX, Col::NY, Col::NZ);
+    bool seen_i = false;
+    for (auto& c : cols)
+      if (c == Col::I) {
+        if (seen_i) c = Col::Scalar;
+        seen_i = true;
+      }
+  } else {
+    cols = guessColumns(ncols, sample);
+  }
+
+  // Pass 2: all data rows into the columns.
+  Dataset d;
+  d.source = path;
+  d.format = "text";
+  Scan scan;
+  scan.name = path.stem().string();
+  PointCloud& c = scan.cloud;
+  const auto has = [&](Col x) { return std::find(cols.begin(), cols.end(), x) != cols.end(); };
+  std::vector<ScalarField*> scalar_of(ncols, nullptr);
+  for (std::size_t k = 0; k < ncols; ++k)
+    if (cols[k] == Col::Scalar)
+      c.scalar_fields.push_back({names.empty() ? "column " + std::to_string(k + 1) : names[k], {}});
+  for (std::size_t k = 0, s = 0; k < ncols; ++k)
+    if (cols[k] == Col::Scalar) scalar_of[k] = &c.scalar_fields[s++];
+  bool offset_set = false;
+  std::vector<double> vals(ncols);
+  const double total = static_cast<double>(text.size());
+  std::uint64_t count = 0;
+  forEachLine(text, data_pos, data_line, [&](const Line& ln) {
+    std::string_view line = trim(ln.text);
+    if (line.empty() || isComment(line)) return true;
+    split(line, delim, toks);
+    if (toks.size() == 1 && ncols > 1) {  // PTS block count line
+      double v;
+      if (parseNumber(toks[0], false, v) && v == std::floor(v)) return true;
+    }
+    if (toks.size() != ncols)
+      throw FileError(path, "expected " + std::to_string(ncols) + " values, found " + std::to_string(toks.size()),
+                      atLine(ln.number, "point " + std::to_string(count)));
+    for (std::size_t k = 0; k < ncols; ++k)
+      if (!parseNumber(toks[k], delim == ';', vals[k]))
+        throw FileError(path, "'" + std::string(toks[k]) + "' is not a number (column " + std::to_string(k + 1) + ")",
+                        atLine(ln.number, "point " + std::to_string(count)));
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    Eigen::Vector3f n = Eigen::Vector3f::Zero();
+    Rgb8 rgb{0, 0, 0};
+    for (std::size_t k = 0; k < ncols; ++k) {
+      const double v = vals[k];
+      switch (cols[k]) {
+        case Col::X: p.x() = v; break;
+        case Col::Y: p.y() = v; break;
+        case Col::Z: p.z() = v; break;
+        case Col::R: rgb[0] = static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0)); break;
+        case Col::G: rgb[1] = static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0)); break;
+        case Col::B: rgb[2] = static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0)); break;
+        case Col::I: c.intensity.push_back(static_cast<float>(v)); break;
+        case Col::NX: n.x() = static_cast<float>(v); break;
+        case Col::NY: n.y() = static_cast<float>(v); break;
+        case Col::NZ: n.z() = static_cast<float>(v); break;
+        case Col::Scalar: scalar_of[k]->values.push_back(static_cast<float>(v)); break;
+      }
+    }
+    if (!offset_set) {
+      if (p.allFinite() && p.cwiseAbs().maxCoeff() >= 1e4) c.offset = p.array().round().matrix();
+      offset_set = true;
+    }
+    c.positions.push_back((p - c.offset).cast<float>());
+    if (has(Col::R)) c.colors.push_back(rgb);
+    if (has(Col::NX)) c.normals.push_back(n);
+    if ((++count & 0xFFFF) == 0) {
+      checkCanceled(progress);
+      reportProgress(progress, static_cast<double>(ln.offset) / total, "reading text");
+    }
+    return true;
+  });
+  d.metadata.emplace_back("delimiter", delim == ' ' ? "space/tab" : std::string(1, delim));
+  d.metadata.emplace_back("header", names.empty() ? "none (columns guessed from their count)" : "yes");
+  d.scans.push_back(std::move(scan));
+  reportProgress(progress, 1.0, "reading text");
+  return d;
+}
+
+}  // namespace plumb
