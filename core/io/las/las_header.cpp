@@ -162,7 +162,8 @@ LasHeader parseHeader(std::span<const std::uint8_t> bytes, std::uint64_t file_si
     }
   }
   const std::uint64_t end =
-      (h.version_minor >= 4 && h.evlr_start > h.offset_to_points && h.evlr_start <= file_size)
+      (h.version_minor >= 4 && h.evlr_count > 0 && h.evlr_start > h.offset_to_points &&
+       h.evlr_start <= file_size)
           ? h.evlr_start
           : file_size;
   const std::uint64_t room = end - h.offset_to_points;

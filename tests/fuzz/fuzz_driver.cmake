@@ -1,0 +1,64 @@
+# cmake -P script behind the fuzz CTest tests (see tests/fuzz/CMakeLists.txt).
+#   MODE=build: configure + build the clang tree FUZZ_ROOT/tree for MODULES.
+#   MODE=run:   run FUZZ_ROOT/tree/fuzz_MODULE for SECONDS on its corpus; fail on a crash.
+cmake_minimum_required(VERSION 3.25)
+
+if(MODE STREQUAL "build")
+  include(ProcessorCount)
+  ProcessorCount(jobs)
+  if(jobs EQUAL 0)
+    set(jobs 2)
+  endif()
+  execute_process(
+    COMMAND ${CMAKE_COMMAND} -S ${PLUMB_SOURCE_DIR}/tests/fuzz/standalone -B ${FUZZ_ROOT}/tree
+      -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+      -DCMAKE_CXX_COMPILER=${CLANGXX} -DCMAKE_C_COMPILER=${CLANG}
+      -DPLUMB_SOURCE_DIR=${PLUMB_SOURCE_DIR} "-DPLUMB_FUZZ_MODULES=${MODULES}"
+    COMMAND_ERROR_IS_FATAL ANY)
+  execute_process(COMMAND ${CMAKE_COMMAND} --build ${FUZZ_ROOT}/tree -j ${jobs}
+                  COMMAND_ERROR_IS_FATAL ANY)
+  return()
+endif()
+
+if(NOT MODE STREQUAL "run")
+  message(FATAL_ERROR "fuzz_driver.cmake: MODE must be build or run")
+endif()
+
+set(binary ${FUZZ_ROOT}/tree/fuzz_${MODULE})
+if(NOT EXISTS ${binary})
+  message(FATAL_ERROR "fuzz: ${binary} was not built (run the fuzz_build test first)")
+endif()
+
+# Seed corpus: shared real data for the module, else tests/fuzz/seeds/<module>.
+set(seed_dir ${FUZZ_ROOT}/seeds/${MODULE})
+set(corpus_dir ${FUZZ_ROOT}/corpus/${MODULE})
+set(crash_dir ${FUZZ_ROOT}/crashes/${MODULE})
+file(REMOVE_RECURSE ${seed_dir})
+file(MAKE_DIRECTORY ${seed_dir} ${corpus_dir} ${crash_dir})
+set(source_seeds ${SHARED_DATA_DIR}/${MODULE})
+if(NOT IS_DIRECTORY ${source_seeds})
+  set(source_seeds ${PLUMB_SOURCE_DIR}/tests/fuzz/seeds/${MODULE})
+endif()
+set(count 0)
+if(IS_DIRECTORY ${source_seeds})
+  file(GLOB seeds ${source_seeds}/*)
+  foreach(seed ${seeds})
+    file(SIZE ${seed} size)
+    if(NOT IS_DIRECTORY ${seed} AND size LESS_EQUAL 1048576)  # big seeds slow every run
+      file(COPY ${seed} DESTINATION ${seed_dir})
+      math(EXPR count "${count} + 1")
+    endif()
+  endforeach()
+endif()
+message(STATUS "fuzz_${MODULE}: ${count} seeds from ${source_seeds}, ${SECONDS} s")
+
+set(ENV{ASAN_OPTIONS} "detect_leaks=1:abort_on_error=0")
+set(ENV{UBSAN_OPTIONS} "halt_on_error=1:print_stacktrace=1")
+execute_process(
+  COMMAND ${binary} -max_total_time=${SECONDS} -rss_limit_mb=2048 -timeout=10
+    -print_final_stats=1 -artifact_prefix=${crash_dir}/ ${corpus_dir} ${seed_dir}
+  RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  file(GLOB crashes ${crash_dir}/*)
+  message(FATAL_ERROR "fuzz_${MODULE} failed (exit ${rc}); crash inputs: ${crashes}")
+endif()
