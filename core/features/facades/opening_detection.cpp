@@ -7,6 +7,7 @@
 #include <map>
 
 #include "common/error.hpp"
+#include "features/planes/polygon_2d.hpp"
 
 namespace plumb {
 
@@ -56,15 +57,6 @@ double overlap(const Rect& a, const Rect& b) {
   return u > 0 ? i.area() / u : 0.0;
 }
 
-bool insideRing(const std::vector<Eigen::Vector2d>& r, const Eigen::Vector2d& p) {
-  bool in = false;
-  for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
-    if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
-        p.x() < (r[j].x() - r[i].x()) * (p.y() - r[i].y()) / (r[j].y() - r[i].y()) + r[i].x())
-      in = !in;
-  return in;
-}
-
 /// Rasterised outer ring for fast inside tests (cell 5 cm).
 struct RingMask {
   double u0 = 0, v0 = 0, cell = 0.05;
@@ -83,7 +75,7 @@ struct RingMask {
     for (int j = 0; j < nv; ++j)
       for (int i = 0; i < nu; ++i)
         in[static_cast<std::size_t>(j) * nu + i] =
-            insideRing(ring, {u0 + (i + 0.5) * cell, v0 + (j + 0.5) * cell});
+            ringContains(ring, {u0 + (i + 0.5) * cell, v0 + (j + 0.5) * cell});
   }
   bool contains(const Eigen::Vector2d& p) const {
     const int i = static_cast<int>(std::floor((p.x() - u0) / cell));
@@ -91,38 +83,6 @@ struct RingMask {
     return i >= 0 && j >= 0 && i < nu && j < nv && in[static_cast<std::size_t>(j) * nu + i];
   }
 };
-
-/// 8-connected components of points on a grid of cell `link`.
-std::vector<std::vector<std::size_t>> components(const std::vector<Eigen::Vector2d>& pts, double link) {
-  std::map<std::pair<std::int64_t, std::int64_t>, int> label;
-  auto key = [link](const Eigen::Vector2d& p) {
-    return std::pair<std::int64_t, std::int64_t>(std::int64_t(std::floor(p.x() / link)),
-                                                 std::int64_t(std::floor(p.y() / link)));
-  };
-  for (const auto& p : pts) label.emplace(key(p), -1);
-  int n = 0;
-  for (auto& [c, l] : label) {
-    if (l >= 0) continue;
-    l = n;
-    std::vector<std::pair<std::int64_t, std::int64_t>> stack{c};
-    while (!stack.empty()) {
-      auto cur = stack.back();
-      stack.pop_back();
-      for (int di = -1; di <= 1; ++di)
-        for (int dj = -1; dj <= 1; ++dj) {
-          auto it = label.find({cur.first + di, cur.second + dj});
-          if (it != label.end() && it->second < 0) {
-            it->second = n;
-            stack.push_back(it->first);
-          }
-        }
-    }
-    ++n;
-  }
-  std::vector<std::vector<std::size_t>> out(n);
-  for (std::size_t k = 0; k < pts.size(); ++k) out[label[key(pts[k])]].push_back(k);
-  return out;
-}
 
 /// Moves each side of r to the nearest façade inlier beyond it (the wall edge).
 Rect snapToWall(const Rect& r, const std::vector<Eigen::Vector2d>& wall, double snap) {
@@ -258,7 +218,7 @@ OpeningDetectionResult detectOpenings(const PointCloud& cloud,
       if (i < cloud.size()) wall.push_back(f.to2d(cloud.world(i)));
     std::vector<Rect> rects;
     // Ray-traced openings: components -> vertical bounding rectangles -> snapped to the wall.
-    for (const auto& comp : components(evidence[k], params.link_distance)) {
+    for (const auto& comp : gridComponents(evidence[k], params.link_distance)) {
       if (comp.size() < static_cast<std::size_t>(params.min_evidence)) continue;
       Rect r{1e300, 1e300, -1e300, -1e300};
       for (auto c : comp) {

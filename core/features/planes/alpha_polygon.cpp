@@ -13,6 +13,7 @@
 #include <unordered_map>
 
 #include "features/planes/detected_plane.hpp"
+#include "features/planes/polygon_2d.hpp"
 
 namespace plumb::planes_detail {
 namespace {
@@ -25,26 +26,6 @@ using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
 using AlphaShape = CGAL::Alpha_shape_2<Delaunay>;
 
 using Ring = std::vector<Eigen::Vector2d>;
-
-double signedArea(const Ring& r) {
-  double a = 0;
-  for (std::size_t i = 0, n = r.size(); i < n; ++i) {
-    const auto& p = r[i];
-    const auto& q = r[(i + 1) % n];
-    a += p.x() * q.y() - q.x() * p.y();
-  }
-  return 0.5 * a;
-}
-
-bool insideRing(const Ring& r, const Eigen::Vector2d& p) {
-  bool in = false;
-  for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
-    if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
-        p.x() < (r[j].x() - r[i].x()) * (p.y() - r[i].y()) / (r[j].y() - r[i].y()) + r[i].x())
-      in = !in;
-  }
-  return in;
-}
 
 void simplifyRange(const Ring& r, std::size_t a, std::size_t b, double tol,
                    std::vector<bool>& keep) {
@@ -130,7 +111,7 @@ std::vector<Ring> alphaRings(const std::vector<K::Point_2>& pts, double alpha_ra
   std::size_t outer = 0;
   double best = -1;
   for (std::size_t k = 0; k < rings.size(); ++k) {
-    const double a = signedArea(rings[k]);
+    const double a = ringSignedArea(rings[k]);
     if (a > best) {
       best = a;
       outer = k;
@@ -139,7 +120,7 @@ std::vector<Ring> alphaRings(const std::vector<K::Point_2>& pts, double alpha_ra
   if (best <= 0) return {};
   std::vector<Ring> result{rings[outer]};
   for (std::size_t k = 0; k < rings.size(); ++k)
-    if (k != outer && signedArea(rings[k]) < 0 && insideRing(rings[outer], rings[k][0]))
+    if (k != outer && ringSignedArea(rings[k]) < 0 && ringContains(rings[outer], rings[k][0]))
       result.push_back(rings[k]);
   return result;
 }
@@ -159,36 +140,7 @@ std::vector<PlanarPolygon> makePolygons(const PointCloud& cloud, const DetectedP
   for (std::size_t k = 0; k < n; ++k)
     uv[k] = frame.to2d(cloud.positions[plane.inliers[k]].cast<double>());
   // Connected parts: 8-connected occupied cells of size component_distance.
-  const double cell = params.component_distance;
-  auto key = [cell](const Eigen::Vector2d& p) {
-    const auto i = static_cast<std::int64_t>(std::floor(p.x() / cell));
-    const auto j = static_cast<std::int64_t>(std::floor(p.y() / cell));
-    return std::pair<std::int64_t, std::int64_t>(i, j);
-  };
-  std::map<std::pair<std::int64_t, std::int64_t>, int> cell_label;
-  for (const auto& p : uv) cell_label.emplace(key(p), -1);
-  int labels = 0;
-  for (auto& [c, label] : cell_label) {
-    if (label >= 0) continue;
-    std::vector<std::pair<std::int64_t, std::int64_t>> stack{c};
-    label = labels;
-    while (!stack.empty()) {
-      const auto cur = stack.back();
-      stack.pop_back();
-      for (int di = -1; di <= 1; ++di)
-        for (int dj = -1; dj <= 1; ++dj) {
-          auto it = cell_label.find({cur.first + di, cur.second + dj});
-          if (it != cell_label.end() && it->second < 0) {
-            it->second = labels;
-            stack.push_back(it->first);
-          }
-        }
-    }
-    ++labels;
-  }
-  std::vector<std::vector<std::uint32_t>> parts(labels);
-  for (std::size_t k = 0; k < n; ++k) parts[cell_label[key(uv[k])]].push_back(static_cast<std::uint32_t>(k));
-
+  const auto parts = gridComponents(uv, params.component_distance);
   std::vector<PlanarPolygon> polygons;
   for (const auto& part : parts) {
     if (part.size() < static_cast<std::size_t>(std::max(3, params.min_component_inliers))) continue;
@@ -219,7 +171,7 @@ std::vector<PlanarPolygon> makePolygons(const PointCloud& cloud, const DetectedP
     }
     if (pts.size() >= 3) poly.rings = alphaRings(pts, params.alpha_radius, params.simplify_tolerance);
     poly.area = 0;
-    for (std::size_t r = 0; r < poly.rings.size(); ++r) poly.area += signedArea(poly.rings[r]);
+    for (std::size_t r = 0; r < poly.rings.size(); ++r) poly.area += ringSignedArea(poly.rings[r]);
     if (params.keep_inlier_indices) poly.inliers = std::move(idx);
     polygons.push_back(std::move(poly));
   }

@@ -229,6 +229,34 @@ double lineDistance(const Segment3D& s, const Eigen::Vector3d& p) {
   return (r - r.dot(d) * d).norm();
 }
 
+/// Extends a snapped segment along its line over the patch points lying next to the line,
+/// as long as consecutive points leave no gap wider than 3 typical spacings (contour pieces
+/// stop short of corners, where pixel directions are mixed).
+void extendAlongPoints(const PointCloud& cloud, const std::vector<std::uint32_t>& points, Segment3D& s) {
+  const Eigen::Vector3d d = s.direction();
+  const double len = s.length();
+  std::vector<double> t;
+  double near = 0.03;
+  for (auto i : points) {
+    const Eigen::Vector3d r = cloud.positions[i].cast<double>() - s.a;
+    const double along = r.dot(d);
+    if ((r - along * d).squaredNorm() < near * near) t.push_back(along);
+  }
+  if (t.size() < 10) return;
+  std::sort(t.begin(), t.end());
+  const double gap = std::max(0.05, 3.0 * len / double(t.size()));
+  // Start inside the current extent, walk outwards both ways.
+  auto mid = std::lower_bound(t.begin(), t.end(), 0.5 * len) - t.begin();
+  if (mid >= static_cast<long>(t.size())) return;
+  std::size_t lo = mid, hi = mid;
+  while (lo > 0 && t[lo] - t[lo - 1] < gap) --lo;
+  while (hi + 1 < t.size() && t[hi + 1] - t[hi] < gap) ++hi;
+  const double a = std::min(0.0, t[lo]), b = std::max(len, t[hi]);
+  const Eigen::Vector3d o = s.a;
+  s.a = o + a * d;
+  s.b = o + b * d;
+}
+
 }  // namespace
 
 SegmentDetectionResult detectSegments(const PointCloud& cloud, const SegmentDetectionParams& params,
@@ -300,6 +328,7 @@ SegmentDetectionResult detectSegments(const PointCloud& cloud, const SegmentDete
           c.snapped = true;
         }
       }
+      if (c.snapped) extendAlongPoints(cloud, patches[kept[k]].points, c.s);
       if (c.s.length() > 0) cands.push_back(c);
     }
   }

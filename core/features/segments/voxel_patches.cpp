@@ -87,13 +87,13 @@ std::vector<Patch> growPatches(const PointCloud& cloud, const SegmentDetectionPa
   std::unordered_map<std::uint64_t, int> index;
   index.reserve(cells.size() * 2);
   for (std::size_t c = 0; c < cells.size(); ++c) index.emplace(cells[c].key, static_cast<int>(c));
-  auto neighbours = [&](const Cell& c, std::vector<int>& out) {
+  auto neighbours = [&](const Cell& c, std::vector<int>& out, int ring = 1) {
     out.clear();
     std::int64_t x, y, z;
     unpackKey(c.key, x, y, z);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
+    for (int dx = -ring; dx <= ring; ++dx)
+      for (int dy = -ring; dy <= ring; ++dy)
+        for (int dz = -ring; dz <= ring; ++dz) {
           if (!dx && !dy && !dz) continue;
           auto it = index.find(packKey(x + dx, y + dy, z + dz));
           if (it != index.end()) out.push_back(it->second);
@@ -230,7 +230,8 @@ std::vector<Patch> growPatches(const PointCloud& cloud, const SegmentDetectionPa
     std::vector<int> nbl;
     std::vector<int> cand;
     const Cell& c = cells[ci];
-    neighbours(c, nbl);
+    // Edge voxels see the patches two voxels away (their own block straddles the edge).
+    neighbours(c, nbl, c.region >= 0 ? 1 : 2);
     if (c.region >= 0) cand.push_back(c.region);
     for (int j : nbl)
       if (cells[j].region >= 0 && std::find(cand.begin(), cand.end(), cells[j].region) == cand.end())
@@ -249,7 +250,7 @@ std::vector<Patch> growPatches(const PointCloud& cloud, const SegmentDetectionPa
   // Patches are adjacent when they meet in some voxel's neighbourhood (edge voxels between
   // two walls belong to neither region but see both).
   for (const auto& c : cells) {
-    neighbours(c, nb);
+    neighbours(c, nb, c.region >= 0 ? 1 : 2);
     std::vector<int> seen;
     if (c.region >= 0) seen.push_back(c.region);
     for (int j : nb)
