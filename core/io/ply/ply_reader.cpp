@@ -301,7 +301,8 @@ class Reader {
   [[noreturn]] void truncated(const Element& e, std::uint64_t index,
                               std::optional<std::uint64_t> end_byte = {}) {
     std::ostringstream msg;
-    msg << "truncated data: expected " << e.count << " " << e.name << "s, file ends at byte "
+    const std::string plural = e.name == "vertex" ? "vertices" : e.name + "s";
+    msg << "truncated data: expected " << e.count << " " << plural << ", file ends at byte "
         << end_byte.value_or(in_.offset() + in_.available()) << " in " << e.name << " " << index;
     FileLocation loc;
     loc.element = e.name + " " + std::to_string(index);

@@ -1,0 +1,174 @@
+// assimp import of the shared IFC files (element counts verified by verify_shared_data.py's
+// entity regex and shared/data/README.md), axis conversion, the IFC4 failure message, and
+// OBJ/STL/glTF round trips.
+#include <gtest/gtest.h>
+
+#include "common/error.hpp"
+#include "io/mesh/mesh_io.hpp"
+#include "support/test_support.hpp"
+
+using namespace plumb;
+
+TEST(Mesh, DuplexElementCountsAndZUp) {
+  const BimModel m = readMesh(test::sharedData("ifc/duplex.ifc"));
+  // File: IFCWALL 1 + IFCWALLSTANDARDCASE 56, IFCWINDOW 24, IFCDOOR 14, IFCSLAB 21 (README too),
+  // IFCBEAM 8, IFCCOVERING 13, IFCFOOTING 7, IFCMEMBER 4, IFCRAILING 4, IFCSTAIRFLIGHT 2,
+  // IFCFURNISHINGELEMENT 61. Spaces and openings carry no surface geometry through assimp.
+  EXPECT_EQ(m.elementCountOfType("IfcWall"), 57u);
+  EXPECT_EQ(m.elementCountOfType("IfcWindow"), 24u);
+  EXPECT_EQ(m.elementCountOfType("IfcDoor"), 14u);
+  EXPECT_EQ(m.elementCountOfType("IfcSlab"), 21u);
+  EXPECT_EQ(m.elementCountOfType("IfcBeam"), 8u);
+  EXPECT_EQ(m.elementCountOfType("IfcCovering"), 13u);
+  EXPECT_EQ(m.elementCountOfType("IfcFooting"), 7u);
+  EXPECT_EQ(m.elementCountOfType("IfcMember"), 4u);
+  EXPECT_EQ(m.elementCountOfType("IfcRailing"), 4u);
+  EXPECT_EQ(m.elementCountOfType("IfcStairFlight"), 2u);
+  EXPECT_EQ(m.elementCountOfType("IfcFurnishingElement"), 61u);
+  EXPECT_EQ(m.elementCountOfType("IfcOpeningElement"), 0u);
+  EXPECT_EQ(m.elements.size(), 215u);  // the sum of the above
+  EXPECT_EQ(m.triangle_element.size(), m.mesh.triangleCount());
+  // The duplex is ~8 m high (README): Z must carry the height after the Y-up -> Z-up turn.
+  const Bounds b = m.mesh.bounds();
+  EXPECT_GT(b.size().z(), 7.5);
+  EXPECT_LT(b.size().z(), 9.0);
+  // Elements keep names and GlobalIds.
+  bool found = false;
+  for (const auto& e : m.elements)
+    if (e.guid == "2O2Fr$t4X7Zf8NOew3FNtn") {
+      found = true;
+      EXPECT_EQ(e.type, "IfcWall");
+      EXPECT_EQ(e.name, "BasicWall:Exterior-BrickonBlock:138062");
+    }
+  EXPECT_TRUE(found);
+  // Walls stand vertically: most wall triangle area has a horizontal normal.
+  double vertical = 0, total = 0;
+  for (auto t : m.trianglesOfType("IfcWall")) {
+    const double a = m.mesh.triangleArea(t);
+    total += a;
+    if (std::abs(m.mesh.triangleNormal(t).z()) < 0.1) vertical += a;
+  }
+  EXPECT_GT(vertical / total, 0.6);
+}
+
+TEST(Mesh, TestedSampleProject) {
+  const BimModel m = readMesh(test::sharedData("ifc/tested_sample_project.ifc"));
+  // File: IFCWALLSTANDARDCASE 3, IFCWINDOW 9, IFCDOOR 1, IFCSLAB 2, IFCMEMBER 31, IFCPLATE 12,
+  // IFCFURNISHINGELEMENT 35 (README: walls 3, windows 9, door 1, slabs 2).
+  EXPECT_EQ(m.elementCountOfType("IfcWall"), 3u);
+  EXPECT_EQ(m.elementCountOfType("IfcWindow"), 9u);
+  EXPECT_EQ(m.elementCountOfType("IfcDoor"), 1u);
+  EXPECT_EQ(m.elementCountOfType("IfcSlab"), 2u);
+  EXPECT_EQ(m.elementCountOfType("IfcMember"), 31u);
+  EXPECT_EQ(m.elementCountOfType("IfcPlate"), 12u);
+  EXPECT_EQ(m.elementCountOfType("IfcFurnishingElement"), 35u);
+  const Bounds b = m.mesh.bounds();
+  EXPECT_GT(b.size().z(), 3.0);  // slab to wall top, Z up
+  EXPECT_LT(b.size().z(), 4.5);
+}
+
+TEST(Mesh, IfcOpenHouse) {
+  const BimModel m = readMesh(test::sharedData("ifc/IfcOpenHouse_IFC4.ifc"));
+  // File: IFCWALLSTANDARDCASE 4, IFCDOOR 1, IFCSLAB 2, IFCFOOTING 1, IFCMEMBER 20, IFCPLATE 5,
+  // IFCSTAIRFLIGHT 1, IFCWINDOW 5. The 5 windows are aggregates of 4 frame members + 1 pane each;
+  // assimp 5.2 hands over the parts (IfcMember/IfcPlate), not IfcWindow nodes.
+  EXPECT_EQ(m.elementCountOfType("IfcWall"), 4u);
+  EXPECT_EQ(m.elementCountOfType("IfcDoor"), 1u);
+  EXPECT_EQ(m.elementCountOfType("IfcSlab"), 2u);
+  EXPECT_EQ(m.elementCountOfType("IfcFooting"), 1u);
+  EXPECT_EQ(m.elementCountOfType("IfcMember"), 20u);
+  EXPECT_EQ(m.elementCountOfType("IfcPlate"), 5u);
+  EXPECT_EQ(m.elementCountOfType("IfcStairFlight"), 1u);
+  EXPECT_EQ(m.elementCountOfType("IfcWindow"), 0u);
+  // The file is in millimetres: assimp applies the unit, so walls are metres tall, not 1000x.
+  const Bounds walls = [&] {
+    Bounds b;
+    for (auto t : m.trianglesOfType("IfcWall"))
+      for (auto v : m.mesh.triangles[t]) b.extend(m.mesh.vertices[v]);
+    return b;
+  }();
+  EXPECT_GT(walls.size().z(), 2.0);
+  EXPECT_LT(walls.size().z(), 8.0);
+  EXPECT_LT(walls.size().x(), 30.0);
+}
+
+TEST(Mesh, UnreadableIfc4GivesActionableError) {
+  const auto path = test::sharedData("ifc/AC20-FZK-Haus.ifc");
+  try {
+    readMesh(path);
+    FAIL() << "assimp 5.2 is expected to reject this IFC4 file";
+  } catch (const FileError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("AC20-FZK-Haus.ifc"), std::string::npos) << m;
+    EXPECT_NE(m.find("schema IFC4"), std::string::npos) << m;
+    EXPECT_NE(m.find("entity #20909 (IfcSpace)"), std::string::npos) << m;
+    EXPECT_NE(m.find("IFC2X3"), std::string::npos) << m;
+    EXPECT_NE(m.find("glTF/OBJ"), std::string::npos) << m;
+    EXPECT_EQ(e.where().line.value_or(0), 11879u);  // grep -n '^#20909=' AC20-FZK-Haus.ifc
+  }
+}
+
+TEST(Mesh, IfcNodeNames) {
+  auto e = elementFromIfcNodeName("IfcWallStandardCase_Basic Wall_x_2O2Fr$t4X7Zf8NOew3FNtn");
+  EXPECT_EQ(e.type, "IfcWall");
+  EXPECT_EQ(e.name, "Basic Wall_x");
+  EXPECT_EQ(e.guid, "2O2Fr$t4X7Zf8NOew3FNtn");
+  e = elementFromIfcNodeName("IfcSlabElementedCase_2O2Fr$t4X7Zf8NOew3FNtn");
+  EXPECT_EQ(e.type, "IfcSlab");
+  EXPECT_EQ(e.name, "");
+  e = elementFromIfcNodeName("Cube.001");
+  EXPECT_EQ(e.type, "");
+  EXPECT_EQ(e.name, "Cube.001");
+}
+
+TEST(Mesh, ObjGroupsBecomeElementsAndObjStlRoundTrip) {
+  const auto dir = test::scratchDir("mesh_obj");
+  test::writeAll(dir / "a.obj",
+                 "# two objects\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 3\n"
+                 "o floor\nf 1 2 3 4\no pole\nf 1 2 5\n");
+  const BimModel m = readMesh(dir / "a.obj");
+  ASSERT_EQ(m.mesh.triangleCount(), 3u);
+  ASSERT_EQ(m.elements.size(), 2u);
+  EXPECT_EQ(m.elements[0].name, "floor");
+  EXPECT_EQ(m.elements[1].name, "pole");
+  EXPECT_NEAR(m.mesh.area(), 1.0 + 1.5, 1e-9);
+  EXPECT_NEAR(m.mesh.bounds().size().z(), 3.0, 1e-9);  // OBJ kept as is (Z up)
+  for (const char* out : {"b.obj", "b.stl"}) {
+    writeMesh(dir / out, m);
+    const BimModel r = readMesh(dir / out);
+    EXPECT_EQ(r.mesh.triangleCount(), 3u) << out;
+    EXPECT_NEAR(r.mesh.area(), 2.5, 1e-6) << out;
+    EXPECT_NEAR(r.mesh.bounds().size().z(), 3.0, 1e-6) << out;
+  }
+  EXPECT_THROW(writeMesh(dir / "c.fbx", m), FileError);
+}
+
+TEST(Mesh, GltfIsTurnedZUp) {
+  // One triangle, 2 m along glTF's +Y (up): must come out 2 m along +Z.
+  const auto dir = test::scratchDir("mesh_gltf");
+  // 3 float32 vertices (0,0,0) (1,0,0) (0,2,0) = 36 bytes, base64-encoded.
+  test::writeAll(dir / "t.gltf", R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+"nodes":[{"mesh":0,"name":"tri"}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,2,0]}],
+"bufferViews":[{"buffer":0,"byteLength":36}],
+"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAAEAAAAAA"}]})");
+  const BimModel m = readMesh(dir / "t.gltf");
+  ASSERT_EQ(m.mesh.triangleCount(), 1u);
+  EXPECT_NEAR(m.mesh.bounds().size().z(), 2.0, 1e-6);
+  EXPECT_NEAR(m.mesh.bounds().size().y(), 0.0, 1e-6);
+  EXPECT_NEAR(m.mesh.bounds().max.z(), 2.0, 1e-6);  // +Y -> +Z (not -Z)
+  EXPECT_EQ(m.elements.at(0).name, "tri");
+}
+
+TEST(Mesh, EmptyAndGarbageFiles) {
+  const auto dir = test::scratchDir("mesh_bad");
+  test::writeAll(dir / "e.obj", "");
+  EXPECT_THROW(readMesh(dir / "e.obj"), FileError);
+  test::writeAll(dir / "g.ifc", "ISO-10303-21;\nHEADER;\nthis is not STEP\n");
+  try {
+    readMesh(dir / "g.ifc");
+    FAIL();
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("g.ifc"), std::string::npos);
+  }
+}

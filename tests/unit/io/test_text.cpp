@@ -1,0 +1,122 @@
+// Text point files: delimiters, header lines, PTS count lines, column guessing, errors, writing.
+#include <gtest/gtest.h>
+
+#include "common/error.hpp"
+#include "io/text/text_io.hpp"
+#include "support/test_support.hpp"
+
+using namespace plumb;
+
+namespace {
+PointCloud readCloud(const std::filesystem::path& p) {
+  Dataset d = readText(p);
+  EXPECT_EQ(d.scans.size(), 1u);
+  return d.scans.at(0).cloud;
+}
+std::string errorOf(const std::filesystem::path& p) {
+  try {
+    readText(p);
+  } catch (const FileError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+}  // namespace
+
+TEST(Text, CsvHeaderNamesColumnsInAnyOrder) {
+  const auto dir = test::scratchDir("text_csv");
+  test::writeAll(dir / "a.csv", "intensity,X,Y,Z,red,green,blue,nx,ny,nz,temperature\n"
+                                "5,1.5,2.5,3.5,255,128,0,0,0,1,21.5\n6,4,5,6,1,2,3,1,0,0,22\n");
+  const PointCloud c = readCloud(dir / "a.csv");
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c.world(0), Eigen::Vector3d(1.5, 2.5, 3.5));
+  EXPECT_EQ(c.colors[0], (Rgb8{255, 128, 0}));
+  EXPECT_EQ(c.intensity, (std::vector<float>{5, 6}));
+  EXPECT_EQ(c.normals[1], Eigen::Vector3f(1, 0, 0));
+  ASSERT_NE(c.findScalarField("temperature"), nullptr);
+  EXPECT_FLOAT_EQ(c.findScalarField("temperature")->values[0], 21.5f);
+}
+
+TEST(Text, PtsWithCountLinesAndGuessedColumns) {
+  const auto dir = test::scratchDir("text_pts");
+  // Leica PTS: count line, then x y z intensity r g b; a second block with its own count.
+  test::writeAll(dir / "a.pts", "2\n1 2 3 -200 10 20 30\n4 5 6 150 40 50 60\n1\n7 8 9 0 70 80 90\n");
+  const PointCloud c = readCloud(dir / "a.pts");
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(c.intensity, (std::vector<float>{-200, 150, 0}));
+  EXPECT_EQ(c.colors[2], (Rgb8{70, 80, 90}));
+}
+
+TEST(Text, SemicolonWithDecimalCommaAndTabs) {
+  const auto dir = test::scratchDir("text_semicolon");
+  test::writeAll(dir / "a.txt", "1,5;2,25;3\r\n4;5;6,75\r\n");
+  PointCloud c = readCloud(dir / "a.txt");
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c.world(0), Eigen::Vector3d(1.5, 2.25, 3));
+  EXPECT_EQ(c.world(1), Eigen::Vector3d(4, 5, 6.75));
+  test::writeAll(dir / "b.xyz", "# scanner export\n1\t2\t3\t0.5\n\n4 \t5\t6\t0.25\n");
+  c = readCloud(dir / "b.xyz");
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c.intensity, (std::vector<float>{0.5f, 0.25f}));
+}
+
+TEST(Text, SixColumnsAreColoursOrNormals) {
+  const auto dir = test::scratchDir("text_six");
+  test::writeAll(dir / "rgb.xyz", "0 0 0 255 0 12\n1 1 1 3 4 5\n");
+  EXPECT_TRUE(readCloud(dir / "rgb.xyz").hasColors());
+  test::writeAll(dir / "n.xyz", "0 0 0 0.6 0 0.8\n1 1 1 0 1 0\n");
+  const PointCloud c = readCloud(dir / "n.xyz");
+  EXPECT_FALSE(c.hasColors());
+  ASSERT_TRUE(c.hasNormals());
+  EXPECT_FLOAT_EQ(c.normals[0].z(), 0.8f);
+}
+
+TEST(Text, GeoreferencedCoordinatesGetAnOffset) {
+  const auto dir = test::scratchDir("text_georef");
+  test::writeAll(dir / "g.xyz", "652000.1234 6862000.5678 35.0001\n652001.0004 6862001.0008 36.0002\n");
+  const PointCloud c = readCloud(dir / "g.xyz");
+  EXPECT_EQ(c.offset, Eigen::Vector3d(652000, 6862001, 35));
+  EXPECT_NEAR(c.world(1).x(), 652001.0004, 1e-6);
+  EXPECT_NEAR(c.world(0).y(), 6862000.5678, 1e-6);
+}
+
+TEST(Text, ErrorsNameFileAndLine) {
+  const auto dir = test::scratchDir("text_errors");
+  test::writeAll(dir / "a.xyz", "1 2 3\n4 5 6\n7 8\n");
+  std::string m = errorOf(dir / "a.xyz");
+  EXPECT_NE(m.find("a.xyz: expected 3 values, found 2 (at point 2, line 3)"), std::string::npos) << m;
+  test::writeAll(dir / "b.csv", "x,y,z\n1,2,3\n1,2,zz\n");
+  m = errorOf(dir / "b.csv");
+  EXPECT_NE(m.find("'zz' is not a number (column 3)"), std::string::npos) << m;
+  EXPECT_NE(m.find("line 3"), std::string::npos) << m;
+  test::writeAll(dir / "c.xyz", "");
+  EXPECT_NE(errorOf(dir / "c.xyz").find("file is empty"), std::string::npos);
+  test::writeAll(dir / "d.xyz", std::string("ab\0cd", 5));
+  EXPECT_NE(errorOf(dir / "d.xyz").find("binary content"), std::string::npos);
+  test::writeAll(dir / "e.csv", "x,y,z\n");
+  EXPECT_NE(errorOf(dir / "e.csv").find("no data lines"), std::string::npos);
+  test::writeAll(dir / "f.csv", "a,b,c\n1,2,3\n");
+  EXPECT_NE(errorOf(dir / "f.csv").find("exactly one x, one y and one z"), std::string::npos);
+  test::writeAll(dir / "g.xyz", "1 2\n3 4\n");
+  EXPECT_NE(errorOf(dir / "g.xyz").find("at least x y z"), std::string::npos);
+}
+
+TEST(Text, WriteThenReadBack) {
+  const auto dir = test::scratchDir("text_write");
+  PointCloud c;
+  c.positions = {{0.1f, 0.2f, 0.3f}, {1e-3f, -5.5f, 7.25f}};
+  c.colors = {{1, 2, 3}, {4, 5, 6}};
+  c.intensity = {0.5f, 1.5f};
+  c.scalar_fields.push_back({"deviation", {0.01f, -0.02f}});
+  for (const char* name : {"w.csv", "w.xyz"}) {
+    writeText(dir / name, c);
+    const PointCloud r = readCloud(dir / name);
+    ASSERT_EQ(r.size(), 2u);
+    EXPECT_EQ(r.positions, c.positions);  // shortest exact float text
+    EXPECT_EQ(r.colors, c.colors);
+    EXPECT_EQ(r.intensity, c.intensity);
+    ASSERT_NE(r.findScalarField("deviation"), nullptr);
+    EXPECT_EQ(r.findScalarField("deviation")->values, c.scalar_fields[0].values);
+  }
+  EXPECT_EQ(test::readAll(dir / "w.csv").substr(0, 32), "x,y,z,red,green,blue,intensity,d");
+}
