@@ -1,5 +1,6 @@
 #include "io/e57/e57_reader.hpp"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,20 @@ Dataset readFromSource(const e57::ByteSource& source, const std::filesystem::pat
   data.metadata.emplace_back("scans", std::to_string(info.scans.size()));
   if (info.image_count) data.metadata.emplace_back("images2D (skipped)", std::to_string(info.image_count));
 
+  // Sections hold at least one bit per record; scans sharing or overlapping sections in a
+  // corrupted file must not multiply the memory a small file can demand.
   std::uint64_t total = 0;
-  for (const auto& s : info.scans) total += s.record_count;
+  unsigned __int128 total_bits = 0;
+  for (const auto& s : info.scans) {
+    total += s.record_count;
+    std::uint64_t bits = 0;
+    for (const auto& f : s.fields) bits += f.bits();
+    total_bits += static_cast<unsigned __int128>(s.record_count) * std::max<std::uint64_t>(bits, 1);
+    if (total_bits > static_cast<unsigned __int128>(file.logicalSize()) * 8)
+      file.fail("recordCount " + std::to_string(s.record_count) + ": the scans up to this one claim " +
+                    std::to_string(total) + " records, more than the file can hold",
+                FileLocation{std::nullopt, std::nullopt, s.points_path});
+  }
   std::uint64_t done = 0;
   for (std::size_t k = 0; k < info.scans.size(); ++k) {
     checkCanceled(progress);

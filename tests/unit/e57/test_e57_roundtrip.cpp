@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <random>
 
@@ -164,6 +165,16 @@ TEST(E57RoundTrip, SyntheticGeoreferencedScansWithPoses) {
   }
   // Float local coordinates: the 0.1 mm grid points come back within float rounding.
   expectSameData(expected, r, 1e-5);
+
+  // The independent Python parser (tools/e57_inspect.py: CRCs, header, XML, bit-pack
+  // decoding) reads the written file with the same counts.
+  const std::string report = (dir / "inspect.txt").string();
+  ASSERT_EQ(std::system(("python3 " PLUMB_E57_INSPECT " " + (dir / "s.e57").string() + " > " + report).c_str()), 0);
+  const std::string text = plumb::test::readAll(report);
+  EXPECT_EQ(text.find("ERROR"), std::string::npos) << text;
+  EXPECT_NE(text.find("valid=19999 (of 20000)"), std::string::npos) << text;
+  EXPECT_NE(text.find("valid=20776 (of 20777)"), std::string::npos) << text;
+  EXPECT_NE(text.find("recordCount=0"), std::string::npos) << text;
 
   // File structure (E57_FACTS.md §2, §7, pitfalls 5 and 8).
   const std::string bytes = plumb::test::readAll(dir / "s.e57");
