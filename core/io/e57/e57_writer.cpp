@@ -62,6 +62,10 @@ std::vector<OutField> describeScan(const PointCloud& cloud, const E57WriteOption
     }
   }
   if (!b.empty()) w.bounds = b;
+  if (!options.float_positions && !b.empty() &&
+      std::max(b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff()) / q > 4.0e18)
+    throw InputError("E57: coordinates too large for a " + std::to_string(q) +
+                     " m ScaledInteger quantum (use a coarser precision or Float positions)");
   const Eigen::Vector3d offset = cloud.offset;
   const char* names[3] = {"cartesianX", "cartesianY", "cartesianZ"};
   for (int a = 0; a < 3; ++a) {

@@ -195,3 +195,17 @@ TEST(E57RoundTrip, CancelKeepsExistingFile) {
   EXPECT_EQ(plumb::test::readAll(dir / "b.e57"), before);
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);  // no temp left
 }
+
+TEST(E57RoundTrip, RejectsPrecisionThatOverflowsScaledIntegers) {
+  const auto dir = plumb::test::scratchDir("e57_overflow");
+  PointCloud c;
+  c.offset = Eigen::Vector3d(6.0e9, 0, 0);
+  c.positions.push_back(Eigen::Vector3f::Zero());
+  E57WriteOptions o;
+  o.scaled_precision = 1e-9;  // 6e9 m / 1e-9 m does not fit in int64
+  EXPECT_THROW(writeE57(dir / "o.e57", Dataset::fromCloud(c), o), InputError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "o.e57"));
+  o.float_positions = true;  // Float positions have no such limit
+  writeE57(dir / "o.e57", Dataset::fromCloud(c), o);
+  EXPECT_EQ(readE57(dir / "o.e57").scans.at(0).cloud.world(0).x(), 6.0e9);
+}
