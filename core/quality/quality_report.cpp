@@ -1,0 +1,212 @@
+#include "quality/quality_report.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace plumb {
+
+const ParamSchema<QualityParams>& QualityParams::schema() {
+  using P = QualityParams;
+  static const auto s =
+      ParamSchema<P>("quality")
+          .real(&P::weak_ratio, "weak-ratio", "Weak DOF ratio", "", 1e-6, 0.5,
+                "Eigenvalue fraction below which a direction is weakly constrained", true)
+          .real(&P::min_overlap, "min-overlap", "Min overlap", "", 0.0, 1.0,
+                "Minimum fraction of source points matched after refinement")
+          .real(&P::max_point_rms, "max-rms", "Max point RMS", "m", 0.001, 1.0,
+                "Point RMS above this is flagged")
+          .real(&P::warn_relative_gap, "warn-gap", "Warn score gap", "", 0.0, 1.0,
+                "Flag a runner-up within this relative score gap", true);
+  return s;
+}
+
+namespace {
+std::string vec(const Eigen::Vector3d& v) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(2) << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+  return o.str();
+}
+std::string axisName(const Eigen::Vector3d& a) {
+  if (std::abs(a.z()) > 0.95) return "vertical " + vec(a);
+  if (std::abs(a.z()) < 0.3) return "horizontal " + vec(a);
+  return vec(a);
+}
+}  // namespace
+
+std::vector<WeakDirection> weakDirections(const Eigen::Matrix<double, 6, 6>& h, double ratio,
+                                          std::array<double, 6>* eigenvalues) {
+  std::vector<WeakDirection> out;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(h);
+  const auto ev = es.eigenvalues();
+  if (eigenvalues)
+    for (int i = 0; i < 6; ++i) (*eigenvalues)[i] = ev(i);
+  if (!(ev(5) > 0)) return out;
+  for (int i = 0; i < 6; ++i) {
+    const double rel = ev(i) / ev(5);
+    if (rel >= ratio) continue;
+    const Eigen::Matrix<double, 6, 1> v = es.eigenvectors().col(i);
+    WeakDirection w;
+    w.translation = v.tail<3>().norm() >= v.head<3>().norm();
+    w.axis = (w.translation ? v.tail<3>() : v.head<3>()).normalized();
+    if (w.axis[2] < 0 || (std::abs(w.axis[2]) < 1e-9 && w.axis[0] < 0)) w.axis = -w.axis;
+    w.relative_eigenvalue = rel;
+    w.description = w.translation ? "translation along " + axisName(w.axis) +
+                                        " is weakly constrained (the data slides along it)"
+                                  : "rotation about " + axisName(w.axis) +
+                                        " is weakly constrained";
+    out.push_back(w);
+  }
+  return out;
+}
+
+QualityReport assessRegistration(const GlobalRegistrationResult& g, const RefineResult* refine,
+                                 const QualityParams& p) {
+  QualityReport q;
+  q.method = g.method;
+  q.status = toString(g.status);
+  q.global_transform = g.transform;
+  q.transform = g.transform;
+  q.global_score = g.score;
+  q.score_unit = g.score_unit;
+  q.has_runner_up = g.runner_up.has_value();
+  if (g.runner_up) {
+    q.runner_up_transform = g.runner_up->transform;
+    q.runner_up_score = g.runner_up->score;
+  }
+  q.relative_gap = g.relative_gap;
+  q.hypotheses = g.hypotheses_evaluated;
+  q.source_features = g.source_features;
+  q.target_features = g.target_features;
+  q.inlier_features = g.inlier_features;
+  q.feature_rms = g.feature_rms;
+  q.figures = g.figures;
+  std::ostringstream verdict;
+  if (!g.ok()) {
+    q.success = false;
+    verdict << "Registration FAILED (" << q.status << "): " << g.message
+            << ". No transform is given; do not use this result. Check that the two datasets "
+               "overlap, or try another method or manual tie points.";
+    q.verdict = verdict.str();
+    return q;
+  }
+  bool fail = false;
+  if (refine) {
+    q.refined = true;
+    q.transform = refine->transform;
+    q.point_rms = refine->rms;
+    q.overlap_ratio = refine->overlap;
+    q.point_inliers = refine->inliers;
+    q.refinement_shift = RigidTransform::translationError(refine->transform, g.transform);
+    q.refinement_rotation = RigidTransform::rotationErrorDeg(refine->transform, g.transform);
+    q.weak_directions = weakDirections(refine->normal_matrix, p.weak_ratio, &q.eigenvalues);
+    if (refine->inliers < 10 || q.overlap_ratio < p.min_overlap) {
+      fail = true;
+      q.status = "refinement failed";
+      verdict << "Registration FAILED: after refinement only " << std::setprecision(3)
+              << 100.0 * q.overlap_ratio << "% of the source points lie within the inlier "
+              << "distance of the target (minimum " << 100.0 * p.min_overlap
+              << "%). The global alignment is probably wrong. "
+              << refine->message;
+    }
+    if (q.point_rms > p.max_point_rms)
+      q.warnings.push_back("point RMS " + std::to_string(q.point_rms) +
+                           " m is above " + std::to_string(p.max_point_rms) +
+                           " m: noisy data, moving objects or a partial misalignment");
+  }
+  if (g.runner_up && g.relative_gap < p.warn_relative_gap)
+    q.warnings.push_back("a different transform scored only " +
+                         std::to_string(100.0 * g.relative_gap) +
+                         "% lower: the scene is nearly symmetric, check the result visually");
+  for (const auto& w : q.weak_directions) q.warnings.push_back(w.description);
+  q.success = !fail;
+  if (q.success) {
+    verdict << std::setprecision(3) << "Registration succeeded with the " << g.method
+            << " method: " << g.inlier_features << " of " << g.source_features
+            << " source features matched";
+    if (q.refined)
+      verdict << ", point RMS " << 1000.0 * q.point_rms << " mm over " << 100.0 * q.overlap_ratio
+              << "% overlap";
+    verdict << ". ";
+    if (q.warnings.empty())
+      verdict << "All six degrees of freedom are well constrained and no competing solution "
+                 "came close: the result can be used.";
+    else
+      verdict << "Usable with caution: " << q.warnings.size()
+              << " warning(s) below; verify before relying on it.";
+  }
+  q.verdict = verdict.str();
+  return q;
+}
+
+std::string qualityReportToJson(const QualityReport& q) {
+  using nlohmann::json;
+  auto mat = [](const RigidTransform& t) {
+    json m = json::array();
+    const Eigen::Matrix4d x = t.matrix();
+    for (int r = 0; r < 4; ++r) m.push_back({x(r, 0), x(r, 1), x(r, 2), x(r, 3)});
+    return m;
+  };
+  json j;
+  j["success"] = q.success;
+  j["verdict"] = q.verdict;
+  j["method"] = q.method;
+  j["status"] = q.status;
+  j["transform"] = mat(q.transform);
+  j["global_transform"] = mat(q.global_transform);
+  j["global_score"] = q.global_score;
+  j["score_unit"] = q.score_unit;
+  j["hypotheses_evaluated"] = q.hypotheses;
+  if (q.has_runner_up) {
+    j["runner_up"] = {{"transform", mat(q.runner_up_transform)},
+                      {"score", q.runner_up_score},
+                      {"relative_gap", q.relative_gap}};
+  } else {
+    j["runner_up"] = nullptr;
+  }
+  j["features"] = {{"source", q.source_features},
+                   {"target", q.target_features},
+                   {"inliers", q.inlier_features},
+                   {"rms_m", q.feature_rms}};
+  j["refined"] = q.refined;
+  if (q.refined) {
+    j["points"] = {{"rms_m", q.point_rms},
+                   {"overlap_ratio", q.overlap_ratio},
+                   {"inliers", q.point_inliers},
+                   {"refinement_shift_m", q.refinement_shift},
+                   {"refinement_rotation_deg", q.refinement_rotation}};
+    j["normal_matrix_eigenvalues"] = q.eigenvalues;
+  }
+  json weak = json::array();
+  for (const auto& w : q.weak_directions)
+    weak.push_back({{"kind", w.translation ? "translation" : "rotation"},
+                    {"axis", {w.axis.x(), w.axis.y(), w.axis.z()}},
+                    {"relative_eigenvalue", w.relative_eigenvalue},
+                    {"description", w.description}});
+  j["weak_directions"] = weak;
+  json fig = json::object();
+  for (const auto& [k, v] : q.figures) fig[k] = v;
+  j["figures"] = fig;
+  j["warnings"] = q.warnings;
+  return j.dump(2) + "\n";
+}
+
+std::string qualityReportToText(const QualityReport& q) {
+  std::ostringstream o;
+  o << q.verdict << "\n";
+  o << "method: " << q.method << ", status: " << q.status << "\n";
+  if (q.success) o << "transform (source -> target):\n" << q.transform;
+  o << "features: " << q.inlier_features << " matched of " << q.source_features
+    << " (target " << q.target_features << "), feature RMS " << q.feature_rms << " m\n";
+  if (q.refined)
+    o << "points: RMS " << q.point_rms << " m, overlap " << q.overlap_ratio << "\n";
+  if (q.has_runner_up)
+    o << "runner-up score " << q.runner_up_score << " (gap " << 100 * q.relative_gap << "%)\n";
+  for (const auto& w : q.warnings) o << "warning: " << w << "\n";
+  return o.str();
+}
+
+}  // namespace plumb

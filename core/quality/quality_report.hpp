@@ -1,0 +1,79 @@
+#pragma once
+// The quality report of a registration (ALGORITHMS.md §8): the transform, RMS on matched
+// features and on points, overlap ratio, inlier feature counts, the runner-up hypothesis and
+// the score gap, the weakly constrained degrees of freedom (eigen-analysis of the refinement's
+// normal matrix) and a plain-language verdict a surveyor can act on.
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "common/params.hpp"
+#include "registration/common/registration_result.hpp"
+#include "registration/refine/icp_refinement.hpp"
+
+namespace plumb {
+
+struct QualityParams {
+  /// A direction is weakly constrained when its eigenvalue is below this fraction of the
+  /// largest one, [1e-6, 0.5].
+  double weak_ratio = 0.02;
+  /// Minimum overlap ratio of the refinement (fraction of source points matched), [0, 1].
+  double min_overlap = 0.05;
+  /// Point RMS above this is flagged, metres, [0.001, 1].
+  double max_point_rms = 0.03;
+  /// A runner-up within this relative score gap is flagged (not failed), [0, 1].
+  double warn_relative_gap = 0.2;
+  static const ParamSchema<QualityParams>& schema();
+};
+
+struct WeakDirection {
+  bool translation = true;   ///< translation along `axis`, or rotation about `axis`
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
+  double relative_eigenvalue = 0.0;  ///< eigenvalue / largest eigenvalue
+  std::string description;
+};
+
+struct QualityReport {
+  bool success = false;
+  std::string verdict;  ///< one paragraph, plain language
+  std::string method;
+  std::string status;   ///< RegistrationStatus as text, or "refinement failed"
+  RigidTransform transform;         ///< final (refined when refinement ran)
+  RigidTransform global_transform;  ///< from the global method
+  double global_score = 0.0;
+  std::string score_unit;
+  bool has_runner_up = false;
+  RigidTransform runner_up_transform;
+  double runner_up_score = 0.0;
+  double relative_gap = 1.0;
+  std::size_t hypotheses = 0;
+  std::size_t source_features = 0, target_features = 0, inlier_features = 0;
+  double feature_rms = 0.0;  ///< m
+  bool refined = false;
+  double point_rms = 0.0;    ///< m
+  double overlap_ratio = 0.0;
+  std::size_t point_inliers = 0;
+  double refinement_shift = 0.0;       ///< m, |t_refined - t_global|
+  double refinement_rotation = 0.0;    ///< deg
+  std::array<double, 6> eigenvalues{};  ///< of the scaled normal matrix, ascending
+  std::vector<WeakDirection> weak_directions;
+  std::vector<std::pair<std::string, double>> figures;
+  std::vector<std::string> warnings;
+};
+
+/// Builds the report. `refine` may be null (refinement off).
+QualityReport assessRegistration(const GlobalRegistrationResult& global,
+                                 const RefineResult* refine, const QualityParams& params = {});
+
+/// Weak directions of a 6x6 normal matrix (rotation first, rotation scaled by a length).
+std::vector<WeakDirection> weakDirections(const Eigen::Matrix<double, 6, 6>& normal_matrix,
+                                          double weak_ratio, std::array<double, 6>* eigenvalues);
+
+/// JSON text of the report (every figure above).
+std::string qualityReportToJson(const QualityReport& report);
+/// Human-readable multi-line summary.
+std::string qualityReportToText(const QualityReport& report);
+
+}  // namespace plumb

@@ -1,0 +1,318 @@
+#include "registration/refine/icp_refinement.hpp"
+
+#include <pcl/filters/voxel_grid.h>
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/point_types.h>
+#include <pcl/registration/gicp.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <unordered_map>
+
+#include "common/error.hpp"
+
+namespace plumb {
+
+const ParamSchema<RefineParams>& RefineParams::schema() {
+  using P = RefineParams;
+  static const auto s =
+      ParamSchema<P>("refine")
+          .choice(&P::method, "refine-method", "Refinement", {"point-to-plane", "gicp"},
+                  "Local refinement: trimmed point-to-plane ICP or PCL GICP")
+          .real(&P::voxel_size, "voxel", "Voxel size", "m", 0.0, 1.0,
+                "Voxel grid thinning before refinement")
+          .integer(&P::max_source_points, "max-points", "Max source points", "", 100, 1e7,
+                   "Source points used by the refinement", true)
+          .real(&P::start_distance, "start-distance", "Start distance", "m", 0.01, 10.0,
+                "First-stage max correspondence distance")
+          .real(&P::final_distance, "final-distance", "Final distance", "m", 0.005, 1.0,
+                "Last-stage max correspondence distance (inlier distance)")
+          .integer(&P::stages, "stages", "Stages", "", 1, 10, "Coarse-to-fine stages", true)
+          .integer(&P::iterations, "icp-iterations", "Iterations per stage", "", 1, 200,
+                   "Max iterations per stage", true)
+          .real(&P::trim_fraction, "trim", "Trim fraction", "", 0.05, 1.0,
+                "Fraction of correspondences kept (trimmed ICP)", true)
+          .integer(&P::seed, "seed", "Seed", "", 0, 9.0e15, "Random seed", true);
+  return s;
+}
+
+namespace {
+
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+
+/// World points relative to `origin` as float (keeps precision for georeferenced data).
+Cloud::Ptr toPcl(const PointCloud& c, const RigidTransform& t, const Eigen::Vector3d& origin,
+                 double voxel) {
+  Cloud::Ptr out(new Cloud);
+  out->reserve(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (!c.positions[i].allFinite()) continue;
+    const Eigen::Vector3d p = t.apply(c.world(i)) - origin;
+    out->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
+  }
+  if (voxel > 0 && out->size() > 1000) {
+    pcl::VoxelGrid<pcl::PointXYZ> vg;
+    vg.setInputCloud(out);
+    vg.setLeafSize(float(voxel), float(voxel), float(voxel));
+    Cloud::Ptr thin(new Cloud);
+    vg.filter(*thin);
+    return thin;
+  }
+  return out;
+}
+
+struct Correspondence {
+  Eigen::Vector3d p, q, n;
+  double r;  // signed point-to-plane residual
+};
+
+std::vector<Eigen::Vector3d> gridNormals(const Cloud& c, double cell) {
+  struct Acc {
+    Eigen::Vector3d s = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d ss = Eigen::Matrix3d::Zero();
+    int n = 0;
+    Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::nan(""));
+  };
+  std::unordered_map<std::uint64_t, Acc> cells;
+  std::vector<std::uint64_t> keys(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const Eigen::Vector3d p = c[i].getVector3fMap().cast<double>();
+    const auto k = [&](double v) { return std::uint64_t(std::int64_t(std::floor(v / cell)) + (1 << 20)); };
+    keys[i] = (k(p.x()) << 42) | (k(p.y()) << 21) | k(p.z());
+    auto& a = cells[keys[i]];
+    a.s += p;
+    a.ss += p * p.transpose();
+    ++a.n;
+  }
+  for (auto& [key, a] : cells) {
+    if (a.n < 5) continue;
+    const Eigen::Vector3d m = a.s / a.n;
+    const Eigen::Matrix3d cov = a.ss / a.n - m * m.transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+    // Planar enough: smallest eigenvalue well below the middle one.
+    if (es.eigenvalues()(0) < 0.1 * es.eigenvalues()(1)) a.normal = es.eigenvectors().col(0);
+  }
+  std::vector<Eigen::Vector3d> out(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i) out[i] = cells[keys[i]].normal;
+  return out;
+}
+
+}  // namespace
+
+RefineResult refineRegistration(const PointCloud& source, const PointCloud& target,
+                                const RigidTransform& initial, const RefineParams& p,
+                                Progress* progress) {
+  if (source.empty() || target.empty()) throw InputError("refinement needs two non-empty clouds");
+  RefineResult res;
+  const Eigen::Vector3d origin = target.bounds().center();
+  // Work in a frame centred on the target: x_local = x_world - origin.
+  Cloud::Ptr tgt = toPcl(target, RigidTransform(), origin, p.voxel_size);
+  Cloud::Ptr src_all = toPcl(source, initial, origin, p.voxel_size);
+  Cloud::Ptr src(new Cloud);
+  const std::size_t stride =
+      std::max<std::size_t>(1, (src_all->size() + p.max_source_points - 1) / p.max_source_points);
+  for (std::size_t i = 0; i < src_all->size(); i += stride) src->push_back((*src_all)[i]);
+  res.source_points = src->size();
+  res.target_points = tgt->size();
+  if (src->size() < 10 || tgt->size() < 10) throw InputError("refinement: too few points");
+
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(tgt);
+  // Target normals: PCA of the points in a grid cell of a few voxels (O(n); building surfaces
+  // are planar at that scale; mixed cells at edges are rare and trimmed away).
+  std::vector<Eigen::Vector3d> normals = gridNormals(*tgt, std::max(0.15, 3 * p.voxel_size));
+  // Points of non-planar cells (edges, corners): PCA of their 10 nearest neighbours.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tgt->size(), 1024), [&](const auto& range) {
+    std::vector<int> idx;
+    std::vector<float> d2;
+    for (std::size_t i = range.begin(); i < range.end(); ++i) {
+      if (normals[i].allFinite()) continue;
+      if (tree.nearestKSearch((*tgt)[i], 10, idx, d2) < 5) continue;
+      Eigen::Vector3d m = Eigen::Vector3d::Zero();
+      for (int j : idx) m += (*tgt)[j].getVector3fMap().cast<double>();
+      m /= double(idx.size());
+      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+      for (int j : idx) {
+        const Eigen::Vector3d q = (*tgt)[j].getVector3fMap().cast<double>() - m;
+        cov += q * q.transpose();
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+      normals[i] = es.eigenvectors().col(0);
+    }
+  });
+  reportProgress(progress, 0.1, "refine: normals");
+
+  // delta: local frame transform applied after `initial`.
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
+
+  // Early stages use a regular quarter of the source points; the last stage all of them.
+  std::size_t step = 1;
+  auto correspondences = [&](double max_d) {
+    const std::size_t n = (src->size() + step - 1) / step;
+    std::vector<Correspondence> c(n);
+    std::vector<char> valid(n, 0);
+    const float max_d2 = float(max_d * max_d);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512), [&](const auto& range) {
+      std::vector<int> idx(1);
+      std::vector<float> d2(1);
+      for (std::size_t i = range.begin(); i < range.end(); ++i) {
+        const Eigen::Vector3d x = R * (*src)[i * step].getVector3fMap().cast<double>() + t;
+        pcl::PointXYZ q(float(x.x()), float(x.y()), float(x.z()));
+        if (tree.nearestKSearch(q, 1, idx, d2) < 1 || d2[0] > max_d2) continue;
+        const Eigen::Vector3d& nn = normals[idx[0]];
+        if (!nn.allFinite()) continue;
+        const Eigen::Vector3d y = (*tgt)[idx[0]].getVector3fMap().cast<double>();
+        c[i] = {x, y, nn, nn.dot(x - y)};
+        valid[i] = 1;
+      }
+    });
+    std::vector<Correspondence> out;
+    out.reserve(n);
+    for (std::size_t i = 0; i < n; ++i)
+      if (valid[i]) out.push_back(c[i]);
+    return out;
+  };
+  auto trim = [&](std::vector<Correspondence>& c) {
+    if (p.trim_fraction >= 1.0 || c.size() < 10) return;
+    const std::size_t keep = std::max<std::size_t>(6, std::size_t(p.trim_fraction * c.size()));
+    std::nth_element(c.begin(), c.begin() + (keep - 1), c.end(),
+                     [](const Correspondence& a, const Correspondence& b) {
+                       return std::abs(a.r) < std::abs(b.r);
+                     });
+    c.resize(keep);
+  };
+
+  const int stages = std::max(1, p.stages);
+  const double ratio = stages > 1 ? std::pow(p.final_distance / p.start_distance, 1.0 / (stages - 1)) : 1.0;
+  if (p.method == RefineParams::Method::Gicp) {
+    pcl::GeneralizedIterativeClosestPoint<pcl::PointXYZ, pcl::PointXYZ> gicp;
+    gicp.setInputSource(src);
+    gicp.setInputTarget(tgt);
+    gicp.setMaximumIterations(p.iterations);
+    gicp.setTransformationEpsilon(1e-8);
+    Eigen::Matrix4f guess = Eigen::Matrix4f::Identity();
+    Cloud aligned;
+    for (int s = 0; s < stages; ++s) {
+      checkCanceled(progress);
+      gicp.setMaxCorrespondenceDistance(p.start_distance * std::pow(ratio, s));
+      gicp.align(aligned, guess);
+      guess = gicp.getFinalTransformation();
+      res.iterations += p.iterations;
+    }
+    R = guess.topLeftCorner<3, 3>().cast<double>();
+    t = guess.topRightCorner<3, 1>().cast<double>();
+    res.converged = gicp.hasConverged();
+  } else {
+    bool converged = false;
+    for (int s = 0; s < stages; ++s) {
+      const double max_d = p.start_distance * std::pow(ratio, s);
+      step = s + 1 < stages ? 4 : 1;
+      for (int it = 0; it < p.iterations; ++it) {
+        checkCanceled(progress);
+        auto c = correspondences(max_d);
+        trim(c);
+        if (c.size() < 6) break;
+        // Linearised point-to-plane (Low 2004): minimise sum (n·(x + w x x + dt - y))^2.
+        Eigen::Matrix<double, 6, 6> H = Eigen::Matrix<double, 6, 6>::Zero();
+        Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();
+        for (const auto& k : c) {
+          Eigen::Matrix<double, 6, 1> j;
+          j << k.p.cross(k.n), k.n;
+          H += j * j.transpose();
+          g += j * k.r;
+        }
+        const Eigen::Matrix<double, 6, 1> d = H.ldlt().solve(-g);
+        if (!d.allFinite()) break;
+        const double angle = d.head<3>().norm();
+        const Eigen::Matrix3d dR = angle > 0
+                                       ? Eigen::AngleAxisd(angle, d.head<3>() / angle).toRotationMatrix()
+                                       : Eigen::Matrix3d::Identity();
+        R = dR * R;
+        t = dR * t + d.tail<3>();
+        ++res.iterations;
+        if (angle < 2e-5 && d.tail<3>().norm() < 2e-4) {
+          converged = true;
+          break;
+        }
+      }
+      reportProgress(progress, 0.1 + 0.8 * (s + 1) / stages, "refine: ICP");
+    }
+    res.converged = converged;
+  }
+  // Final figures at the final distance (untrimmed: the overlap is what it is).
+  step = 1;
+  const auto c = correspondences(p.final_distance);
+  double sq = 0.0;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& k : c) {
+    sq += k.r * k.r;
+    centre += k.p;
+  }
+  res.inliers = c.size();
+  res.rms = c.empty() ? 0.0 : std::sqrt(sq / c.size());
+  res.overlap = double(c.size()) / double(src->size());
+  if (!c.empty()) {
+    centre /= double(c.size());
+    double l2 = 0.0;
+    for (const auto& k : c) l2 += (k.p - centre).squaredNorm();
+    res.length_scale = std::max(1e-3, std::sqrt(l2 / c.size()));
+    for (const auto& k : c) {
+      Eigen::Matrix<double, 6, 1> j;
+      j << (k.p - centre).cross(k.n) / res.length_scale, k.n;
+      res.normal_matrix += j * j.transpose();
+    }
+  }
+  res.centre = centre + origin;
+  // World transform: x -> origin + delta(initial(x) - origin).
+  const RigidTransform to_local(Eigen::Matrix3d::Identity(), -origin);
+  const RigidTransform from_local(Eigen::Matrix3d::Identity(), origin);
+  res.transform = from_local * RigidTransform(R, t) * to_local * initial;
+  if (c.size() < 10) {
+    res.converged = false;
+    res.message = "refinement lost its overlap: fewer than 10 correspondences within " +
+                  std::to_string(p.final_distance) + " m";
+  }
+  reportProgress(progress, 1.0, "refine: done");
+  return res;
+}
+
+PointCloud sampleMeshSurface(const TriangleMesh& mesh, double spacing, std::uint64_t seed) {
+  PointCloud out;
+  if (mesh.triangles.empty() || !(spacing > 0)) return out;
+  const Bounds b = mesh.bounds();
+  out.offset = b.center();
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double per_area = 1.0 / (spacing * spacing);
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const double area = mesh.triangleArea(i);
+    if (!(area > 0)) continue;
+    // Expected count area/spacing^2; the fractional part is drawn so small triangles count.
+    const double expected = area * per_area;
+    std::size_t n = std::size_t(expected);
+    if (u(rng) < expected - double(n)) ++n;
+    const auto& tri = mesh.triangles[i];
+    const Eigen::Vector3d a = mesh.vertices[tri[0]], bb = mesh.vertices[tri[1]],
+                          c = mesh.vertices[tri[2]];
+    const Eigen::Vector3f nrm = mesh.triangleNormal(i).cast<float>();
+    for (std::size_t k = 0; k < n; ++k) {
+      double r1 = u(rng), r2 = u(rng);
+      if (r1 + r2 > 1) {
+        r1 = 1 - r1;
+        r2 = 1 - r2;
+      }
+      const Eigen::Vector3d p = a + r1 * (bb - a) + r2 * (c - a);
+      out.positions.push_back((p - out.offset).cast<float>());
+      out.normals.push_back(nrm);
+    }
+  }
+  return out;
+}
+
+}  // namespace plumb

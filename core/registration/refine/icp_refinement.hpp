@@ -1,0 +1,69 @@
+#pragma once
+// Local refinement after every global method (ALGORITHMS.md §8): trimmed point-to-plane ICP
+// (PCL kd-tree and normals, linearised least squares after Low 2004) or PCL GICP, run
+// coarse-to-fine over a shrinking correspondence distance. For a BIM target the caller passes
+// points sampled on the model (sampleMeshSurface) with the mesh normals.
+// The result carries the 6x6 normal matrix of the final point-to-plane problem, from which the
+// quality report derives the weakly constrained degrees of freedom.
+#include <Eigen/Core>
+
+#include <cstdint>
+
+#include "common/params.hpp"
+#include "common/progress.hpp"
+#include "model/bim_model.hpp"
+#include "model/point_cloud.hpp"
+#include "model/rigid_transform.hpp"
+
+namespace plumb {
+
+struct RefineParams {
+  enum class Method { PointToPlane, Gicp };
+  Method method = Method::PointToPlane;
+  /// Voxel grid used to thin both clouds, metres, [0, 1] (0 keeps every point).
+  double voxel_size = 0.05;
+  /// Source points used (regular subset after voxel thinning), [100, 1e7].
+  int max_source_points = 20000;
+  /// First-stage max correspondence distance, metres, [0.01, 10].
+  double start_distance = 0.5;
+  /// Last-stage max correspondence distance, metres, [0.005, 1]. Also the inlier distance of
+  /// the reported RMS and overlap.
+  double final_distance = 0.05;
+  /// Number of stages from start to final distance (geometric), [1, 10].
+  int stages = 4;
+  /// Max iterations per stage, [1, 200].
+  int iterations = 10;
+  /// Fraction of correspondences kept (smallest residuals), (0, 1]. Trimmed ICP.
+  double trim_fraction = 0.9;
+  std::uint64_t seed = 1;  ///< deterministic (regular subsets); kept for interface uniformity
+  static const ParamSchema<RefineParams>& schema();
+};
+
+struct RefineResult {
+  RigidTransform transform;       ///< refined source -> target
+  bool converged = false;
+  int iterations = 0;
+  double rms = 0.0;               ///< m, point-to-plane RMS of inliers (< final_distance)
+  double overlap = 0.0;           ///< fraction of used source points with an inlier match
+  std::size_t inliers = 0;
+  std::size_t source_points = 0;  ///< used (after thinning)
+  std::size_t target_points = 0;
+  /// Normal matrix sum J^T J of the final point-to-plane problem, J = [(p x n)/L, n], rotation
+  /// scaled by the length L (RMS radius of the inliers about their centroid) so eigenvalues are
+  /// comparable, and expressed about that centroid.
+  Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+  double length_scale = 1.0;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< centroid of the inliers (world)
+  std::string message;
+};
+
+/// Refines `initial` (source -> target). Throws InputError for empty clouds.
+RefineResult refineRegistration(const PointCloud& source, const PointCloud& target,
+                                const RigidTransform& initial, const RefineParams& params,
+                                Progress* progress = nullptr);
+
+/// Points on a mesh surface, about one per `spacing`^2 of area, with the triangle normals;
+/// deterministic for a seed.
+PointCloud sampleMeshSurface(const TriangleMesh& mesh, double spacing, std::uint64_t seed = 1);
+
+}  // namespace plumb
