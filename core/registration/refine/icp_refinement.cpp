@@ -246,8 +246,13 @@ RefineResult refineRegistration(const PointCloud& source, const PointCloud& targ
     res.converged = converged;
   }
   // Final figures at the final distance (untrimmed: the overlap is what it is).
+  // Inliers: a target point within max(final distance, 0.15 m) (sparse or thinned targets)
+  // and a point-to-plane residual below the final distance.
   step = 1;
-  const auto c = correspondences(p.final_distance);
+  auto c = correspondences(std::max(p.final_distance, 0.15));
+  c.erase(std::remove_if(c.begin(), c.end(),
+                         [&](const Correspondence& k) { return std::abs(k.r) > p.final_distance; }),
+          c.end());
   double sq = 0.0;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for (const auto& k : c) {

@@ -43,8 +43,10 @@ struct RefineResult {
   RigidTransform transform;       ///< refined source -> target
   bool converged = false;
   int iterations = 0;
-  double rms = 0.0;               ///< m, point-to-plane RMS of inliers (< final_distance)
-  double overlap = 0.0;           ///< fraction of used source points with an inlier match
+  double rms = 0.0;               ///< m, point-to-plane RMS of inliers
+  /// Fraction of used source points with an inlier match: nearest target point within
+  /// max(final_distance, 0.15 m) and point-to-plane residual below final_distance.
+  double overlap = 0.0;
   std::size_t inliers = 0;
   std::size_t source_points = 0;  ///< used (after thinning)
   std::size_t target_points = 0;

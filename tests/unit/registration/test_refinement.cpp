@@ -54,7 +54,9 @@ TEST(IcpRefinement, ConvergesFromAFewDegreesAndDecimetres) {
     source.transform(truth.inverse());
     // Start 2° and 0.2 m away from the truth.
     const RigidTransform start = RigidTransform::fromYaw(0.035, {0.15, -0.12, 0.05}) * truth;
+    const bool first = truth.translation().x() > 0;
     for (auto method : {RefineParams::Method::PointToPlane, RefineParams::Method::Gicp}) {
+      if (method == RefineParams::Method::Gicp && !first) continue;  // GICP is slow: once
       RefineParams p;
       p.method = method;
       const auto r = refineRegistration(source, target, start, p);
