@@ -114,7 +114,6 @@ struct Generator {
     for (const auto& o : L.openings) addBox(o.box);
     for (const auto& s : L.slabs)
       for (const auto& b : s.boxes) addBox(b);
-    for (const auto& f : L.furniture) addBox(f.boxes[0]);
     for (int a = 0; a < 3; ++a) grid.lines[static_cast<std::size_t>(a)] = uniqueSorted(coords[static_cast<std::size_t>(a)]);
     const auto n = grid.cells();
     grid.owner.assign(static_cast<std::size_t>(n[0] * n[1] * n[2]), -1);
@@ -139,8 +138,8 @@ struct Generator {
       });
     }
     for (std::size_t f = 0; f < L.furniture.size(); ++f) {
-      const auto e = addElement("IfcFurnishingElement", L.furniture[f].name, Kind::Furniture, static_cast<int>(f));
-      grid.forBox(L.furniture[f].boxes[0], [&](std::size_t c) { if (grid.owner[c] < 0) grid.owner[c] = static_cast<std::int32_t>(e); });
+      // Furniture stays off the grid (its lines would cut every wall): see addFurniture().
+      addElement("IfcFurnishingElement", L.furniture[f].name, Kind::Furniture, static_cast<int>(f));
     }
   }
 
@@ -249,6 +248,53 @@ struct Generator {
     }
   }
 
+  // Furniture: separate closed boxes standing on the floor (their bottom faces lie on the
+  // floor, unseen). Their 12 edges are sharp; the floor under them stays one flat face.
+  void addFurniture() {
+    auto& mesh = out.model.mesh;
+    for (std::size_t e = 0; e < kinds.size(); ++e) {
+      if (kinds[e] != Kind::Furniture) continue;
+      const Box& box = L.furniture[static_cast<std::size_t>(layout_index[e])].boxes[0];
+      auto corner = [&](int bits) {
+        return L.toWorld({(bits & 1) ? box.hi.x() : box.lo.x(), (bits & 2) ? box.hi.y() : box.lo.y(),
+                          (bits & 4) ? box.hi.z() : box.lo.z()});
+      };
+      const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
+      for (int bits = 0; bits < 8; ++bits) mesh.vertices.push_back(corner(bits));
+      for (int a = 0; a < 3; ++a) {
+        const int b = (a + 1) % 3, c = (a + 2) % 3;
+        for (int sign : {-1, +1}) {
+          std::array<std::uint32_t, 4> q{};
+          for (int k = 0; k < 4; ++k) {
+            const int db = (k == 1 || k == 2) ? 1 : 0, dc = k >= 2 ? 1 : 0;
+            q[static_cast<std::size_t>(k)] = first + static_cast<std::uint32_t>(((sign > 0) << a) | (db << b) | (dc << c));
+          }
+          if (sign < 0) std::swap(q[1], q[3]);
+          mesh.triangles.push_back({q[0], q[1], q[2]});
+          mesh.triangles.push_back({q[0], q[2], q[3]});
+          out.model.triangle_element.insert(out.model.triangle_element.end(), 2, static_cast<std::uint32_t>(e));
+          out.glass_triangles.insert(out.glass_triangles.end(), 2, false);
+          TruthPlane p;
+          p.normal = sign * L.planeNormal(a);
+          p.offset = sign * L.planeScale(a) * (sign > 0 ? box.hi[a] : box.lo[a]);
+          p.element = static_cast<std::uint32_t>(e);
+          p.element_type = out.model.elements[e].type;
+          p.face = "other";
+          p.area = mesh.triangleArea(mesh.triangles.size() - 1) + mesh.triangleArea(mesh.triangles.size() - 2);
+          out.truth.planes.push_back(p);
+        }
+      }
+      for (int bits = 0; bits < 8; ++bits)
+        for (int a = 0; a < 3; ++a)
+          if (!(bits & (1 << a))) {
+            Segment3D s;
+            s.a = corner(bits);
+            s.b = corner(bits | (1 << a));
+            out.truth.sharp_edges.push_back(s);
+          }
+    }
+  }
+
   void openingsTruthAndGlass() {
     auto& mesh = out.model.mesh;
     for (std::size_t e = 0; e < kinds.size(); ++e) {
@@ -311,6 +357,7 @@ GeneratedBuilding generateBuilding(const BuildingSpec& spec) {
   g.buildGrid();
   g.buildMesh();
   g.sharpEdges();
+  g.addFurniture();
   g.openingsTruthAndGlass();
   auto& t = g.out.truth;
   t.exterior_wall_thickness = spec.exterior_wall_thickness;

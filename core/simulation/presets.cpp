@@ -74,9 +74,9 @@ BuildingSpec nonManhattan() {
 BuildingSpec bigOffice() {
   BuildingSpec s;
   s.name = "big-office";
-  s.column_widths = {4.0, 4.0, 4.0, 4.0, 4.0, 4.0};
+  s.column_widths = {4.0, 4.0, 4.0, 4.0, 4.0, 4.0, 4.0, 4.0, 4.0};
   s.row_depths = {5.0, 2.0, 5.0};
-  s.storeys = 4;
+  s.storeys = 5;
   s.storey_height = 3.3;
   s.window_spacing = 2.0;
   s.window_width = 0.9;
@@ -91,7 +91,7 @@ const Preset kPresets[] = {
     {"l-shaped", "1 storey, L footprint of 5 rooms, 0.45 m exterior walls", lShaped},
     {"u-shaped", "1 storey, U footprint of 5 rooms", uShaped},
     {"non-manhattan", "1 storey, 2 x 2 rooms on a 60-degree parallelogram plan", nonManhattan},
-    {"big-office", "4 storeys of 6 x 3 cells with furniture (~50k triangles, benchmarks)", bigOffice},
+    {"big-office", "5 storeys of 9 x 3 cells with furniture (~50k triangles, benchmarks)", bigOffice},
 };
 
 const Preset* findPreset(const std::string& name) {
