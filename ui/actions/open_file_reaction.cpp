@@ -1,0 +1,17 @@
+#include "ui/actions/open_file_reaction.hpp"
+
+#include <QFileDialog>
+#include <QMainWindow>
+
+#include "ui/app_context.hpp"
+#include "ui/tasks/load_files.hpp"
+
+namespace plumb::ui {
+
+void OpenFileReaction::onTriggered() {
+  const QStringList files = QFileDialog::getOpenFileNames(&app().window, tr("Open survey data"),
+                                                          {}, supportedFileFilter());
+  if (!files.isEmpty()) loadFiles(app(), files);
+}
+
+}  // namespace plumb::ui

@@ -1,0 +1,90 @@
+#include "ui/layers/dataset_layer.hpp"
+
+#include <QFileInfo>
+
+#include <algorithm>
+
+#include "ui/layers/scan_layer.hpp"
+
+namespace plumb::ui {
+
+namespace {
+
+QString datasetName(const Dataset& d) {
+  return d.source.empty() ? QString("dataset")
+                          : QFileInfo(QString::fromStdString(d.source.string())).fileName();
+}
+
+}  // namespace
+
+DatasetLayer::DatasetLayer(std::shared_ptr<const Dataset> data, const Eigen::Vector3d& origin,
+                           std::size_t lod_budget)
+    : Layer(LayerKind::Dataset, datasetName(*data)), data_(std::move(data)) {
+  const std::size_t total = std::max<std::size_t>(1, data_->pointCount());
+  for (std::size_t i = 0; i < data_->scans.size(); ++i) {
+    const std::size_t n = data_->scans[i].cloud.size();
+    const std::size_t lod = static_cast<std::size_t>(
+        static_cast<double>(lod_budget) * static_cast<double>(n) / static_cast<double>(total));
+    addChild(std::make_unique<ScanLayer>(data_, i, origin, std::min(n, std::max<std::size_t>(lod, 1))));
+  }
+  if (std::none_of(data_->scans.begin(), data_->scans.end(),
+                   [](const Scan& s) { return s.cloud.hasColors(); }))
+    style_.mode = PointColorMode::Elevation;
+  setStyle(style_);
+}
+
+std::vector<ScanLayer*> DatasetLayer::scans() const {
+  std::vector<ScanLayer*> out;
+  for (const auto& c : children()) out.push_back(static_cast<ScanLayer*>(c.get()));
+  return out;
+}
+
+void DatasetLayer::setStyle(const PointStyle& style) {
+  style_ = style;
+  const Bounds b = bounds();
+  for (ScanLayer* s : scans()) s->setStyle(style_, b.min.z(), b.max.z());
+}
+
+std::vector<std::string> DatasetLayer::scalarFieldNames() const {
+  std::vector<std::string> names;
+  for (const auto& scan : data_->scans)
+    for (const auto& f : scan.cloud.scalar_fields)
+      if (std::find(names.begin(), names.end(), f.name) == names.end()) names.push_back(f.name);
+  return names;
+}
+
+void DatasetLayer::setTransform(const RigidTransform& t) {
+  transform_ = t;
+  applyTransform();
+}
+
+void DatasetLayer::setShowsTransform(bool show) {
+  shows_transform_ = show;
+  applyTransform();
+}
+
+void DatasetLayer::applyTransform() {
+  const RigidTransform shown = shows_transform_ ? transform_ : RigidTransform();
+  for (ScanLayer* s : scans()) s->setDatasetTransform(shown);
+  if (style_.mode == PointColorMode::Elevation) setStyle(style_);
+}
+
+std::vector<PropertyRow> DatasetLayer::describe() const {
+  auto rows = Layer::describe();
+  rows.emplace_back("File", QString::fromStdString(data_->source.string()));
+  rows.emplace_back("Format", QString::fromStdString(data_->format));
+  rows.emplace_back("Scans", QString::number(data_->scans.size()));
+  rows.emplace_back("Points", QString::number(data_->pointCount()));
+  if (!data_->coordinate_system.empty())
+    rows.emplace_back("Coordinate system",
+                      QString::fromStdString(data_->coordinate_system).left(80));
+  for (const auto& [k, v] : data_->metadata)
+    rows.emplace_back(QString::fromStdString(k), QString::fromStdString(v));
+  if (!transform_.isIdentity()) {
+    rows.emplace_back("Registered", shows_transform_ ? "shown" : "hidden (before)");
+    rows.emplace_back("Rotation (deg)", QString::number(transform_.rotationAngleDeg(), 'f', 4));
+  }
+  return rows;
+}
+
+}  // namespace plumb::ui

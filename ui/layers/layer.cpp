@@ -1,0 +1,62 @@
+#include "ui/layers/layer.hpp"
+
+namespace plumb::ui {
+
+Layer::Layer(LayerKind kind, QString name) : kind_(kind), name_(std::move(name)) {}
+
+Layer::~Layer() = default;
+
+Layer& Layer::addChild(std::unique_ptr<Layer> child) {
+  child->parent_ = this;
+  children_.push_back(std::move(child));
+  children_.back()->propagateVisibility();
+  return *children_.back();
+}
+
+bool Layer::effectivelyVisible() const {
+  for (const Layer* l = this; l; l = l->parent_)
+    if (!l->visible_) return false;
+  return true;
+}
+
+void Layer::setVisible(bool visible) {
+  visible_ = visible;
+  propagateVisibility();
+}
+
+void Layer::propagateVisibility() {
+  applyVisibility(effectivelyVisible());
+  for (auto& c : children_) c->propagateVisibility();
+}
+
+Bounds Layer::bounds() const {
+  Bounds b;
+  for (const auto& c : children_) b.extend(c->bounds());
+  return b;
+}
+
+std::vector<PropertyRow> Layer::describe() const {
+  std::vector<PropertyRow> rows{{"Name", name_}, {"Kind", layerKindName(kind_)}};
+  const Bounds b = bounds();
+  if (!b.empty()) {
+    const auto s = b.size();
+    rows.emplace_back("Extent (m)", QString("%1 x %2 x %3")
+                                        .arg(s.x(), 0, 'f', 2)
+                                        .arg(s.y(), 0, 'f', 2)
+                                        .arg(s.z(), 0, 'f', 2));
+  }
+  return rows;
+}
+
+QString layerKindName(LayerKind kind) {
+  switch (kind) {
+    case LayerKind::Dataset: return "Dataset";
+    case LayerKind::Scan: return "Scan";
+    case LayerKind::Model: return "Model";
+    case LayerKind::Features: return "Features";
+    case LayerKind::Result: return "Result";
+  }
+  return "Layer";
+}
+
+}  // namespace plumb::ui

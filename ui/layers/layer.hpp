@@ -1,0 +1,64 @@
+#pragma once
+// A node of the layer tree: datasets (with their scans as children), models, feature sets,
+// results. A layer owns its children and its VTK props; the Scene owns the root layers.
+#include <QString>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/point_cloud.hpp"
+
+class vtkProp;
+
+namespace plumb::ui {
+
+enum class LayerKind { Dataset, Scan, Model, Features, Result };
+
+/// One row of the properties panel.
+using PropertyRow = std::pair<QString, QString>;
+
+class Layer {
+ public:
+  Layer(LayerKind kind, QString name);
+  virtual ~Layer();
+  Layer(const Layer&) = delete;
+  Layer& operator=(const Layer&) = delete;
+
+  LayerKind kind() const { return kind_; }
+  const QString& name() const { return name_; }
+  Layer* parent() const { return parent_; }
+  const std::vector<std::unique_ptr<Layer>>& children() const { return children_; }
+  Layer& addChild(std::unique_ptr<Layer> child);
+
+  bool visible() const { return visible_; }
+  /// Visible and every ancestor visible.
+  bool effectivelyVisible() const;
+  void setVisible(bool visible);
+
+  /// This layer's own props (children have theirs), added to the renderer by the Scene.
+  virtual std::vector<vtkProp*> props() const { return {}; }
+  /// World bounds of this layer and its children.
+  virtual Bounds bounds() const;
+  /// Rows for the properties panel.
+  virtual std::vector<PropertyRow> describe() const;
+  /// Level of detail: show the reduced representation while the camera moves.
+  virtual void setReducedDetail(bool /*reduced*/) {}
+
+ protected:
+  /// Called when the effective visibility of this layer may have changed.
+  virtual void applyVisibility(bool /*effective*/) {}
+
+ private:
+  void propagateVisibility();
+  LayerKind kind_;
+  QString name_;
+  Layer* parent_ = nullptr;
+  bool visible_ = true;
+  std::vector<std::unique_ptr<Layer>> children_;
+};
+
+QString layerKindName(LayerKind kind);
+
+}  // namespace plumb::ui

@@ -1,0 +1,60 @@
+#include "ui/layers/point_coloring.hpp"
+
+#include <algorithm>
+
+namespace plumb::ui {
+
+PointColorMode effectiveMode(const PointCloud& cloud, const PointStyle& style) {
+  switch (style.mode) {
+    case PointColorMode::Rgb:
+      return cloud.hasColors() ? PointColorMode::Rgb : PointColorMode::Elevation;
+    case PointColorMode::Intensity:
+      return cloud.hasIntensity() ? PointColorMode::Intensity : PointColorMode::Elevation;
+    case PointColorMode::ScalarField: {
+      const ScalarField* f = cloud.findScalarField(style.scalar_field);
+      return f && f->values.size() == cloud.size() ? PointColorMode::ScalarField
+                                                    : PointColorMode::Elevation;
+    }
+    default: return style.mode;
+  }
+}
+
+namespace {
+
+void fillFromValues(std::span<const float> values, double lo, double hi, RampKind ramp,
+                    std::span<Rgb> out) {
+  if (!(hi > lo)) std::tie(lo, hi) = robustRange(values);
+  const double scale = 1.0 / (hi - lo);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = rampColor(ramp, (static_cast<double>(values[i]) - lo) * scale);
+}
+
+}  // namespace
+
+void fillPointColors(const PointCloud& cloud, const PointColoring& c, std::span<Rgb> out) {
+  switch (effectiveMode(cloud, c.style)) {
+    case PointColorMode::Rgb:
+      std::copy(cloud.colors.begin(), cloud.colors.end(), out.begin());
+      return;
+    case PointColorMode::Intensity:
+      fillFromValues(cloud.intensity, c.value_min, c.value_max, RampKind::Grey, out);
+      return;
+    case PointColorMode::ScalarField:
+      fillFromValues(cloud.findScalarField(c.style.scalar_field)->values, c.value_min,
+                     c.value_max, RampKind::Viridis, out);
+      return;
+    case PointColorMode::Scan:
+      std::fill(out.begin(), out.end(), categoryColor(c.scan_index));
+      return;
+    case PointColorMode::Elevation: break;
+  }
+  const double z0 = c.elevation_row.head<3>().dot(cloud.offset) + c.elevation_row[3];
+  const Eigen::Vector3f row = c.elevation_row.head<3>().cast<float>();
+  const double scale = c.z_max > c.z_min ? 1.0 / (c.z_max - c.z_min) : 1.0;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const double z = z0 + static_cast<double>(row.dot(cloud.positions[i]));
+    out[i] = rampColor(RampKind::Viridis, (z - c.z_min) * scale);
+  }
+}
+
+}  // namespace plumb::ui

@@ -1,0 +1,32 @@
+#pragma once
+// Per-point colours of a cloud for a PointStyle (computed on the CPU into the vertex colour
+// buffer, once per style change; the mapper then draws them directly).
+#include <Eigen/Core>
+
+#include <span>
+
+#include "model/point_cloud.hpp"
+#include "ui/layers/color_ramp.hpp"
+#include "ui/layers/point_style.hpp"
+
+namespace plumb::ui {
+
+struct PointColoring {
+  PointStyle style;
+  std::size_t scan_index = 0;  ///< colour of the Scan mode
+  /// Elevation: z = elevation_row . (offset + local, 1), mapped from [z_min, z_max].
+  Eigen::Vector4d elevation_row = Eigen::Vector4d(0, 0, 1, 0);
+  double z_min = 0.0;
+  double z_max = 1.0;
+  /// Intensity / scalar field range; computed from the cloud when min >= max.
+  double value_min = 0.0;
+  double value_max = 0.0;
+};
+
+/// Mode actually used: RGB without colours, intensity without intensity, or a missing scalar
+/// field fall back to elevation.
+PointColorMode effectiveMode(const PointCloud& cloud, const PointStyle& style);
+/// Writes one colour per point of `cloud` into `out` (out.size() == cloud.size()).
+void fillPointColors(const PointCloud& cloud, const PointColoring& coloring, std::span<Rgb> out);
+
+}  // namespace plumb::ui

@@ -1,0 +1,22 @@
+#pragma once
+// How a point layer is drawn: colour source, point size.
+#include <string>
+#include <vector>
+
+namespace plumb::ui {
+
+enum class PointColorMode { Rgb, Intensity, Elevation, Scan, ScalarField };
+
+inline const std::vector<std::string>& pointColorModeNames() {
+  static const std::vector<std::string> names{"RGB", "Intensity", "Elevation", "Scan",
+                                              "Scalar field"};
+  return names;
+}
+
+struct PointStyle {
+  PointColorMode mode = PointColorMode::Rgb;
+  std::string scalar_field;  ///< used by ScalarField
+  double point_size = 2.0;   ///< pixels
+};
+
+}  // namespace plumb::ui

@@ -1,0 +1,136 @@
+#include "ui/layers/scan_layer.hpp"
+
+#include <QStringList>
+
+#include <vtkActor.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+#include "ui/layers/point_geometry.hpp"
+#include "ui/layers/render_frame.hpp"
+
+namespace plumb::ui {
+
+namespace {
+
+/// offset + local -> scan frame as a matrix acting on local coordinates.
+Eigen::Matrix4d offsetMatrix(const Eigen::Vector3d& offset) {
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.block<3, 1>(0, 3) = offset;
+  return m;
+}
+
+void setupActor(vtkActor* actor, vtkPolyDataMapper* mapper, vtkPolyData* poly) {
+  mapper->SetInputData(poly);
+  mapper->SetScalarModeToUsePointData();
+  mapper->SetColorModeToDirectScalars();
+  mapper->ScalarVisibilityOn();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetRepresentationToPoints();
+  actor->GetProperty()->LightingOff();
+  actor->PickableOff();
+}
+
+}  // namespace
+
+ScanLayer::ScanLayer(std::shared_ptr<const Dataset> data, std::size_t scan_index,
+                     const Eigen::Vector3d& origin, std::size_t lod_points)
+    : Layer(LayerKind::Scan, QString::fromStdString(data->scans.at(scan_index).name)),
+      data_(std::move(data)),
+      scan_index_(scan_index),
+      origin_(origin) {
+  const PointCloud& cloud = scan().cloud;
+  for (const auto& p : cloud.positions)
+    if (p.allFinite()) local_bounds_.extend(p.cast<double>());
+  full_poly_ = makeSharedPointPolyData(cloud);
+  lod_indices_ = randomSubset(cloud.size(), lod_points, static_cast<std::uint32_t>(scan_index_));
+  lod_poly_ = makeSubsetPointPolyData(cloud, lod_indices_);
+  setupActor(full_actor_, full_mapper_, full_poly_);
+  setupActor(lod_actor_, lod_mapper_, lod_poly_);
+  updateActors();
+}
+
+ScanLayer::~ScanLayer() = default;
+
+Eigen::Matrix4d ScanLayer::localToWorld() const {
+  return dataset_transform_.matrix() * scan().pose.matrix() * offsetMatrix(scan().cloud.offset);
+}
+
+void ScanLayer::setDatasetTransform(const RigidTransform& t) {
+  dataset_transform_ = t;
+  updateActors();
+}
+
+void ScanLayer::setStyle(const PointStyle& style, double z_min, double z_max) {
+  const PointCloud& cloud = scan().cloud;
+  PointColoring coloring;
+  coloring.style = style;
+  coloring.scan_index = scan_index_;
+  // Elevation row acts on (offset + local): world z of the scan-frame point.
+  const Eigen::Matrix4d to_world = dataset_transform_.matrix() * scan().pose.matrix();
+  coloring.elevation_row = to_world.row(2).transpose();
+  coloring.z_min = z_min;
+  coloring.z_max = z_max;
+
+  auto full = makeColorArray(cloud.size());
+  fillPointColors(cloud, coloring,
+                  {reinterpret_cast<Rgb*>(full->GetPointer(0)), cloud.size()});
+  auto lod = makeColorArray(lod_indices_.size());
+  const auto* src = reinterpret_cast<const Rgb*>(full->GetPointer(0));
+  auto* dst = reinterpret_cast<Rgb*>(lod->GetPointer(0));
+  for (std::size_t i = 0; i < lod_indices_.size(); ++i) dst[i] = src[lod_indices_[i]];
+  full_poly_->GetPointData()->SetScalars(full);
+  lod_poly_->GetPointData()->SetScalars(lod);
+  full_poly_->Modified();
+  lod_poly_->Modified();
+  full_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
+  lod_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
+}
+
+std::vector<vtkProp*> ScanLayer::props() const { return {full_actor_, lod_actor_}; }
+
+Bounds ScanLayer::bounds() const {
+  return transformBounds(local_bounds_, localToWorld());
+}
+
+std::vector<PropertyRow> ScanLayer::describe() const {
+  auto rows = Layer::describe();
+  const PointCloud& cloud = scan().cloud;
+  rows.emplace_back("Points", QString::number(cloud.size()));
+  rows.emplace_back("Level of detail", QString::number(lod_indices_.size()) + " points");
+  QStringList fields;
+  for (const auto& f : cloud.fieldNames()) fields << QString::fromStdString(f);
+  rows.emplace_back("Attributes", fields.join(' '));
+  rows.emplace_back("Has pose", scan().has_pose ? "yes" : "no");
+  const auto t = scan().pose.translation();
+  rows.emplace_back("Sensor position",
+                    QString("%1, %2, %3").arg(t.x(), 0, 'f', 3).arg(t.y(), 0, 'f', 3).arg(
+                        t.z(), 0, 'f', 3));
+  return rows;
+}
+
+void ScanLayer::setReducedDetail(bool reduced) {
+  reduced_ = reduced;
+  updateActors();
+}
+
+void ScanLayer::applyVisibility(bool effective) {
+  shown_ = effective;
+  updateActors();
+}
+
+void ScanLayer::updateActors() {
+  // A scan no larger than its subset has nothing to reduce: the full actor always shows.
+  const bool has_lod = lod_indices_.size() < scan().cloud.size();
+  const bool use_lod = reduced_ && has_lod;
+  full_actor_->SetVisibility(shown_ && !use_lod);
+  lod_actor_->SetVisibility(shown_ && use_lod);
+  const auto m = renderMatrix(origin_, localToWorld());
+  full_actor_->SetUserMatrix(m);
+  lod_actor_->SetUserMatrix(m);
+}
+
+}  // namespace plumb::ui

@@ -1,0 +1,66 @@
+#pragma once
+// One scan of a dataset drawn as points: a full-resolution actor (positions shared with the
+// scan, no copy) and a level-of-detail actor (random subset) shown while the camera moves.
+#include <Eigen/Core>
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "model/dataset.hpp"
+#include "ui/layers/layer.hpp"
+#include "ui/layers/point_coloring.hpp"
+
+class vtkActor;
+class vtkPolyData;
+class vtkPolyDataMapper;
+
+namespace plumb::ui {
+
+class ScanLayer : public Layer {
+ public:
+  /// `data` must hold scan `scan_index`; `lod_points` is the subset size for level of detail.
+  ScanLayer(std::shared_ptr<const Dataset> data, std::size_t scan_index,
+            const Eigen::Vector3d& origin, std::size_t lod_points);
+  ~ScanLayer() override;
+
+  const Scan& scan() const { return data_->scans[scan_index_]; }
+  std::size_t scanIndex() const { return scan_index_; }
+  std::size_t lodPointCount() const { return lod_indices_.size(); }
+
+  /// Dataset frame -> world (a registration result; identity by default).
+  void setDatasetTransform(const RigidTransform& t);
+  /// Recolours both representations. z range is world elevation for the Elevation mode.
+  void setStyle(const PointStyle& style, double z_min, double z_max);
+  /// Scan points -> world.
+  Eigen::Matrix4d localToWorld() const;
+
+  std::vector<vtkProp*> props() const override;
+  Bounds bounds() const override;
+  std::vector<PropertyRow> describe() const override;
+  void setReducedDetail(bool reduced) override;
+
+ protected:
+  void applyVisibility(bool effective) override;
+
+ private:
+  void updateActors();
+  std::shared_ptr<const Dataset> data_;
+  std::size_t scan_index_;
+  Eigen::Vector3d origin_;
+  RigidTransform dataset_transform_;
+  std::vector<std::uint32_t> lod_indices_;
+  Bounds local_bounds_;  ///< of the scan's local (offset-relative) positions
+  vtkSmartPointer<vtkPolyData> full_poly_;
+  vtkSmartPointer<vtkPolyData> lod_poly_;
+  vtkNew<vtkPolyDataMapper> full_mapper_;
+  vtkNew<vtkPolyDataMapper> lod_mapper_;
+  vtkNew<vtkActor> full_actor_;
+  vtkNew<vtkActor> lod_actor_;
+  bool reduced_ = false;
+  bool shown_ = true;
+};
+
+}  // namespace plumb::ui

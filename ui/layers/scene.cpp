@@ -1,0 +1,140 @@
+#include "ui/layers/scene.hpp"
+
+#include <vtkCellPicker.h>
+#include <vtkProp.h>
+#include <vtkPropCollection.h>
+#include <vtkRenderer.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/feature_layer.hpp"
+#include "ui/layers/model_layer.hpp"
+#include "ui/layers/render_frame.hpp"
+
+namespace plumb::ui {
+
+namespace {
+
+template <class F>
+void forEachLayer(Layer& layer, const F& f) {
+  f(layer);
+  for (const auto& c : layer.children()) forEachLayer(*c, f);
+}
+
+}  // namespace
+
+Scene::Scene(vtkRenderer* renderer, QObject* parent) : QObject(parent), renderer_(renderer) {}
+
+Scene::~Scene() {
+  for (auto& l : layers_) removeProps(*l);
+}
+
+void Scene::ensureOrigin(const Bounds& b) {
+  if (origin_ || b.empty()) return;
+  // Rounded to metres: render coordinates stay readable and exactly representable.
+  const Eigen::Vector3d c = b.center();
+  origin_ = Eigen::Vector3d(std::round(c.x()), std::round(c.y()), std::round(c.z()));
+}
+
+DatasetLayer& Scene::addDataset(std::shared_ptr<const Dataset> data) {
+  ensureOrigin(data->bounds());
+  return static_cast<DatasetLayer&>(
+      adopt(std::make_unique<DatasetLayer>(std::move(data), origin()), nullptr));
+}
+
+ModelLayer& Scene::addModel(std::shared_ptr<const BimModel> model) {
+  ensureOrigin(model->mesh.bounds());
+  return static_cast<ModelLayer&>(
+      adopt(std::make_unique<ModelLayer>(std::move(model), origin()), nullptr));
+}
+
+FeatureLayer& Scene::addFeatures(QString name, std::shared_ptr<const FeatureSet> features,
+                                 Layer* parent) {
+  auto layer = std::make_unique<FeatureLayer>(std::move(name), std::move(features), origin());
+  ensureOrigin(layer->bounds());
+  return static_cast<FeatureLayer&>(adopt(std::move(layer), parent));
+}
+
+Layer& Scene::adopt(std::unique_ptr<Layer> layer, Layer* parent) {
+  Layer* added = nullptr;
+  if (parent) {
+    added = &parent->addChild(std::move(layer));
+  } else {
+    layers_.push_back(std::move(layer));
+    added = layers_.back().get();
+  }
+  addProps(*added);
+  added->setReducedDetail(reduced_);
+  emit layersChanged();
+  emit renderNeeded();
+  return *added;
+}
+
+void Scene::addProps(Layer& layer) {
+  forEachLayer(layer, [this](Layer& l) {
+    for (vtkProp* p : l.props()) renderer_->AddViewProp(p);
+  });
+}
+
+void Scene::removeProps(Layer& layer) {
+  forEachLayer(layer, [this](Layer& l) {
+    for (vtkProp* p : l.props()) renderer_->RemoveViewProp(p);
+  });
+}
+
+void Scene::removeLayer(Layer* layer) {
+  auto it = std::find_if(layers_.begin(), layers_.end(),
+                         [layer](const auto& l) { return l.get() == layer; });
+  if (it == layers_.end()) return;
+  removeProps(**it);
+  layers_.erase(it);
+  emit layersChanged();
+  emit renderNeeded();
+}
+
+void Scene::clear() {
+  for (auto& l : layers_) removeProps(*l);
+  layers_.clear();
+  origin_.reset();
+  emit layersChanged();
+}
+
+Bounds Scene::visibleBounds() const {
+  Bounds b;
+  for (const auto& l : layers_)
+    forEachLayer(*l, [&b](Layer& x) {
+      if (x.effectivelyVisible() && x.children().empty()) b.extend(x.bounds());
+    });
+  return b;
+}
+
+void Scene::renderBounds(const Bounds& world, double out[6]) const {
+  toRenderBounds(world, origin(), out);
+}
+
+void Scene::setReducedDetail(bool reduced) {
+  reduced_ = reduced;
+  for (auto& l : layers_) forEachLayer(*l, [reduced](Layer& x) { x.setReducedDetail(reduced); });
+}
+
+std::optional<PickResult> Scene::pick(int x, int y) {
+  vtkNew<vtkCellPicker> picker;
+  picker->SetTolerance(0.005);
+  if (!picker->Pick(x, y, 0.0, renderer_)) return std::nullopt;
+  vtkProp* prop = picker->GetViewProp();
+  std::optional<PickResult> result;
+  for (auto& l : layers_)
+    forEachLayer(*l, [&](Layer& layer) {
+      if (result || layer.kind() != LayerKind::Features) return;
+      auto& features = static_cast<FeatureLayer&>(layer);
+      if (auto ref = features.featureAt(prop, picker->GetCellId()))
+        result = PickResult{&layer, features.describeFeature(*ref)};
+    });
+  return result;
+}
+
+void Scene::layerChanged(Layer*) { emit renderNeeded(); }
+
+}  // namespace plumb::ui

@@ -1,0 +1,83 @@
+#pragma once
+// The layers shown in one view: owns the root layers, puts their props into the renderer, and
+// fixes the render origin (the first layer's centre) that keeps float precision.
+#include <QObject>
+
+#include <Eigen/Core>
+#include <vtkSmartPointer.h>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "model/bim_model.hpp"
+#include "model/dataset.hpp"
+#include "model/feature_set.hpp"
+#include "ui/layers/layer.hpp"
+
+class vtkRenderer;
+
+namespace plumb::ui {
+
+class DatasetLayer;
+class ModelLayer;
+class FeatureLayer;
+
+/// What a click in the view hit.
+struct PickResult {
+  Layer* layer = nullptr;
+  std::vector<PropertyRow> rows;
+};
+
+class Scene : public QObject {
+  Q_OBJECT
+ public:
+  explicit Scene(vtkRenderer* renderer, QObject* parent = nullptr);
+  ~Scene() override;
+
+  const std::vector<std::unique_ptr<Layer>>& layers() const { return layers_; }
+  /// World position of render (0,0,0); fixed by the first layer added.
+  Eigen::Vector3d origin() const { return origin_.value_or(Eigen::Vector3d::Zero()); }
+
+  DatasetLayer& addDataset(std::shared_ptr<const Dataset> data);
+  ModelLayer& addModel(std::shared_ptr<const BimModel> model);
+  /// Adds features as a child of `parent` (a dataset or model layer) or at the root.
+  FeatureLayer& addFeatures(QString name, std::shared_ptr<const FeatureSet> features,
+                            Layer* parent = nullptr);
+  /// Removes a root layer (and its children).
+  void removeLayer(Layer* layer);
+  void clear();
+
+  /// World bounds of the visible layers.
+  Bounds visibleBounds() const;
+  /// VTK bounds in render coordinates of a world box.
+  void renderBounds(const Bounds& world, double out[6]) const;
+
+  /// Level of detail on/off for every layer.
+  void setReducedDetail(bool reduced);
+  bool reducedDetail() const { return reduced_; }
+  /// Picks a feature at display position (x, y), VTK convention (y up, device pixels).
+  std::optional<PickResult> pick(int x, int y);
+
+  /// Call after changing a layer's style, visibility or transform.
+  void layerChanged(Layer* layer);
+
+ signals:
+  /// Layers were added or removed.
+  void layersChanged();
+  /// A layer's appearance changed: the view must render.
+  void renderNeeded();
+
+ private:
+  void ensureOrigin(const Bounds& b);
+  void addProps(Layer& layer);
+  void removeProps(Layer& layer);
+  Layer& adopt(std::unique_ptr<Layer> layer, Layer* parent);
+
+  vtkSmartPointer<vtkRenderer> renderer_;  ///< shared with the view
+  std::vector<std::unique_ptr<Layer>> layers_;
+  std::optional<Eigen::Vector3d> origin_;
+  bool reduced_ = false;
+};
+
+}  // namespace plumb::ui

@@ -1,0 +1,72 @@
+#include "ui/panels/point_style_editor.hpp"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/scene.hpp"
+
+namespace plumb::ui {
+
+PointStyleEditor::PointStyleEditor(Scene& scene, QWidget* parent)
+    : QWidget(parent),
+      scene_(scene),
+      mode_(new QComboBox(this)),
+      field_(new QComboBox(this)),
+      size_(new QDoubleSpinBox(this)),
+      registered_(new QCheckBox(tr("Show registered position"), this)) {
+  auto* form = new QFormLayout(this);
+  form->setContentsMargins(0, 0, 0, 0);
+  mode_->setObjectName("colorMode");
+  for (const auto& name : pointColorModeNames()) mode_->addItem(QString::fromStdString(name));
+  form->addRow(tr("Colour by"), mode_);
+  field_->setObjectName("scalarField");
+  form->addRow(tr("Scalar field"), field_);
+  size_->setObjectName("pointSize");
+  size_->setRange(1.0, 10.0);
+  size_->setSingleStep(1.0);
+  size_->setDecimals(0);
+  size_->setSuffix(" px");
+  form->addRow(tr("Point size"), size_);
+  registered_->setObjectName("showRegistered");
+  registered_->setToolTip(tr("Before/after: toggle the registration transform of this dataset"));
+  form->addRow(registered_);
+  connect(mode_, &QComboBox::currentIndexChanged, this, &PointStyleEditor::apply);
+  connect(field_, &QComboBox::currentIndexChanged, this, &PointStyleEditor::apply);
+  connect(size_, &QDoubleSpinBox::valueChanged, this, &PointStyleEditor::apply);
+  connect(registered_, &QCheckBox::toggled, this, [this](bool on) {
+    if (loading_ || !layer_) return;
+    layer_->setShowsTransform(on);
+    scene_.layerChanged(layer_);
+  });
+}
+
+void PointStyleEditor::setLayer(DatasetLayer* layer) {
+  layer_ = layer;
+  if (!layer_) return;
+  loading_ = true;
+  const PointStyle& s = layer_->style();
+  mode_->setCurrentIndex(static_cast<int>(s.mode));
+  field_->clear();
+  for (const auto& name : layer_->scalarFieldNames()) field_->addItem(QString::fromStdString(name));
+  field_->setCurrentText(QString::fromStdString(s.scalar_field));
+  field_->setEnabled(field_->count() > 0);
+  size_->setValue(s.point_size);
+  registered_->setEnabled(!layer_->transform().isIdentity());
+  registered_->setChecked(layer_->showsTransform());
+  loading_ = false;
+}
+
+void PointStyleEditor::apply() {
+  if (loading_ || !layer_) return;
+  PointStyle s;
+  s.mode = static_cast<PointColorMode>(mode_->currentIndex());
+  s.scalar_field = field_->currentText().toStdString();
+  s.point_size = size_->value();
+  layer_->setStyle(s);
+  scene_.layerChanged(layer_);
+}
+
+}  // namespace plumb::ui
