@@ -49,9 +49,11 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
                      " cannot be written (1.2 or 1.4)");
   if (!(options.scale > 0.0) || !std::isfinite(options.scale))
     throw InputError("LAS scale must be a positive number of metres");
-  const PointCloud cloud = data.scans.size() == 1 && data.scans[0].pose.isIdentity()
-                               ? data.scans[0].cloud
-                               : data.merged();
+  // One scan with an identity pose is written in place; otherwise scans are merged (a copy).
+  PointCloud merged;
+  const bool in_place = data.scans.size() == 1 && data.scans[0].pose.isIdentity();
+  if (!in_place) merged = data.merged();
+  const PointCloud& cloud = in_place ? data.scans[0].cloud : merged;
   const bool v14 = options.version_minor == 4;
   const bool has_time = cloud.hasTimestamps();
   const int format = v14 ? 7 : (has_time ? 3 : 2);

@@ -67,6 +67,9 @@ const Expected kFiles[] = {
      2476, 62657, true, true, {639944.97, 485154.44, 84.82}, 633, 3, 206946275.5600586},
 };
 
+// gtest prints the parameter by its file name instead of its bytes.
+void PrintTo(const Expected& e, std::ostream* os) { *os << e.file; }
+
 std::string meta(const Dataset& d, const std::string& key) {
   for (const auto& [k, v] : d.metadata)
     if (k == key) return v;
