@@ -1,0 +1,179 @@
+#include "registration/auto/registration_pipeline.hpp"
+
+#include <chrono>
+#include <sstream>
+
+#include "common/error.hpp"
+
+namespace plumb {
+
+std::string methodName(RegistrationMethod m) {
+  switch (m) {
+    case RegistrationMethod::Auto: return "auto";
+    case RegistrationMethod::Planes: return "planes";
+    case RegistrationMethod::Openings: return "openings";
+    case RegistrationMethod::Segments: return "segments";
+    case RegistrationMethod::Icp: return "icp";
+  }
+  return "?";
+}
+
+RegistrationMethod methodFromName(const std::string& n) {
+  for (auto m : {RegistrationMethod::Auto, RegistrationMethod::Planes, RegistrationMethod::Openings,
+                 RegistrationMethod::Segments, RegistrationMethod::Icp})
+    if (methodName(m) == n) return m;
+  throw InputError("unknown registration method '" + n +
+                   "' (valid: auto, planes, openings, segments, icp)");
+}
+
+namespace {
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+void note(std::vector<std::string>* log, const std::string& s) {
+  if (log) log->push_back(s);
+}
+}  // namespace
+
+FeatureSet extractFeatures(const RegistrationSide& side, const PipelineParams& p,
+                           bool with_segments, std::vector<std::string>* log, Progress* progress) {
+  if (side.features) return *side.features;
+  FeatureSet f;
+  if (side.model) {
+    f.segments = extractSharpEdges(side.model->mesh, p.mesh_edges, progress).segments;
+    note(log, "model: " + std::to_string(f.segments.size()) + " sharp edges");
+    return f;
+  }
+  if (!side.cloud) throw InputError("registration side has neither a cloud nor a model");
+  PlaneExtractionParams pe = p.plane_extraction;
+  pe.seed = p.seed;
+  auto planes = extractPlanes(*side.cloud, pe, progress);
+  f.planes = std::move(planes.planes);
+  if (side.viewpoint) orientTowards(f.planes, *side.viewpoint);
+  auto op = detectOpenings(*side.cloud, f.planes, p.opening_detection, progress);
+  f.facades = op.facades;
+  f.openings = op.openings;
+  if (with_segments) f.segments = detectSegments(*side.cloud, p.segment_detection, progress).segments;
+  note(log, "scan: " + std::to_string(f.planes.size()) + " polygons, " +
+                std::to_string(f.facades.size()) + " facades, " +
+                std::to_string(f.openings.size()) + " openings, " +
+                std::to_string(f.segments.size()) + " segments");
+  return f;
+}
+
+GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const FeatureSet& target,
+                                             bool target_is_model, const PipelineParams& p,
+                                             std::vector<std::string>* log, Progress* progress) {
+  auto run = [&](RegistrationMethod m) {
+    GlobalRegistrationResult r;
+    switch (m) {
+      case RegistrationMethod::Planes: {
+        auto q = p.planes;
+        q.seed = p.seed;
+        r = registerPlanes(source.planes, target.planes, q, progress);
+        break;
+      }
+      case RegistrationMethod::Openings: {
+        auto q = p.openings;
+        q.seed = p.seed;
+        r = registerOpenings(source, target, q, progress);
+        break;
+      }
+      case RegistrationMethod::Segments: {
+        auto q = p.segments;
+        q.seed = p.seed;
+        r = registerSegments(source.segments, target.segments, q, progress);
+        break;
+      }
+      default: break;
+    }
+    note(log, methodName(m) + ": " + toString(r.status) + " - " + r.message);
+    return r;
+  };
+  if (p.method != RegistrationMethod::Auto) return run(p.method);
+  std::vector<RegistrationMethod> order;
+  if (target_is_model) {
+    order = {RegistrationMethod::Segments};
+    note(log, "auto: the target is a model -> segments (scan segments vs model sharp edges)");
+  } else {
+    order = {RegistrationMethod::Planes};
+    const bool openings = !source.openings.empty() && !target.openings.empty();
+    if (openings) order.push_back(RegistrationMethod::Openings);
+    if (!source.segments.empty() && !target.segments.empty())
+      order.push_back(RegistrationMethod::Segments);
+    note(log, std::string("auto: two scans -> planes") +
+                  (openings ? ", then openings (both sides carry openings)" : "") +
+                  " if planes fail");
+  }
+  GlobalRegistrationResult first;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    auto r = run(order[i]);
+    if (r.ok()) {
+      r.message = "auto chose " + r.method + ": " + r.message;
+      return r;
+    }
+    if (i == 0) first = r;
+  }
+  // All failed: report the first (preferred) method's failure, with the others in the log.
+  first.message = "auto: every applicable method failed; " + first.message;
+  return first;
+}
+
+PipelineResult registerData(const RegistrationSide& source_in, const RegistrationSide& target_in,
+                            const PipelineParams& p, Progress* progress) {
+  PipelineResult out;
+  // A model must be the target (the BIM is the reference): swap and invert at the end.
+  const bool swap = source_in.isModel() && !target_in.isModel();
+  const RegistrationSide& source = swap ? target_in : source_in;
+  const RegistrationSide& target = swap ? source_in : target_in;
+  if (source.isModel() && target.isModel())
+    throw InputError("register: both inputs are models; one side must be a scan");
+  if (swap) out.log.push_back("source is a model: registering the scan onto it and inverting");
+  auto t0 = std::chrono::steady_clock::now();
+  const bool need_segments = target.isModel() || p.method == RegistrationMethod::Segments;
+  if (p.method != RegistrationMethod::Icp) {
+    out.source_features = extractFeatures(source, p, need_segments, &out.log, progress);
+    out.target_features = extractFeatures(target, p, need_segments, &out.log, progress);
+  }
+  out.seconds_features = since(t0);
+  t0 = std::chrono::steady_clock::now();
+  if (p.method == RegistrationMethod::Icp) {
+    out.global.status = RegistrationStatus::Success;
+    out.global.method = "icp";
+    out.global.message = "icp: local refinement from the identity (no global search)";
+    out.log.push_back(out.global.message);
+  } else {
+    out.global = registerFeatureSets(out.source_features, out.target_features, target.isModel(), p,
+                                     &out.log, progress);
+  }
+  out.method_used = out.global.method;
+  out.seconds_global = since(t0);
+  t0 = std::chrono::steady_clock::now();
+  const bool refine = p.refine || p.method == RegistrationMethod::Icp;
+  if (out.global.ok() && refine) {
+    PointCloud sampled;
+    const PointCloud* tc = target.cloud;
+    if (target.isModel()) {
+      sampled = sampleMeshSurface(target.model->mesh, p.model_sample_spacing, p.seed);
+      tc = &sampled;
+    }
+    const PointCloud* sc = source.cloud;
+    if (sc && tc) {
+      auto rp = p.refinement;
+      rp.seed = p.seed;
+      out.refinement = refineRegistration(*sc, *tc, out.global.transform, rp, progress);
+    }
+  }
+  out.seconds_refine = since(t0);
+  out.report = assessRegistration(out.global, out.refinement ? &*out.refinement : nullptr, p.quality);
+  out.report.figures.push_back({"seconds features", out.seconds_features});
+  out.report.figures.push_back({"seconds global", out.seconds_global});
+  out.report.figures.push_back({"seconds refinement", out.seconds_refine});
+  if (swap && out.report.success) {
+    out.report.transform = out.report.transform.inverse();
+    out.report.global_transform = out.report.global_transform.inverse();
+  }
+  return out;
+}
+
+}  // namespace plumb

@@ -1,0 +1,90 @@
+#pragma once
+// The end-to-end registration: data -> features -> global method -> refinement -> quality
+// report. `auto` picks the method from what the inputs carry and says which it used:
+//   - a model (BIM/mesh) on either side: segments (scan segments vs the model's sharp edges);
+//   - two scans: planes; when planes fail and both sides carry openings on façades: openings;
+//     segments as the last resort.
+// Each attempt and the reason a method was skipped or failed is logged in the result.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/progress.hpp"
+#include "features/facades/opening_detection.hpp"
+#include "features/mesh_edges/mesh_edges.hpp"
+#include "features/planes/plane_extraction.hpp"
+#include "features/segments/segment_detection.hpp"
+#include "model/bim_model.hpp"
+#include "model/feature_set.hpp"
+#include "model/point_cloud.hpp"
+#include "quality/quality_report.hpp"
+#include "registration/openings/opening_registration.hpp"
+#include "registration/planes/plane_registration.hpp"
+#include "registration/refine/icp_refinement.hpp"
+#include "registration/segments/segment_registration.hpp"
+
+namespace plumb {
+
+enum class RegistrationMethod { Auto, Planes, Openings, Segments, Icp };
+std::string methodName(RegistrationMethod m);
+/// "auto", "planes", ... ; throws InputError listing the valid names.
+RegistrationMethod methodFromName(const std::string& name);
+
+/// One side of a registration: a point cloud (world coordinates) or a model.
+struct RegistrationSide {
+  const PointCloud* cloud = nullptr;
+  const BimModel* model = nullptr;
+  /// Scanner position of a static scan (world); plane normals are then oriented towards it.
+  std::optional<Eigen::Vector3d> viewpoint;
+  /// Precomputed features (skips extraction when set).
+  const FeatureSet* features = nullptr;
+  bool isModel() const { return model != nullptr; }
+};
+
+struct PipelineParams {
+  RegistrationMethod method = RegistrationMethod::Auto;
+  bool refine = true;
+  PlaneExtractionParams plane_extraction;
+  OpeningDetectionParams opening_detection;
+  SegmentDetectionParams segment_detection;
+  MeshEdgeParams mesh_edges;
+  PlaneRegistrationParams planes;
+  OpeningRegistrationParams openings;
+  SegmentRegistrationParams segments;
+  RefineParams refinement;
+  QualityParams quality;
+  /// Spacing of the points sampled on a model for refinement, metres, [0.005, 1].
+  double model_sample_spacing = 0.05;
+  std::uint64_t seed = 1;
+};
+
+struct PipelineResult {
+  QualityReport report;
+  GlobalRegistrationResult global;
+  std::optional<RefineResult> refinement;
+  FeatureSet source_features, target_features;
+  std::string method_used;
+  std::vector<std::string> log;  ///< attempts and reasons, in order
+  double seconds_features = 0, seconds_global = 0, seconds_refine = 0;
+  bool success() const { return report.success; }
+  /// The transform to apply to the source; only meaningful when success().
+  const RigidTransform& transform() const { return report.transform; }
+};
+
+/// Global step only, on features (no refinement). `target_is_model` steers auto.
+GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const FeatureSet& target,
+                                             bool target_is_model, const PipelineParams& params,
+                                             std::vector<std::string>* log = nullptr,
+                                             Progress* progress = nullptr);
+
+/// The whole pipeline. Never throws for "could not register": the report says so.
+PipelineResult registerData(const RegistrationSide& source, const RegistrationSide& target,
+                            const PipelineParams& params, Progress* progress = nullptr);
+
+/// Features of one side: planes + openings (+ segments when `with_segments`) for a scan; the
+/// sharp edges for a model.
+FeatureSet extractFeatures(const RegistrationSide& side, const PipelineParams& params,
+                           bool with_segments, std::vector<std::string>* log = nullptr,
+                           Progress* progress = nullptr);
+
+}  // namespace plumb
