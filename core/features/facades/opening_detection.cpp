@@ -102,10 +102,63 @@ Rect snapToWall(const Rect& r, const std::vector<Eigen::Vector2d>& wall, double 
     }
   }
   // Only move outwards (evidence lies inside the opening; wall points inside it are noise).
-  if (left > -1e300 && left < r.u0) out.u0 = left;
-  if (right < 1e300 && right > r.u1) out.u1 = right;
-  if (bottom > -1e300 && bottom < r.v0) out.v0 = bottom;
-  if (top < 1e300 && top > r.v1) out.v1 = top;
+  // The edge lies between the last evidence and the first wall sample: take the middle when
+  // they are close (one sampling step each side), the wall sample when the evidence stops
+  // short (rays clipped by a deep reveal).
+  auto side = [](double evidence, double wall) {
+    return std::abs(wall - evidence) < 0.15 ? 0.5 * (evidence + wall) : wall;
+  };
+  if (left > -1e300 && left < r.u0) out.u0 = side(r.u0, left);
+  if (right < 1e300 && right > r.u1) out.u1 = side(r.u1, right);
+  if (bottom > -1e300 && bottom < r.v0) out.v0 = side(r.v0, bottom);
+  if (top < 1e300 && top > r.v1) out.v1 = side(r.v1, top);
+  return out;
+}
+
+/// Points just behind a façade (depth in (3 cm, 60 cm) on the far side from the viewer):
+/// the reveals (jambs, sill, lintel) of its openings. (u, v) in the façade frame.
+std::vector<Eigen::Vector2d> revealPoints(const PointCloud& cloud, const PlanarPolygon& f,
+                                          const Eigen::Vector3d& view) {
+  const double sign = view.dot(f.normal) > 0 ? -1.0 : 1.0;  // depth measured away from viewer
+  std::vector<Eigen::Vector2d> out;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!cloud.positions[i].allFinite()) continue;
+    const Eigen::Vector3d p = cloud.world(i);
+    const double depth = sign * f.signedDistance(p);
+    if (depth > 0.03 && depth < 0.6) out.push_back(f.to2d(p));
+  }
+  return out;
+}
+
+/// Moves each side of r onto the reveal surface next to it when enough reveal points line up
+/// there (median within 2 cm): reveals are exactly at the opening's edges.
+Rect snapToReveals(const Rect& r, const std::vector<Eigen::Vector2d>& reveal, double snap) {
+  Rect out = r;
+  const double mu = 0.2 * (r.u1 - r.u0), mv = 0.2 * (r.v1 - r.v0);
+  std::vector<double> l, rt, b, t;
+  for (const auto& p : reveal) {
+    if (p.y() > r.v0 + mv && p.y() < r.v1 - mv) {
+      if (std::abs(p.x() - r.u0) < snap && p.x() < r.u0 + mu) l.push_back(p.x());
+      if (std::abs(p.x() - r.u1) < snap && p.x() > r.u1 - mu) rt.push_back(p.x());
+    }
+    if (p.x() > r.u0 + mu && p.x() < r.u1 - mu) {
+      if (std::abs(p.y() - r.v0) < snap && p.y() < r.v0 + mv) b.push_back(p.y());
+      if (std::abs(p.y() - r.v1) < snap && p.y() > r.v1 - mv) t.push_back(p.y());
+    }
+  }
+  auto median = [](std::vector<double>& v, double& m) {
+    if (v.size() < 8) return false;
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    m = v[v.size() / 2];
+    std::size_t close = 0;
+    for (double x : v) close += std::abs(x - m) < 0.02;
+    return close * 2 >= v.size();
+  };
+  double m;
+  if (median(l, m)) out.u0 = m;
+  if (median(rt, m)) out.u1 = m;
+  if (median(b, m)) out.v0 = m;
+  if (median(t, m)) out.v1 = m;
   return out;
 }
 
@@ -161,7 +214,21 @@ OpeningDetectionResult detectOpenings(const PointCloud& cloud,
   }
   for (std::size_t k = 0; k < nf; ++k) {
     const auto& f = planes[result.facades[k]];
-    const Eigen::Vector3d ref = has_origins ? mean_origin : mean_point;
+    // The side the façade's own points were seen from (mean of their sensor origins).
+    Eigen::Vector3d ref = mean_point;
+    if (has_origins && !f.inliers.empty()) {
+      ref.setZero();
+      std::size_t n = 0;
+      const std::size_t step = std::max<std::size_t>(1, f.inliers.size() / 2000);
+      for (std::size_t j = 0; j < f.inliers.size(); j += step)
+        if (f.inliers[j] < cloud.size()) {
+          ref += cloud.offset + cloud.sensor_origins[f.inliers[j]].cast<double>();
+          ++n;
+        }
+      ref = n ? Eigen::Vector3d(ref / double(n)) : mean_origin;
+    } else if (has_origins) {
+      ref = mean_origin;
+    }
     view[k] = f.signedDistance(ref) >= 0 ? f.normal : Eigen::Vector3d(-f.normal);
   }
   std::vector<std::vector<Eigen::Vector2d>> evidence(nf);
@@ -217,6 +284,7 @@ OpeningDetectionResult detectOpenings(const PointCloud& cloud,
     for (auto i : f.inliers)
       if (i < cloud.size()) wall.push_back(f.to2d(cloud.world(i)));
     std::vector<Rect> rects;
+    const auto reveal = evidence[k].empty() ? std::vector<Eigen::Vector2d>{} : revealPoints(cloud, f, view[k]);
     // Ray-traced openings: components -> vertical bounding rectangles -> snapped to the wall.
     for (const auto& comp : gridComponents(evidence[k], params.link_distance)) {
       if (comp.size() < static_cast<std::size_t>(params.min_evidence)) continue;
@@ -226,7 +294,7 @@ OpeningDetectionResult detectOpenings(const PointCloud& cloud,
         r.u0 = std::min(r.u0, p.x()); r.v0 = std::min(r.v0, p.y());
         r.u1 = std::max(r.u1, p.x()); r.v1 = std::max(r.v1, p.y());
       }
-      r = snapToWall(r, wall, params.snap_distance);
+      r = snapToReveals(snapToWall(r, wall, params.snap_distance), reveal, 0.1);
       if (!sizeOk(r)) continue;
       rects.push_back(r);
       result.openings.push_back(makeOpening(f, r, view[k], result.facades[k], comp.size()));

@@ -8,7 +8,8 @@
 //     Without per-point sensor origins this step cannot run: it is reported, never guessed.
 //  3. Openings: connected components of the evidence (graph edge when two hits are closer
 //     than `link_distance`) -> minimum-area rectangle aligned with the vertical -> 4 corners.
-//     Each side is then moved to the nearest façade inliers (the wall edge of the opening).
+//     Each side is then moved to the nearest façade inliers (the wall edge of the opening),
+//     and onto the reveal surface (jamb, sill, lintel) behind it when the scan saw one.
 //  4. Indoor side / no sensor origins: holes of wall polygons become openings too.
 // Corners follow plumb::Opening, seen from the side the scanner saw the façade from (the
 // sensor side; without sensor origins, the side where most of the cloud lies). That is the

@@ -1,9 +1,11 @@
 // Polygons of a detected plane: connected parts of its inliers (grid flood fill in the plane,
-// cell = component_distance), then per part a CGAL 2D alpha shape (REGULARIZED) whose
-// boundary edges are chained into rings: outer ring counter-clockwise, holes clockwise.
-#include <CGAL/Alpha_shape_2.h>
-#include <CGAL/Alpha_shape_face_base_2.h>
-#include <CGAL/Alpha_shape_vertex_base_2.h>
+// cell = component_distance), then per part a regularized 2D alpha shape whose boundary edges
+// are chained into rings: outer ring counter-clockwise, holes clockwise.
+// The alpha shape is read directly off CGAL's Delaunay triangulation: a finite face belongs
+// to the regularized shape when its circumradius is below alpha_radius, and the boundary is
+// every edge between such a face and one that is not. This is what CGAL::Alpha_shape_2 gives
+// in REGULARIZED mode for that alpha, but ~10x faster (measured: Alpha_shape_2's interval
+// maps took 45% of extraction time on a 0.5 M point MMS scan).
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -19,11 +21,7 @@ namespace plumb::planes_detail {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Alpha_shape_vertex_base_2<K>;
-using Fb = CGAL::Alpha_shape_face_base_2<K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
-using AlphaShape = CGAL::Alpha_shape_2<Delaunay>;
+using Delaunay = CGAL::Delaunay_triangulation_2<K>;
 
 using Ring = std::vector<Eigen::Vector2d>;
 
@@ -74,20 +72,27 @@ Ring simplifyRing(const Ring& r, double tol) {
 /// Alpha-shape rings of 2D points: outer ring (CCW) first, then holes (CW).
 std::vector<Ring> alphaRings(const std::vector<K::Point_2>& pts, double alpha_radius,
                              double simplify_tol) {
-  AlphaShape shape(pts.begin(), pts.end(), K::FT(alpha_radius * alpha_radius),
-                   AlphaShape::REGULARIZED);
-  using VH = AlphaShape::Vertex_handle;
+  Delaunay dt(pts.begin(), pts.end());
+  using VH = Delaunay::Vertex_handle;
+  using FH = Delaunay::Face_handle;
+  const double r2 = alpha_radius * alpha_radius;
+  auto inside = [&](FH f) {
+    if (dt.is_infinite(f)) return false;
+    const auto& a = f->vertex(0)->point();
+    const auto& b = f->vertex(1)->point();
+    const auto& c = f->vertex(2)->point();
+    return CGAL::squared_radius(a, b, c) < r2;
+  };
   std::map<VH, std::vector<VH>> out_edges;
   std::size_t edge_count = 0;
-  for (auto it = shape.alpha_shape_edges_begin(); it != shape.alpha_shape_edges_end(); ++it) {
-    if (shape.classify(*it) != AlphaShape::REGULAR) continue;
-    auto f = it->first;
-    const int i = it->second;
-    VH a = f->vertex(f->ccw(i)), b = f->vertex(f->cw(i));
-    // Face f lies left of a->b; orient so the interior is on the left.
-    if (shape.classify(f) != AlphaShape::INTERIOR) std::swap(a, b);
-    out_edges[a].push_back(b);
-    ++edge_count;
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    if (!inside(f)) continue;
+    for (int i = 0; i < 3; ++i) {
+      if (inside(f->neighbor(i))) continue;
+      // Face f lies left of ccw(i) -> cw(i): the shape's interior is on the left.
+      out_edges[f->vertex(f->ccw(i))].push_back(f->vertex(f->cw(i)));
+      ++edge_count;
+    }
   }
   std::vector<Ring> rings;
   for (auto& [start, outs] : out_edges) {

@@ -80,6 +80,7 @@ std::vector<DetectedPlane> detectMsac(const PointCloud& cloud, std::vector<std::
   const float t2 = static_cast<float>(threshold * threshold);
   const std::size_t initial = std::max<std::size_t>(1, active.size());
   const float local_cell = 0.6f;  // metres: neighbourhood of the first sample
+  int failures = 0;
   while (static_cast<int>(planes.size()) < params.max_planes &&
          active.size() >= static_cast<std::size_t>(params.min_inliers)) {
     checkCanceled(progress);
@@ -134,21 +135,30 @@ std::vector<DetectedPlane> detectMsac(const PointCloud& cloud, std::vector<std::
     });
     const auto best = std::min_element(cost.begin(), cost.end()) - cost.begin();
     if (!std::isfinite(cost[best])) break;
-    // Refit on all remaining points (twice: inliers of the refitted plane).
+    // Refit by least squares on the inliers of all remaining points; keep the refit only while
+    // it gains inliers (a hypothesis across a corner must not drift away).
     DetectedPlane plane;
     Eigen::Vector3d n = hyps[best].n.cast<double>();
     double d = hyps[best].d;
-    for (int round = 0; round < 3; ++round) {
-      plane.inliers = inliersOf(cloud, active, n, d, threshold);
-      if (plane.inliers.size() < 3) break;
-      plane.fit = fitPlaneLocal(cloud, plane.inliers);
-      if (!plane.fit.valid) break;
-      n = plane.fit.normal;
-      d = plane.fit.offset;
-    }
-    if (!plane.fit.valid) break;
     plane.inliers = inliersOf(cloud, active, n, d, threshold);
-    if (plane.inliers.size() < static_cast<std::size_t>(params.min_inliers)) break;
+    plane.fit.normal = n;
+    plane.fit.offset = d;
+    for (int round = 0; round < 3 && plane.inliers.size() >= 3; ++round) {
+      const PlaneFit fit = fitPlaneLocal(cloud, plane.inliers);
+      if (!fit.valid) break;
+      auto refit = inliersOf(cloud, active, fit.normal, fit.offset, threshold);
+      if (refit.size() < plane.inliers.size()) break;
+      const bool same = refit.size() == plane.inliers.size();
+      plane.inliers.swap(refit);
+      plane.fit = fit;
+      if (same) break;
+    }
+    if (plane.inliers.size() < static_cast<std::size_t>(params.min_inliers) || plane.inliers.size() < 3) {
+      if (++failures >= 3) break;  // three bad draws in a row: nothing large is left
+      continue;
+    }
+    failures = 0;
+    plane.fit = fitPlaneLocal(cloud, plane.inliers);
     // Remove inliers (both lists are sorted by index).
     std::vector<std::uint32_t> rest;
     rest.reserve(active.size() - plane.inliers.size());

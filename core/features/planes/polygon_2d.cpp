@@ -2,7 +2,8 @@
 
 #include <cmath>
 #include <cstdint>
-#include <map>
+#include <algorithm>
+#include <unordered_map>
 
 namespace plumb {
 
@@ -28,33 +29,45 @@ bool ringContains(const std::vector<Eigen::Vector2d>& r, const Eigen::Vector2d& 
 
 std::vector<std::vector<std::size_t>> gridComponents(const std::vector<Eigen::Vector2d>& pts,
                                                      double cell) {
-  using Key = std::pair<std::int64_t, std::int64_t>;
-  auto key = [cell](const Eigen::Vector2d& p) {
-    return Key(std::int64_t(std::floor(p.x() / cell)), std::int64_t(std::floor(p.y() / cell)));
+  // Cells as packed keys, sorted (deterministic order), looked up through a hash map.
+  auto pack = [](std::int64_t i, std::int64_t j) {
+    return (static_cast<std::uint64_t>(i + (std::int64_t(1) << 31)) << 32) |
+           static_cast<std::uint64_t>(j + (std::int64_t(1) << 31));
   };
-  std::map<Key, int> label;
-  for (const auto& p : pts) label.emplace(key(p), -1);
+  std::vector<std::uint64_t> key(pts.size());
+  for (std::size_t k = 0; k < pts.size(); ++k)
+    key[k] = pack(std::int64_t(std::floor(pts[k].x() / cell)), std::int64_t(std::floor(pts[k].y() / cell)));
+  std::vector<std::uint64_t> cells = key;
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  std::unordered_map<std::uint64_t, int> index;
+  index.reserve(cells.size() * 2);
+  for (std::size_t c = 0; c < cells.size(); ++c) index.emplace(cells[c], static_cast<int>(c));
+  std::vector<int> label(cells.size(), -1);
   int n = 0;
-  for (auto& [c, l] : label) {
-    if (l >= 0) continue;
-    l = n;
-    std::vector<Key> stack{c};
+  std::vector<int> stack;
+  for (std::size_t c0 = 0; c0 < cells.size(); ++c0) {
+    if (label[c0] >= 0) continue;
+    label[c0] = n;
+    stack.assign(1, static_cast<int>(c0));
     while (!stack.empty()) {
-      const Key cur = stack.back();
+      const std::uint64_t k = cells[stack.back()];
       stack.pop_back();
+      const std::int64_t i = std::int64_t(k >> 32) - (std::int64_t(1) << 31);
+      const std::int64_t j = std::int64_t(k & 0xffffffffu) - (std::int64_t(1) << 31);
       for (int di = -1; di <= 1; ++di)
         for (int dj = -1; dj <= 1; ++dj) {
-          auto it = label.find({cur.first + di, cur.second + dj});
-          if (it != label.end() && it->second < 0) {
-            it->second = n;
-            stack.push_back(it->first);
+          auto it = index.find(pack(i + di, j + dj));
+          if (it != index.end() && label[it->second] < 0) {
+            label[it->second] = n;
+            stack.push_back(it->second);
           }
         }
     }
     ++n;
   }
   std::vector<std::vector<std::size_t>> out(n);
-  for (std::size_t k = 0; k < pts.size(); ++k) out[label[key(pts[k])]].push_back(k);
+  for (std::size_t k = 0; k < pts.size(); ++k) out[label[index.at(key[k])]].push_back(k);
   return out;
 }
 

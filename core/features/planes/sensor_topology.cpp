@@ -12,12 +12,13 @@
 namespace plumb::planes_detail {
 namespace {
 
+/// Grid of every scan (merged clouds keep each scan's rows/columns, told apart by scan_id).
 struct Grid {
   int rows = 0, cols = 0;
   std::vector<std::int64_t> cell;  // point index or -1
-  std::int64_t at(int r, int c) const {
+  std::int64_t at(std::size_t scan, int r, int c) const {
     if (r < 0 || c < 0 || r >= rows || c >= cols) return -1;
-    return cell[static_cast<std::size_t>(r) * cols + c];
+    return cell[(scan * rows + static_cast<std::size_t>(r)) * cols + c];
   }
 };
 
@@ -31,9 +32,10 @@ std::vector<std::uint32_t> grow(const PointCloud& cloud, const Grid& g,
   for (std::size_t k = 0; k < region.size(); ++k) {
     const auto i = region[k];
     const int r = cloud.row[i], c = cloud.column[i];
+    const std::size_t scan = cloud.hasScanId() ? cloud.scan_id[i] : 0;
     const int dr[4] = {1, -1, 0, 0}, dc[4] = {0, 0, 1, -1};
     for (int e = 0; e < 4; ++e) {
-      const auto j = g.at(r + dr[e], c + dc[e]);
+      const auto j = g.at(scan, r + dr[e], c + dc[e]);
       if (j < 0 || used[j] || stamp[j] == stamp_id) continue;
       if (std::abs(double(nf.dot(cloud.positions[j])) - d) >= t) continue;
       stamp[j] = stamp_id;
@@ -55,11 +57,19 @@ std::vector<DetectedPlane> detectSensorTopology(const PointCloud& cloud, double 
     g.rows = std::max(g.rows, cloud.row[i] + 1);
     g.cols = std::max(g.cols, cloud.column[i] + 1);
   }
-  g.cell.assign(static_cast<std::size_t>(g.rows) * g.cols, -1);
+  std::size_t scans = 1;
+  if (cloud.hasScanId())
+    for (auto id : cloud.scan_id) scans = std::max<std::size_t>(scans, id + 1u);
+  g.cell.assign(scans * g.rows * g.cols, -1);
   std::vector<std::uint32_t> free_points;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (!cloud.positions[i].allFinite() || cloud.row[i] < 0 || cloud.column[i] < 0) continue;
-    g.cell[static_cast<std::size_t>(cloud.row[i]) * g.cols + cloud.column[i]] = static_cast<std::int64_t>(i);
+    const std::size_t scan = cloud.hasScanId() ? cloud.scan_id[i] : 0;
+    auto& cell = g.cell[(scan * g.rows + cloud.row[i]) * g.cols + cloud.column[i]];
+    if (cell >= 0)
+      throw InputError("sensor-topology RANSAC: two points share row " + std::to_string(cloud.row[i]) +
+                       ", column " + std::to_string(cloud.column[i]) + " of one scan (not a scan grid)");
+    cell = static_cast<std::int64_t>(i);
     free_points.push_back(static_cast<std::uint32_t>(i));
   }
   std::vector<char> used(cloud.size(), 1);
@@ -91,7 +101,8 @@ std::vector<DetectedPlane> detectSensorTopology(const PointCloud& cloud, double 
       if (used[a]) continue;
       std::int64_t b = -1, c = -1;
       for (int attempt = 0; attempt < 20 && (b < 0 || c < 0 || b == c); ++attempt) {
-        const auto j = g.at(cloud.row[a] + off(rng), cloud.column[a] + off(rng));
+        const std::size_t scan = cloud.hasScanId() ? cloud.scan_id[a] : 0;
+        const auto j = g.at(scan, cloud.row[a] + off(rng), cloud.column[a] + off(rng));
         if (j < 0 || used[j] || j == a) continue;
         if (b < 0) b = j; else c = j;
       }

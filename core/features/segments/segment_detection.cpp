@@ -42,6 +42,8 @@ const ParamSchema<SegmentDetectionParams>& SegmentDetectionParams::schema() {
                 "collinear segments closer than this are merged", true)
           .real(&P::snap_distance, "snap-distance", "Snap distance", "m", 0, 0.5,
                 "snap to plane intersections within this distance (0: off)", true)
+          .boolean(&P::intersections_only, "intersections-only", "Edges only",
+                   "keep only segments where two planar patches meet")
           .integer(&P::seed, "seed", "Random seed", "", 0, 9007199254740992.0, "", true);
   return s;
 }
@@ -374,6 +376,7 @@ SegmentDetectionResult detectSegments(const PointCloud& cloud, const SegmentDete
   }
   for (std::size_t i = 0; i < cands.size(); ++i) {
     if (gone[i] || cands[i].s.length() < params.min_length) continue;
+    if (params.intersections_only && !cands[i].snapped) continue;
     Segment3D s = cands[i].s;
     s.a += cloud.offset;
     s.b += cloud.offset;

@@ -38,6 +38,10 @@ struct SegmentDetectionParams {
   /// Snap to the intersection of two patches when both planes are within this distance of
   /// the segment and meet at more than 20 degrees, metres, [0, 0.5] (0 = off).
   double snap_distance = 0.05;
+  /// Keep only segments where two patches meet (snapped onto their intersection): real
+  /// edges. Contour pieces along occlusion shadows, scan limits and furniture outlines on a
+  /// single patch are dropped. false = Lu et al.'s full output.
+  bool intersections_only = true;
   std::uint64_t seed = 42;  ///< (the detector is deterministic; kept for API uniformity)
   static const ParamSchema<SegmentDetectionParams>& schema();
 };

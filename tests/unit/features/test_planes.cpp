@@ -137,6 +137,7 @@ TEST(Planes, SensorTopologyOnAnOrganizedScan) {
     }
   PlaneExtractionParams p;
   p.min_inliers = 200;
+  p.detector = PlaneDetector::SensorTopology;
   const auto r = extractPlanes(cloud, p);
   EXPECT_EQ(r.detector_used, PlaneDetector::SensorTopology);
   ASSERT_GE(r.planes.size(), 2u);
