@@ -86,6 +86,7 @@ void PointDecoder::decode(const std::uint8_t* records, std::size_t n, std::size_
   std::uint8_t* cls = cloud_.classification.data() + first;
   const bool extended = layout_.extended;
   std::array<std::int32_t, 3> lo = raw_min_, hi = raw_max_;
+  std::uint64_t bad = 0;
   const std::uint8_t* r = records;
   for (std::size_t i = 0; i < n; ++i, r += stride_) {
     const std::int32_t x = load<std::int32_t>(r), y = load<std::int32_t>(r + 4),
@@ -106,7 +107,9 @@ void PointDecoder::decode(const std::uint8_t* records, std::size_t n, std::size_
       cnt[i] = (b >> 3) & 0x07;
       cls[i] = r[15] & 0x1F;
     }
+    bad += (ret[i] == 0) | (ret[i] > cnt[i]);
   }
+  bad_returns_ += bad;
   raw_min_ = lo;
   raw_max_ = hi;
   if (layout_.gps_at >= 0) {

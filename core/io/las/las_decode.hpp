@@ -24,6 +24,8 @@ class PointDecoder {
   bool finishColors();
   /// Min/max of the decoded world coordinates (empty when no point).
   Bounds worldBounds() const;
+  /// Points whose return number is outside 1..number of returns (checklist item 10).
+  std::uint64_t badReturns() const { return bad_returns_; }
 
  private:
   PointLayout layout_;
@@ -36,6 +38,7 @@ class PointDecoder {
   PointCloud& cloud_;
   std::array<std::int32_t, 3> raw_min_, raw_max_;
   std::uint16_t color_max_ = 0;
+  std::uint64_t bad_returns_ = 0;
   ScalarField* angle_ = nullptr;
   ScalarField* user_ = nullptr;
   ScalarField* source_ = nullptr;

@@ -127,6 +127,10 @@ Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
                    "reading LAS points");
   }
   const bool rgb16 = decoder.finishColors();
+  if (decoder.badReturns() > 0)
+    warnings.push_back(std::to_string(decoder.badReturns()) +
+                       " points have a return number outside 1..number of returns (kept as "
+                       "stored)");
 
   // Header bounds are informative; a disagreement beyond scale rounding is reported.
   const Bounds actual = decoder.worldBounds();

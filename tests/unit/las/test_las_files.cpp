@@ -221,6 +221,18 @@ TEST(LasFiles, VlrsEvlrsAndCoordinateSystems) {
   EXPECT_TRUE(warned);
 }
 
+TEST(LasFiles, ReturnNumbersOutsideTheirRangeAreReported) {
+  // simple1_4: every point has return 0 of 0 (script "by return: [(0, 22600)]").
+  const Dataset d = readLas(test::sharedData("las/simple1_4.las"));
+  bool warned = false;
+  for (const auto& [k, v] : d.metadata)
+    warned |= k == "warning" && v.rfind("22600 points have a return number outside", 0) == 0;
+  EXPECT_TRUE(warned);
+  // autzen_trim's returns are all valid: no such warning.
+  for (const auto& [k, v] : readLas(test::sharedData("las/autzen_trim.las")).metadata)
+    EXPECT_EQ(v.find("return number outside"), std::string::npos) << v;
+}
+
 TEST(LasFiles, AuxiliaryFieldsOnRequest) {
   LasReadOptions o;
   o.auxiliary_fields = true;

@@ -35,7 +35,8 @@ TEST_P(LasFormat, DecodesEveryField) {
   const auto path = std::filesystem::path(PLUMB_LAS_TEST_DATA_DIR) / ("format_" + std::to_string(f) + ".las");
   const Dataset d = readLas(path, o);
   EXPECT_EQ(meta(d, "point format"), std::to_string(f));
-  EXPECT_EQ(meta(d, "LAS version"), f <= 3 ? "1.2" : (f <= 5 ? "1.3" : "1.4"));
+  const char* version = f == 0 ? "1.0" : f == 1 ? "1.1" : f <= 3 ? "1.2" : f <= 5 ? "1.3" : "1.4";
+  EXPECT_EQ(meta(d, "LAS version"), version);
   const PointCloud& c = d.scans[0].cloud;
   ASSERT_EQ(c.size(), 3u);
   const bool gps = f != 0 && f != 2, rgb = f == 2 || f == 3 || f == 5 || f == 7 || f == 8 || f == 10;

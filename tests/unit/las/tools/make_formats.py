@@ -9,7 +9,8 @@ Each file holds 3 points, i = 0, 1, 2:
   intensity 100 + i; return number i + 1 of 3; class 2 + i (PDRF 6-10: 40 + i, > 31)
   user data 7, point source id 300 + i; scan angle rank -5 (0-5) / -500 * 0.006 deg (6-10)
   GPS time 1000.5 + i; RGB = (256 * (10 + i), 256 * 20, 256 * 30); NIR 777
-Versions: 1.2 for PDRF 0-3, 1.3 for 4-5, 1.4 for 6-10 (64-bit counts, WKT bit set).
+Versions: 1.0 for PDRF 0, 1.1 for 1, 1.2 for 2-3, 1.3 for 4-5, 1.4 for 6-10 (64-bit
+counts, WKT bit set), so every version 1.0-1.4 is read too.
 """
 import os
 import struct
@@ -43,8 +44,8 @@ def record(fmt, i):
 
 
 def header(fmt):
-    minor = 2 if fmt <= 3 else (3 if fmt <= 5 else 4)
-    size = {2: 227, 3: 235, 4: 375}[minor]
+    minor = min(fmt, 2) if fmt <= 3 else (3 if fmt <= 5 else 4)
+    size = {0: 227, 1: 227, 2: 227, 3: 235, 4: 375}[minor]
     h = bytearray(size)
     h[0:4] = b"LASF"
     struct.pack_into("<H", h, 6, 0x10 if fmt >= 6 else 0)
