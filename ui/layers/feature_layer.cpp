@@ -28,6 +28,7 @@ struct CellBuilder {
   explicit CellBuilder(const Eigen::Vector3d& o) : local_origin(o) {
     colors->SetNumberOfComponents(3);
     colors->SetName("colors");
+    feature->SetName("feature");
   }
   vtkIdType point(const Eigen::Vector3d& p) {
     const Eigen::Vector3d q = p - local_origin;

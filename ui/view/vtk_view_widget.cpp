@@ -154,6 +154,12 @@ void VtkViewWidget::paintGL() {
   const int* last = render_window_->GetRenderFramebuffer()->GetLastSize();
   render_window_->BlitDisplayFramebuffer(0, 0, 0, last[0], last[1], 0, 0, dw, dh,
                                          GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  // Translucent geometry leaves alpha < 1 in VTK's buffer; Qt would then blend the widget
+  // with the window behind it. The view is opaque: force alpha to 1.
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+  state->vtkglClearColor(0.0, 0.0, 0.0, 1.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->Pop();
 }
 

@@ -1,0 +1,252 @@
+// GUI tests of the Plumb desktop application: open files through the main window, check the
+// layer tree and properties, grab the framebuffer and check the image shows the layers in
+// their known colours. Screenshots are saved under <build>/test-artifacts/gui_app/.
+#include <QApplication>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTreeWidget>
+
+#include <vtkProp.h>
+
+#include <fstream>
+
+#include "support/test_support.hpp"
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/feature_layer.hpp"
+#include "ui/layers/model_layer.hpp"
+#include "ui/layers/scan_layer.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/main_window.hpp"
+#include "ui/panels/layer_tree_panel.hpp"
+#include "ui/panels/log_panel.hpp"
+#include "ui/panels/properties_panel.hpp"
+#include "ui/tasks/task_manager.hpp"
+#include "ui/view/screenshot.hpp"
+#include "ui/view/standard_view.hpp"
+#include "ui/view/surface_format.hpp"
+#include "ui/view/vtk_view_widget.hpp"
+
+using namespace plumb;
+using namespace plumb::ui;
+
+namespace {
+
+/// Pixels of `image` within `tolerance` (per channel) of `color`.
+int countColor(const QImage& image, QColor color, int tolerance = 8) {
+  int n = 0;
+  const QImage img = image.convertToFormat(QImage::Format_RGB32);
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x) {
+      const QColor c = img.pixelColor(x, y);
+      if (std::abs(c.red() - color.red()) <= tolerance &&
+          std::abs(c.green() - color.green()) <= tolerance &&
+          std::abs(c.blue() - color.blue()) <= tolerance)
+        ++n;
+    }
+  return n;
+}
+
+/// Pixels that are not part of the (grey-blue) background gradient: saturated or bright.
+int countNonBackground(const QImage& image) {
+  int n = 0;
+  const QImage img = image.convertToFormat(QImage::Format_RGB32);
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x) {
+      const QColor c = img.pixelColor(x, y);
+      if (c.saturation() > 90 || c.value() > 140) ++n;
+    }
+  return n;
+}
+
+/// An ASCII PLY of a 20 m x 20 m grid of red points in the plane z = 0 (test input).
+std::filesystem::path writeRedGridPly(const std::filesystem::path& dir) {
+  const auto path = dir / "red_grid.ply";
+  std::ofstream out(path);
+  const int n = 101;
+  out << "ply\nformat ascii 1.0\nelement vertex " << n * n
+      << "\nproperty float x\nproperty float y\nproperty float z\n"
+         "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) out << i * 0.2 << " " << j * 0.2 << " 0 255 0 0\n";
+  return path;
+}
+
+}  // namespace
+
+class GuiAppTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void init() {
+    window_ = std::make_unique<MainWindow>();
+    window_->resize(1100, 800);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+  }
+  void cleanup() { window_.reset(); }
+
+  void opensRealE57AndShowsIt() {
+    AppContext& app = window_->context();
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    window_->openFiles({QString::fromStdString(test::sharedData("e57/bunnyFloat.e57").string())});
+    QVERIFY(idle.wait(30000));
+    QCOMPARE(app.log.errorCount(), 0);
+    QCOMPARE(app.scene.layers().size(), std::size_t{1});
+    auto* dataset = dynamic_cast<DatasetLayer*>(app.scene.layers()[0].get());
+    QVERIFY(dataset);
+    QCOMPARE(dataset->scans().size(), std::size_t{1});
+    // shared/data/README.md: the libe57.org bunny has 30,571 points.
+    QCOMPARE(dataset->dataset().pointCount(), std::size_t{30571});
+    // Layer tree: the dataset row with its scan row below, both checked.
+    QTreeWidgetItem* row = app.layers.itemOf(dataset);
+    QVERIFY(row);
+    QCOMPARE(row->text(0), QString("bunnyFloat.e57"));
+    QCOMPARE(row->childCount(), 1);
+    QCOMPARE(row->checkState(0), Qt::Checked);
+
+    const QImage image = grabView(app.view);
+    saveScreenshot(app.view, artefact("bunny.png"));
+    QVERIFY(image.width() > 100 && image.height() > 100);
+    // No RGB in the bunny: coloured by elevation (viridis), far from the grey background.
+    const int drawn = countNonBackground(image);
+    QVERIFY2(drawn > image.width() * image.height() / 100, qPrintable(QString::number(drawn)));
+
+    // Hiding the dataset through the tree leaves only background.
+    row->setCheckState(0, Qt::Unchecked);
+    QVERIFY(!dataset->visible());
+    QCOMPARE(countNonBackground(grabView(app.view)), 0);
+  }
+
+  void colorsPointsByRgbAndScan() {
+    AppContext& app = window_->context();
+    const auto dir = test::scratchDir("gui_app_rgb");
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    window_->openFiles({QString::fromStdString(writeRedGridPly(dir).string())});
+    QVERIFY(idle.wait(30000));
+    QCOMPARE(app.log.errorCount(), 0);
+    QCOMPARE(app.scene.layers().size(), std::size_t{1});
+    applyStandardView(app.view.renderer(), StandardView::Top);
+    QImage image = grabView(app.view);
+    saveScreenshot(app.view, artefact("red_grid_rgb.png"));
+    const int red = countColor(image, QColor(255, 0, 0));
+    QVERIFY2(red > 2000, qPrintable(QString::number(red)));
+
+    // Colour by scan: the first category colour replaces red.
+    auto* dataset = static_cast<DatasetLayer*>(app.scene.layers()[0].get());
+    PointStyle style = dataset->style();
+    style.mode = PointColorMode::Scan;
+    dataset->setStyle(style);
+    image = grabView(app.view);
+    saveScreenshot(app.view, artefact("red_grid_scan.png"));
+    const Rgb c = categoryColor(0);
+    QCOMPARE(countColor(image, QColor(255, 0, 0)), 0);
+    QVERIFY(countColor(image, QColor(c[0], c[1], c[2])) > 2000);
+  }
+
+  void levelOfDetailShowsTheSubsetWhileMoving() {
+    AppContext& app = window_->context();
+    // 200,000 points with a 10,000 point budget: the reduced actor draws 10,000.
+    PointCloud cloud;
+    for (int i = 0; i < 200000; ++i)
+      cloud.positions.emplace_back(static_cast<float>(i % 500) * 0.04f,
+                                   static_cast<float>(i / 500) * 0.05f, 0.0f);
+    auto data = std::make_shared<const Dataset>(Dataset::fromCloud(std::move(cloud)));
+    auto layer = std::make_unique<DatasetLayer>(data, Eigen::Vector3d::Zero(), 10000);
+    ScanLayer* scan = layer->scans().at(0);
+    QCOMPARE(scan->lodPointCount(), std::size_t{10000});
+    auto props = scan->props();
+    QCOMPARE(props.size(), std::size_t{2});
+    QVERIFY(props[0]->GetVisibility() && !props[1]->GetVisibility());
+    scan->setReducedDetail(true);
+    QVERIFY(!props[0]->GetVisibility() && props[1]->GetVisibility());
+    scan->setReducedDetail(false);
+    QVERIFY(props[0]->GetVisibility() && !props[1]->GetVisibility());
+    (void)app;
+  }
+
+  void featureOverlayIsDrawnAndPicked() {
+    AppContext& app = window_->context();
+    auto features = std::make_shared<FeatureSet>();
+    PlanarPolygon wall;  // a 10 m x 6 m vertical wall in the plane y = 0
+    wall.normal = Eigen::Vector3d::UnitY();
+    wall.origin = Eigen::Vector3d::Zero();
+    wall.u_axis = Eigen::Vector3d::UnitX();
+    wall.v_axis = Eigen::Vector3d::UnitZ();
+    wall.rings = {{{0, 0}, {10, 0}, {10, 6}, {0, 6}}};
+    wall.area = 60.0;
+    wall.inlier_count = 1234;
+    features->planes.push_back(wall);
+    Opening window;
+    window.corners = {Eigen::Vector3d(2, -0.01, 1), Eigen::Vector3d(4, -0.01, 1),
+                      Eigen::Vector3d(4, -0.01, 3), Eigen::Vector3d(2, -0.01, 3)};
+    window.facade = 0;
+    features->openings.push_back(window);
+    app.scene.addFeatures("features", features);
+    QCOMPARE(app.layers.topLevelItemCount(), 1);
+    applyStandardView(app.view.renderer(), StandardView::Front);
+    const QImage image = grabView(app.view);
+    saveScreenshot(app.view, artefact("features_front.png"));
+    QVERIFY(countColor(image, QColor(255, 64, 200), 12) > 50);  // the opening's rectangle
+
+    // A click in the middle of the view hits the wall (x = 5 m is right of the window).
+    const int w = image.width(), h = image.height();
+    auto hit = app.scene.pick(w / 2 + w / 10, h / 2);
+    QVERIFY(hit.has_value());
+    QCOMPARE(hit->rows.at(0).second, QString("Plane 0"));
+    // Through the view's click signal, the properties panel shows the feature.
+    emit app.view.clicked(w / 2 + w / 10, h / 2);
+    QCOMPARE(app.properties.rows().at(0).second, QString("Plane 0"));
+  }
+
+  void modelIsShadedWithEdgesAndTransparency() {
+    AppContext& app = window_->context();
+    auto model = std::make_shared<BimModel>();
+    // A 4 m cube (12 triangles), element type IfcWall.
+    for (int i = 0; i < 8; ++i)
+      model->mesh.vertices.emplace_back((i & 1) * 4.0, ((i >> 1) & 1) * 4.0, ((i >> 2) & 1) * 4.0);
+    model->mesh.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                             {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+    model->elements.push_back({"IfcWall", "wall", ""});
+    model->triangle_element.assign(12, 0);
+    ModelLayer& layer = app.scene.addModel(model);
+    resetCamera(app.view.renderer());
+    const QImage opaque = grabView(app.view);
+    saveScreenshot(app.view, artefact("model_cube.png"));
+    QVERIFY(countNonBackground(opaque) > opaque.width() * opaque.height() / 50);
+    layer.setStyle({true, 0.3});
+    const QImage faint = grabView(app.view);
+    saveScreenshot(app.view, artefact("model_cube_transparent_edges.png"));
+    QVERIFY(countNonBackground(faint) < countNonBackground(opaque));
+  }
+
+  void loadErrorIsLoggedWithTheFileName() {
+    AppContext& app = window_->context();
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    QSignalSpy logged(&app.log, &LogPanel::logged);
+    window_->openFiles({"/nonexistent/plumb-missing.las"});
+    QVERIFY(idle.wait(30000));
+    QCOMPARE(app.log.errorCount(), 1);
+    QVERIFY(app.scene.layers().empty());
+    bool named = false;
+    for (const auto& args : logged)
+      named |= args.at(1).toString().contains("plumb-missing.las");
+    QVERIFY(named);
+  }
+
+ private:
+  QString artefact(const QString& name) {
+    static const auto dir = test::scratchDir("gui_app");
+    return QString::fromStdString((dir / name.toStdString()).string());
+  }
+  std::unique_ptr<MainWindow> window_;
+};
+
+int main(int argc, char** argv) {
+  setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  QCoreApplication::setOrganizationName("PlumbTests");
+  GuiAppTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_gui_app.moc"
