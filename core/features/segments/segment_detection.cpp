@@ -216,8 +216,8 @@ std::vector<Line2> patchLines(const PointCloud& cloud, const Patch& patch, const
     const double off = offs[q];
     const Eigen::Vector2d base = mm + off * out;
     Line2 line;
-    line.a = base + (t0 - 0.5) * px * d;
-    line.b = base + (t1 + 0.5) * px * d;
+    line.a = base + t0 * px * d;
+    line.b = base + t1 * px * d;
     line.support = double(offs.size());
     lines.push_back(line);
   }
@@ -231,32 +231,46 @@ double lineDistance(const Segment3D& s, const Eigen::Vector3d& p) {
   return (r - r.dot(d) * d).norm();
 }
 
-/// Extends a snapped segment along its line over the patch points lying next to the line,
-/// as long as consecutive points leave no gap wider than 3 typical spacings (contour pieces
-/// stop short of corners, where pixel directions are mixed).
-void extendAlongPoints(const PointCloud& cloud, const std::vector<std::uint32_t>& points, Segment3D& s) {
+/// Extent [lo, hi] (along s, from s.a) over which `points` lie next to the line of s, walking
+/// out from the segment's middle while consecutive points leave no gap wider than 3 typical
+/// spacings. Returns false when no point is near the middle.
+bool extentAlongPoints(const PointCloud& cloud, const std::vector<std::uint32_t>& points,
+                       const Segment3D& s, double& lo_t, double& hi_t) {
   const Eigen::Vector3d d = s.direction();
   const double len = s.length();
   std::vector<double> t;
-  double near = 0.03;
+  const double near = 0.03;
   for (auto i : points) {
     const Eigen::Vector3d r = cloud.positions[i].cast<double>() - s.a;
     const double along = r.dot(d);
     if ((r - along * d).squaredNorm() < near * near) t.push_back(along);
   }
-  if (t.size() < 10) return;
+  if (t.size() < 10) return false;
   std::sort(t.begin(), t.end());
   const double gap = std::max(0.05, 3.0 * len / double(t.size()));
-  // Start inside the current extent, walk outwards both ways.
   auto mid = std::lower_bound(t.begin(), t.end(), 0.5 * len) - t.begin();
-  if (mid >= static_cast<long>(t.size())) return;
+  if (mid >= static_cast<long>(t.size()) || std::abs(t[mid] - 0.5 * len) > gap) return false;
   std::size_t lo = mid, hi = mid;
   while (lo > 0 && t[lo] - t[lo - 1] < gap) --lo;
   while (hi + 1 < t.size() && t[hi + 1] - t[hi] < gap) ++hi;
-  const double a = std::min(0.0, t[lo]), b = std::max(len, t[hi]);
-  const Eigen::Vector3d o = s.a;
-  s.a = o + a * d;
-  s.b = o + b * d;
+  lo_t = t[lo];
+  hi_t = t[hi];
+  return true;
+}
+
+/// Extends a snapped segment along the intersection over the stretch where BOTH patches have
+/// points next to the line (contour pieces stop short of corners, where pixel directions are
+/// mixed; one patch alone would extend a reveal edge over a whole wall).
+void extendAlongPoints(const PointCloud& cloud, const std::vector<std::uint32_t>& a,
+                       const std::vector<std::uint32_t>& b, Segment3D& s) {
+  double a0, a1, b0, b1;
+  if (!extentAlongPoints(cloud, a, s, a0, a1) || !extentAlongPoints(cloud, b, s, b0, b1)) return;
+  const double len = s.length();
+  const double lo = std::max(a0, b0), hi = std::min(a1, b1);
+  if (hi - lo < 0.5 * len) return;  // the two stretches do not agree: keep the contour extent
+  const Eigen::Vector3d d = s.direction(), o = s.a;
+  s.a = o + lo * d;
+  s.b = o + hi * d;
 }
 
 }  // namespace
@@ -307,6 +321,7 @@ SegmentDetectionResult detectSegments(const PointCloud& cloud, const SegmentDete
       c.s.a = A.to3d(l.a);
       c.s.b = A.to3d(l.b);
       c.s.support = l.support;
+      int partner = -1;
       if (params.snap_distance > 0) {
         double best = params.snap_distance;
         for (int nbp : patches[kept[k]].neighbours) {
@@ -324,13 +339,20 @@ SegmentDetectionResult detectSegments(const PointCloud& cloud, const SegmentDete
           M.row(1) = B.normal.transpose();
           M.row(2) = dir.transpose();
           const Eigen::Vector3d p0 = M.colPivHouseholderQr().solve(Eigen::Vector3d(A.offset, B.offset, 0.0));
+          Segment3D snapped = c.s;
+          snapped.a = p0 + (c.s.a - p0).dot(dir) * dir;
+          snapped.b = p0 + (c.s.b - p0).dot(dir) * dir;
+          // B must really border the segment (points next to it), not just its infinite plane.
+          double b0, b1;
+          if (!extentAlongPoints(cloud, patches[nbp].points, snapped, b0, b1)) continue;
           best = worst;
-          c.s.a = p0 + (c.s.a - p0).dot(dir) * dir;
-          c.s.b = p0 + (c.s.b - p0).dot(dir) * dir;
+          c.s.a = snapped.a;
+          c.s.b = snapped.b;
           c.snapped = true;
+          partner = nbp;
         }
       }
-      if (c.snapped) extendAlongPoints(cloud, patches[kept[k]].points, c.s);
+      if (c.snapped) extendAlongPoints(cloud, patches[kept[k]].points, patches[partner].points, c.s);
       if (c.s.length() > 0) cands.push_back(c);
     }
   }
