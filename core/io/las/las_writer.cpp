@@ -110,7 +110,6 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
     ++vlr_count;
   };
   const std::string& crs = data.coordinate_system;
-  bool wrote_wkt = false;
   if (!crs.empty()) {
     if (crs.rfind("EPSG:", 0) == 0 && crs.find('[') == std::string::npos) {
       int code = 0;
@@ -126,7 +125,6 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
       std::vector<std::uint8_t> wkt(crs.begin(), crs.end());
       wkt.push_back(0);
       addVlr("LASF_Projection", 2112, "OGC coordinate system WKT", wkt);
-      wrote_wkt = true;
     }
   }
   if (!extras.empty()) {
@@ -152,8 +150,10 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
   bool adjusted_time = false;
   for (const auto& [k, v] : data.metadata)
     if (k == "GPS time" && v == "adjusted standard GPS time") adjusted_time = true;
+  // Bit 4 (WKT) exists from 1.4 on, where format 7 requires it; 1.2 readers find the WKT
+  // VLR by its record id.
   h.global_encoding = static_cast<std::uint16_t>((has_time && adjusted_time ? 1 : 0) |
-                                                 (v14 || wrote_wkt ? 0x10 : 0));
+                                                 (v14 ? 0x10 : 0));
   {
     const std::time_t now = std::time(nullptr);
     std::tm tm{};
