@@ -13,6 +13,7 @@ using Action = std::function<int()>;
 // void addInfoCommand(CLI::App& app, Action& action);   (one declaration per subcommand)
 void addInfoCommand(CLI::App& app, Action& action);
 void addConvertCommand(CLI::App& app, Action& action);
+void addFeaturesCommand(CLI::App& app, Action& action);
 void addSimulateCommand(CLI::App& app, Action& action);
 
 }  // namespace plumb::cli

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   // One line per subcommand (each defined in its own cli/<name>_command.cpp).
   plumb::cli::addInfoCommand(app, action);
   plumb::cli::addConvertCommand(app, action);
+  plumb::cli::addFeaturesCommand(app, action);
   plumb::cli::addSimulateCommand(app, action);
   try {
     app.parse(argc, argv);
