@@ -15,5 +15,6 @@ void addInfoCommand(CLI::App& app, Action& action);
 void addConvertCommand(CLI::App& app, Action& action);
 void addFeaturesCommand(CLI::App& app, Action& action);
 void addSimulateCommand(CLI::App& app, Action& action);
+void addRegisterCommand(CLI::App& app, Action& action);
 
 }  // namespace plumb::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   plumb::cli::addConvertCommand(app, action);
   plumb::cli::addFeaturesCommand(app, action);
   plumb::cli::addSimulateCommand(app, action);
+  plumb::cli::addRegisterCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

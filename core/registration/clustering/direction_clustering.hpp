@@ -15,8 +15,9 @@ namespace plumb {
 struct DirectionClusteringParams {
   /// Angle tolerance theta, degrees, (0, 45]. Default 10: walls of a building meet at >= 30°.
   double angle_tolerance_deg = 10.0;
-  /// Number of clusters seeded, [1, 8]. The papers use 3 (two wall directions + horizontal).
-  int max_clusters = 3;
+  /// Number of clusters seeded, [1, 8]. The papers use 3 (two wall directions + horizontal);
+  /// 6 leaves room for ramps or sloped ceilings without losing a wall direction.
+  int max_clusters = 6;
   static const ParamSchema<DirectionClusteringParams>& schema();
 };
 

@@ -40,8 +40,9 @@ std::vector<RotationCandidate> enumerateRotations(const std::vector<Eigen::Vecto
   // The two heaviest mutually non-parallel source directions.
   const int a = 0;
   int b = -1;
+  const double cos_frame = std::cos(p.min_frame_angle_deg * M_PI / 180.0);
   for (std::size_t i = 1; i < source.size() && b < 0; ++i)
-    if (std::abs(source[0].normalized().dot(source[i].normalized())) < cos_tol) b = int(i);
+    if (std::abs(source[0].normalized().dot(source[i].normalized())) < cos_frame) b = int(i);
   if (b < 0) return out;
   const double angle_s = source[a].normalized().dot(source[b].normalized());
   const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
@@ -70,7 +71,7 @@ std::vector<RotationCandidate> enumerateRotations(const std::vector<Eigen::Vecto
           c.rotation = *r;
           c.target_of_source.assign(source.size(), -1);
           c.sign_of_source.assign(source.size(), 0);
-          bool consistent = true;
+          std::size_t matched = 0;
           for (std::size_t s = 0; s < source.size(); ++s) {
             const Eigen::Vector3d m = (*r) * source[s].normalized();
             int best = -1;
@@ -83,13 +84,14 @@ std::vector<RotationCandidate> enumerateRotations(const std::vector<Eigen::Vecto
               }
             }
             c.target_of_source[s] = best;
-            if (best >= 0) c.sign_of_source[s] = m.dot(target[best]) >= 0 ? 1 : -1;
-            // Directions 0 and 1 define R; a third heavy one should also be matched when the
-            // target has as many directions.
-            if (best < 0 && s < 3 && target.size() >= std::min<std::size_t>(3, source.size()))
-              consistent = false;
+            if (best >= 0) {
+              c.sign_of_source[s] = m.dot(target[best]) >= 0 ? 1 : -1;
+              ++matched;
+            }
           }
-          if (!consistent) continue;
+          // Directions a and b define R; a third one must also be matched when both sides
+          // have three.
+          if (matched < std::min<std::size_t>({3, source.size(), target.size()})) continue;
           bool duplicate = false;
           for (const auto& o : out) {
             const Eigen::AngleAxisd d(o.rotation.transpose() * c.rotation);

@@ -26,6 +26,9 @@ struct RotationEnumerationParams {
   bool up_axis_known = true;  ///< both datasets are Z-up (levelled scanners, BIM): keep Z up
   bool allow_up_down_flip = false;  ///< also try R z = -z (up axis sign unknown)
   double max_tilt_deg = 10.0;  ///< deg, [0, 90]: with up_axis_known, max angle between R z and z
+  /// The two directions defining a frame must be at least this far apart, deg, [5, 90]
+  /// (a 10° ramp next to the floor makes a badly conditioned frame).
+  double min_frame_angle_deg = 30.0;
 };
 
 struct RotationCandidate {
@@ -36,9 +39,10 @@ struct RotationCandidate {
   std::string label;
 };
 
-/// Every rotation mapping the two heaviest non-parallel source directions onto an ordered pair
-/// of target directions, with both signs each, keeping those whose other directions also find
-/// a target within tolerance and (with up_axis_known) that keep Z up. Directions are unsigned
+/// Every rotation mapping the heaviest source direction and the heaviest one at least
+/// min_frame_angle_deg from it onto an ordered pair of target directions, with both signs each,
+/// keeping those under which at least min(3, |source|, |target|) source directions find a
+/// target within tolerance and (with up_axis_known) that keep Z up. Directions are unsigned
 /// and given heaviest first. Duplicate rotations (closer than tolerance/4) are merged.
 std::vector<RotationCandidate> enumerateRotations(const std::vector<Eigen::Vector3d>& source,
                                                   const std::vector<Eigen::Vector3d>& target,

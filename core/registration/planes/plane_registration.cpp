@@ -239,7 +239,7 @@ GlobalRegistrationResult registerPlanes(const std::vector<PlanarPolygon>& source
   }
   const auto cs = clusterPlaneNormals(collect(src), p.clustering);
   const auto ct = clusterPlaneNormals(collect(tgt), p.clustering);
-  if (cs.clusters.size() < 3 || ct.clusters.size() < 3) {
+  if (cs.clusters.size() < 3 || ct.clusters.size() < 3) {  // need 3 independent normals
     r.status = RegistrationStatus::TooFewFeatures;
     r.message = "planes: the polygons span fewer than three normal directions (source " +
                 std::to_string(cs.clusters.size()) + ", target " +
@@ -259,17 +259,29 @@ GlobalRegistrationResult registerPlanes(const std::vector<PlanarPolygon>& source
     reportProgress(progress, 0.05 + 0.85 * double(ri) / std::max<std::size_t>(1, rotations.size()),
                    "planes: scoring hypotheses");
     const auto& rot = rotations[ri];
-    // Three associations: source clusters 0..2 with their target cluster.
-    std::vector<std::vector<OffsetMode>> modes;
+    // Three associations with independent directions: the heaviest matched cluster, the
+    // heaviest one at least 30° from it, and the heaviest one best out of their plane.
+    std::vector<int> chosen;
     std::vector<Eigen::Vector3d> dirs;
-    for (std::size_t k = 0; k < cs.clusters.size() && modes.size() < 3; ++k) {
-      const int m = rot.target_of_source[k];
-      if (m < 0) continue;
+    for (std::size_t k = 0; k < cs.clusters.size(); ++k) {
+      if (rot.target_of_source[k] < 0) continue;
       const Eigen::Vector3d c = rot.rotation * cs.clusters[k].direction;
-      modes.push_back(offsetModes(src, cs.clusters[k].members, tgt, ct.clusters[m].members,
-                                  rot.rotation, c, p.distance_threshold,
-                                  p.modes_per_association, p.oriented_normals));
-      dirs.push_back(c);
+      if (chosen.size() == 1 && std::abs(c.dot(dirs[0])) > std::cos(M_PI / 6)) continue;
+      if (chosen.size() == 2 &&
+          std::abs(c.dot(dirs[0].cross(dirs[1]).normalized())) < std::sin(M_PI / 6))
+        continue;
+      if (chosen.size() < 3) {
+        chosen.push_back(int(k));
+        dirs.push_back(c);
+      }
+    }
+    std::vector<std::vector<OffsetMode>> modes;
+    for (std::size_t q = 0; q < chosen.size(); ++q) {
+      const int k = chosen[q];
+      modes.push_back(offsetModes(src, cs.clusters[k].members, tgt,
+                                  ct.clusters[rot.target_of_source[k]].members, rot.rotation,
+                                  dirs[q], p.distance_threshold, p.modes_per_association,
+                                  p.oriented_normals));
     }
     if (modes.size() < 3) continue;
     for (const auto& m0 : modes[0])
