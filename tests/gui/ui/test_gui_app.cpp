@@ -2,6 +2,10 @@
 // layer tree and properties, grab the framebuffer and check the image shows the layers in
 // their known colours. Screenshots are saved under <build>/test-artifacts/gui_app/.
 #include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QSpinBox>
 #include <QSignalSpy>
 #include <QTest>
 #include <QTreeWidget>
@@ -19,6 +23,7 @@
 #include "ui/main_window.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
 #include "ui/panels/log_panel.hpp"
+#include "ui/panels/param_panel.hpp"
 #include "ui/panels/properties_panel.hpp"
 #include "ui/tasks/task_manager.hpp"
 #include "ui/view/screenshot.hpp"
@@ -70,6 +75,25 @@ std::filesystem::path writeRedGridPly(const std::filesystem::path& dir) {
     for (int j = 0; j < n; ++j) out << i * 0.2 << " " << j * 0.2 << " 0 255 0 0\n";
   return path;
 }
+
+enum class Method { Auto, Planes, Icp };
+struct DemoParams {
+  double threshold = 0.05;
+  int iterations = 30;
+  bool refine = true;
+  Method method = Method::Planes;
+  static const ParamSchema<DemoParams>& schema() {
+    static const auto s = ParamSchema<DemoParams>("demo")
+                              .real(&DemoParams::threshold, "threshold", "Threshold", "m", 0.001,
+                                    1.0, "distance threshold")
+                              .integer(&DemoParams::iterations, "iterations", "Iterations", "",
+                                       1, 500, "iterations", true)
+                              .boolean(&DemoParams::refine, "refine", "Refine", "ICP refine")
+                              .choice(&DemoParams::method, "method", "Method",
+                                      {"auto", "planes", "icp"}, "method");
+    return s;
+  }
+};
 
 }  // namespace
 
@@ -217,6 +241,34 @@ class GuiAppTest : public QObject {
     const QImage faint = grabView(app.view);
     saveScreenshot(app.view, artefact("model_cube_transparent_edges.png"));
     QVERIFY(countNonBackground(faint) < countNonBackground(opaque));
+  }
+
+  void paramPanelIsGeneratedFromTheSchema() {
+    DemoParams params;
+    std::unique_ptr<ParamPanel> panel(makeParamPanel(DemoParams::schema(), params));
+    auto* threshold = qobject_cast<QDoubleSpinBox*>(panel->editor("threshold"));
+    auto* iterations = qobject_cast<QSpinBox*>(panel->editor("iterations"));
+    auto* refine = qobject_cast<QCheckBox*>(panel->editor("refine"));
+    auto* method = qobject_cast<QComboBox*>(panel->editor("method"));
+    QVERIFY(threshold && iterations && refine && method);
+    // Defaults, units, ranges and tooltips come from the schema.
+    QCOMPARE(threshold->value(), 0.05);
+    QCOMPARE(threshold->suffix(), QString(" m"));
+    QCOMPARE(threshold->maximum(), 1.0);
+    QCOMPARE(threshold->toolTip(), QString("distance threshold"));
+    QCOMPARE(iterations->value(), 30);
+    QCOMPARE(method->currentText(), QString("planes"));
+    // Edits reach the struct.
+    threshold->setValue(0.2);
+    iterations->setValue(12);
+    refine->setChecked(false);
+    method->setCurrentIndex(2);
+    QCOMPARE(params.threshold, 0.2);
+    QCOMPARE(params.iterations, 12);
+    QVERIFY(!params.refine);
+    QVERIFY(params.method == Method::Icp);
+    threshold->setValue(5.0);  // clamped to the schema's range
+    QCOMPARE(params.threshold, 1.0);
   }
 
   void loadErrorIsLoggedWithTheFileName() {
