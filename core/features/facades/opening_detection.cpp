@@ -57,6 +57,30 @@ double overlap(const Rect& a, const Rect& b) {
   return u > 0 ? i.area() / u : 0.0;
 }
 
+/// Convex hull (Andrew's monotone chain), counter-clockwise. Doors reach the floor: they are
+/// notches of the wall's outer ring, not holes, but lie inside its convex hull.
+std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> p) {
+  std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  if (p.size() < 3) return p;
+  std::vector<Eigen::Vector2d> h(2 * p.size());
+  std::size_t k = 0;
+  auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+  };
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross(h[k - 2], h[k - 1], p[i - 1]) <= 0) --k;
+    h[k++] = p[i - 1];
+  }
+  h.resize(k - 1);
+  return h;
+}
+
 /// Rasterised outer ring for fast inside tests (cell 5 cm).
 struct RingMask {
   double u0 = 0, v0 = 0, cell = 0.05;
@@ -108,6 +132,14 @@ Rect snapToWall(const Rect& r, const std::vector<Eigen::Vector2d>& wall, double 
   auto side = [](double evidence, double wall) {
     return std::abs(wall - evidence) < 0.15 ? 0.5 * (evidence + wall) : wall;
   };
+  if (bottom == -1e300) {
+    // No wall below the opening: a door. It reaches down to where the wall beside it ends
+    // (rays through a door's lower part hit the floor closer than d_min and give no evidence).
+    double vmin = 1e300;
+    for (const auto& p : wall)
+      if ((p.x() < r.u0 && p.x() > r.u0 - 0.3) || (p.x() > r.u1 && p.x() < r.u1 + 0.3)) vmin = std::min(vmin, p.y());
+    if (vmin < r.v0 - 0.05) out.v0 = vmin;
+  }
   if (left > -1e300 && left < r.u0) out.u0 = side(r.u0, left);
   if (right < 1e300 && right > r.u1) out.u1 = side(r.u1, right);
   if (bottom > -1e300 && bottom < r.v0) out.v0 = side(r.v0, bottom);
@@ -237,7 +269,7 @@ OpeningDetectionResult detectOpenings(const PointCloud& cloud,
   if (want_rays && has_origins && nf > 0) {
     result.ray_tracing_ran = true;
     std::vector<RingMask> masks;
-    for (auto fi : result.facades) masks.emplace_back(planes[fi].rings[0]);
+    for (auto fi : result.facades) masks.emplace_back(convexHull(planes[fi].rings[0]));
     // Per point: nearest façade crossed by O->P with |P - hit| > d_min inside the outer ring.
     std::vector<int> hit_facade(cloud.size(), -1);
     std::vector<Eigen::Vector2d> hit_uv(cloud.size());
@@ -284,6 +316,7 @@ OpeningDetectionResult detectOpenings(const PointCloud& cloud,
     for (auto i : f.inliers)
       if (i < cloud.size()) wall.push_back(f.to2d(cloud.world(i)));
     std::vector<Rect> rects;
+    const std::size_t first_opening = result.openings.size();
     const auto reveal = evidence[k].empty() ? std::vector<Eigen::Vector2d>{} : revealPoints(cloud, f, view[k]);
     // Ray-traced openings: components -> vertical bounding rectangles -> snapped to the wall.
     for (const auto& comp : gridComponents(evidence[k], params.link_distance)) {
@@ -308,8 +341,25 @@ OpeningDetectionResult detectOpenings(const PointCloud& cloud,
           r.u1 = std::max(r.u1, p.x()); r.v1 = std::max(r.v1, p.y());
         }
         if (!sizeOk(r)) continue;
+        // A hole overlapping a ray-traced opening completes it where the evidence stops short
+        // (indoor rays leaving upwards hit nothing): such sides move out to the hole's side.
         bool dup = false;
-        for (const auto& q : rects) dup = dup || overlap(q, r) > 0.3;
+        for (std::size_t q = 0; q < rects.size(); ++q) {
+          if (overlap(rects[q], r) <= 0.1) continue;
+          dup = true;
+          Rect& x = rects[q];
+          const double gap = params.snap_distance;  // farther than the wall snap could reach
+          Rect merged = x;
+          if (r.u0 < x.u0 - gap) merged.u0 = r.u0;
+          if (r.u1 > x.u1 + gap) merged.u1 = r.u1;
+          if (r.v0 < x.v0 - gap) merged.v0 = r.v0;
+          if (r.v1 > x.v1 + gap) merged.v1 = r.v1;
+          if (merged.area() > x.area()) {
+            x = merged;
+            result.openings[first_opening + q] = makeOpening(f, x, view[k], result.facades[k],
+                                                             result.openings[first_opening + q].evidence_count);
+          }
+        }
         if (dup) continue;
         rects.push_back(r);
         result.openings.push_back(makeOpening(f, r, view[k], result.facades[k], f.rings[h].size()));

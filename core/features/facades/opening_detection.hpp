@@ -3,7 +3,8 @@
 //  1. Façade selection: polygons whose plane is vertical within `vertical_tolerance_deg` and
 //     whose area is at least `min_facade_area`.
 //  2. Ray tracing: for each point P with sensor origin O, the segment O->P is intersected with
-//     each façade plane; when the hit lies inside the façade's outer ring and |P - hit| >
+//     each façade plane; when the hit lies inside the convex hull of the façade's outer ring
+//     (doors are notches of the ring, not holes) and |P - hit| >
 //     `min_depth` (d_min), P is an interior point and the hit is evidence of an opening.
 //     Without per-point sensor origins this step cannot run: it is reported, never guessed.
 //  3. Openings: connected components of the evidence (graph edge when two hits are closer

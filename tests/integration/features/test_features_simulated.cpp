@@ -103,6 +103,39 @@ TEST(FeaturesSimulated, OutdoorMmsFacadesAndOpeningsMatchTruth) {
   EXPECT_GE(double(all_found), 0.9 * double(all_truth)) << all_found << " / " << all_truth;
 }
 
+TEST(FeaturesSimulated, IndoorOpeningsFromRaysLeavingThroughWindowsAndWallHoles) {
+  // Interior faces of the ground-floor openings, seen by the indoor stations; recall over both
+  // presets together (24 openings).
+  std::size_t all_truth = 0, all_found = 0;
+  for (const char* name : {"two-rooms", "house"}) {
+    SCOPED_TRACE(name);
+    const auto b = generateBuilding(buildingPreset(name));
+    const PointCloud cloud = test::indoorTls(b, 0.25);
+    const auto planes = extractPlanes(cloud, {});
+    const auto o = detectOpenings(cloud, planes.planes, {});
+    EXPECT_TRUE(o.ray_tracing_ran);
+    std::size_t truth_n = 0, found = 0;
+    for (const auto& t : b.truth.openings) {
+      if (t.face != "interior" || t.storey != 0) continue;
+      ++truth_n;
+      double best = 1e9;
+      for (const auto& d : o.openings) {
+        double e = 0;
+        for (int c = 0; c < 4; ++c) e = std::max(e, (d.corners[c] - t.corners[c]).norm());
+        best = std::min(best, e);
+      }
+      found += best <= 0.05;
+      if (best > 0.05) std::cout << "  missed " << t.element_type << " at " << t.corners[0].transpose() << " (" << best << " m)\n";
+    }
+    std::cout << name << " indoor openings: " << o.openings.size() << " detected, " << found << " / " << truth_n
+              << " truth matched\n";
+    all_truth += truth_n;
+    all_found += found;
+  }
+  ASSERT_GT(all_truth, 0u);
+  EXPECT_GE(double(all_found), 0.9 * double(all_truth)) << all_found << " / " << all_truth;
+}
+
 TEST(FeaturesSimulated, BimSharpEdgesAreExactlyTheTruthEdges) {
   for (const auto& name : buildingPresetNames()) {
     if (name == "big-office") continue;  // benchmark size
