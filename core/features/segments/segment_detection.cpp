@@ -235,11 +235,10 @@ double lineDistance(const Segment3D& s, const Eigen::Vector3d& p) {
 /// out from the segment's middle while consecutive points leave no gap wider than 3 typical
 /// spacings. Returns false when no point is near the middle.
 bool extentAlongPoints(const PointCloud& cloud, const std::vector<std::uint32_t>& points,
-                       const Segment3D& s, double& lo_t, double& hi_t) {
+                       const Segment3D& s, double near, double& lo_t, double& hi_t) {
   const Eigen::Vector3d d = s.direction();
   const double len = s.length();
   std::vector<double> t;
-  const double near = 0.03;
   for (auto i : points) {
     const Eigen::Vector3d r = cloud.positions[i].cast<double>() - s.a;
     const double along = r.dot(d);
@@ -262,9 +261,9 @@ bool extentAlongPoints(const PointCloud& cloud, const std::vector<std::uint32_t>
 /// points next to the line (contour pieces stop short of corners, where pixel directions are
 /// mixed; one patch alone would extend a reveal edge over a whole wall).
 void extendAlongPoints(const PointCloud& cloud, const std::vector<std::uint32_t>& a,
-                       const std::vector<std::uint32_t>& b, Segment3D& s) {
+                       const std::vector<std::uint32_t>& b, double near, Segment3D& s) {
   double a0, a1, b0, b1;
-  if (!extentAlongPoints(cloud, a, s, a0, a1) || !extentAlongPoints(cloud, b, s, b0, b1)) return;
+  if (!extentAlongPoints(cloud, a, s, near, a0, a1) || !extentAlongPoints(cloud, b, s, near, b0, b1)) return;
   const double len = s.length();
   const double lo = std::max(a0, b0), hi = std::min(a1, b1);
   if (hi - lo < 0.5 * len) return;  // the two stretches do not agree: keep the contour extent
@@ -314,6 +313,8 @@ SegmentDetectionResult detectSegments(const PointCloud& cloud, const SegmentDete
   };
   std::vector<Cand> cands;
   const double cos20 = std::cos(20.0 * M_PI / 180.0);
+  // "Next to the line": 3 cm, or more on coarse voxel grids (sparse scans).
+  const double near = std::max(0.03, 0.4 * params.voxel_size);
   for (std::size_t k = 0; k < kept.size(); ++k) {
     const auto& A = frames[k];
     for (const auto& l : lines[k]) {
@@ -344,7 +345,7 @@ SegmentDetectionResult detectSegments(const PointCloud& cloud, const SegmentDete
           snapped.b = p0 + (c.s.b - p0).dot(dir) * dir;
           // B must really border the segment (points next to it), not just its infinite plane.
           double b0, b1;
-          if (!extentAlongPoints(cloud, patches[nbp].points, snapped, b0, b1)) continue;
+          if (!extentAlongPoints(cloud, patches[nbp].points, snapped, near, b0, b1)) continue;
           best = worst;
           c.s.a = snapped.a;
           c.s.b = snapped.b;
@@ -352,7 +353,7 @@ SegmentDetectionResult detectSegments(const PointCloud& cloud, const SegmentDete
           partner = nbp;
         }
       }
-      if (c.snapped) extendAlongPoints(cloud, patches[kept[k]].points, patches[partner].points, c.s);
+      if (c.snapped) extendAlongPoints(cloud, patches[kept[k]].points, patches[partner].points, near, c.s);
       if (c.s.length() > 0) cands.push_back(c);
     }
   }
