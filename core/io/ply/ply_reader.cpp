@@ -14,6 +14,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <type_traits>
@@ -475,21 +476,21 @@ class Reader {
       return s.target == Target::Position && s.type == Type::Float64;
     });
 
-    allocateColumn(cloud.positions, n);
-    if (has_normals) allocateColumn(cloud.normals, n);
-    if (has_colors) allocateColumn(cloud.colors, n);
-    if (ii >= 0) allocateColumn(cloud.intensity, n);
-    for (auto& f : cloud.scalar_fields) allocateColumn(f.values, n);
+    // Columns are allocated (and their pages zeroed) concurrently, one task per column.
+    std::vector<std::function<void()>> allocations{[&] { allocateColumn(cloud.positions, n); }};
+    if (has_normals) allocations.emplace_back([&] { allocateColumn(cloud.normals, n); });
+    if (has_colors) allocations.emplace_back([&] { allocateColumn(cloud.colors, n); });
+    if (ii >= 0) allocations.emplace_back([&] { allocateColumn(cloud.intensity, n); });
+    for (auto& f : cloud.scalar_fields) allocations.emplace_back([&f, n] { allocateColumn(f.values, n); });
+    for (auto& v : extra_values) allocations.emplace_back([&v, n] { allocateColumn(v, n); });
+    tbb::parallel_for(std::size_t{0}, allocations.size(), [&](std::size_t k) { allocations[k](); });
     Columns c;
     c.pos = cloud.positions.empty() ? nullptr : cloud.positions[0].data();
     c.nrm = has_normals && n ? cloud.normals[0].data() : nullptr;
     c.rgb = has_colors && n ? cloud.colors[0].data() : nullptr;
     c.inten = ii >= 0 ? cloud.intensity.data() : nullptr;
     for (auto& f : cloud.scalar_fields) c.scalars.push_back(f.values.data());
-    for (auto& v : extra_values) {
-      allocateColumn(v, n);
-      c.extras.push_back(v.data());
-    }
+    for (auto& v : extra_values) c.extras.push_back(v.data());
     struct StoreExtras {  // on every exit path that returns normally
       std::vector<std::string>& names;
       std::vector<std::vector<double>>& values;

@@ -1,6 +1,7 @@
 #include "io/ply/ply_writer.hpp"
 
 #include <charconv>
+#include <cstring>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -21,6 +22,10 @@ struct OutColumn {
   std::string name;
   Type type;
   std::function<double(std::size_t)> get;
+  // Fast path (binary, no byte swap): a float or byte column read directly, element i at
+  // direct[i * direct_stride]; null when the value needs the getter.
+  const void* direct = nullptr;
+  std::size_t direct_stride = 0;
 };
 
 const char* encodingName(Encoding e) {
@@ -81,6 +86,16 @@ void writeRecords(std::ostream& out, Encoding enc, const std::vector<OutColumn>&
       buf.resize(m * stride);
       for (std::size_t c = 0; c < cols.size(); ++c) {
         char* p = buf.data() + offsets[c];
+        if (cols[c].direct && !sw && (cols[c].type == Type::Float32 || cols[c].type == Type::UInt8)) {
+          const std::size_t bytes = ply::typeSize(cols[c].type);
+          const char* src = static_cast<const char*>(cols[c].direct) + i0 * cols[c].direct_stride * bytes;
+          const std::size_t src_stride = cols[c].direct_stride * bytes;
+          if (bytes == 4)
+            for (std::size_t i = 0; i < m; ++i) std::memcpy(p + i * stride, src + i * src_stride, 4);
+          else
+            for (std::size_t i = 0; i < m; ++i) p[i * stride] = src[i * src_stride];
+          continue;
+        }
         for (std::size_t i = 0; i < m; ++i, p += stride) {
           if (sw) storeAs<true>(p, cols[c].type, cols[c].get(i0 + i));
           else storeAs<false>(p, cols[c].type, cols[c].get(i0 + i));
@@ -121,20 +136,24 @@ void writePly(const std::filesystem::path& path, const PointCloud& cloud,
     if (dbl)
       cols.push_back({axes[a], pt, [&, a, off](std::size_t i) { return off + static_cast<double>(cloud.positions[i][a]); }});
     else
-      cols.push_back({axes[a], pt, [&, a](std::size_t i) { return static_cast<double>(cloud.positions[i][a]); }});
+      cols.push_back({axes[a], pt, [&, a](std::size_t i) { return static_cast<double>(cloud.positions[i][a]); },
+                      n ? cloud.positions[0].data() + a : nullptr, 3});
   }
   if (cloud.hasNormals()) {
     const char* nn[] = {"nx", "ny", "nz"};
     for (int a = 0; a < 3; ++a)
-      cols.push_back({nn[a], Type::Float32, [&, a](std::size_t i) { return double(cloud.normals[i][a]); }});
+      cols.push_back({nn[a], Type::Float32, [&, a](std::size_t i) { return double(cloud.normals[i][a]); },
+                      n ? cloud.normals[0].data() + a : nullptr, 3});
   }
   if (cloud.hasColors()) {
     const char* cn[] = {"red", "green", "blue"};
     for (int a = 0; a < 3; ++a)
-      cols.push_back({cn[a], Type::UInt8, [&, a](std::size_t i) { return double(cloud.colors[i][a]); }});
+      cols.push_back({cn[a], Type::UInt8, [&, a](std::size_t i) { return double(cloud.colors[i][a]); },
+                      n ? cloud.colors[0].data() + a : nullptr, 3});
   }
   if (cloud.hasIntensity())
-    cols.push_back({"intensity", Type::Float32, [&](std::size_t i) { return double(cloud.intensity[i]); }});
+    cols.push_back({"intensity", Type::Float32, [&](std::size_t i) { return double(cloud.intensity[i]); },
+                    cloud.intensity.data(), 1});
   if (cloud.hasReturns()) {
     cols.push_back({"return_index", Type::UInt8, [&](std::size_t i) { return double(cloud.return_index[i]); }});
     cols.push_back({"return_count", Type::UInt8, [&](std::size_t i) { return double(cloud.return_count[i]); }});
@@ -151,7 +170,8 @@ void writePly(const std::filesystem::path& path, const PointCloud& cloud,
     cols.push_back({"scan_id", Type::UInt16, [&](std::size_t i) { return double(cloud.scan_id[i]); }});
   for (const auto& f : cloud.scalar_fields) {
     if (f.values.size() != n) continue;
-    cols.push_back({oneLine(f.name), Type::Float32, [&f](std::size_t i) { return double(f.values[i]); }});
+    cols.push_back({oneLine(f.name), Type::Float32, [&f](std::size_t i) { return double(f.values[i]); },
+                    f.values.data(), 1});
   }
   std::vector<std::string> comments;
   if (cloud.grid_rows > 0 && cloud.grid_columns > 0)
