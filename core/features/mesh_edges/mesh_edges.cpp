@@ -63,6 +63,71 @@ std::vector<std::uint32_t> weld(const TriangleMesh& mesh, double tol,
   return map;
 }
 
+using EdgeMap = std::unordered_map<std::uint64_t, std::vector<std::uint32_t>>;
+std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
+  return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+}
+
+/// T-junctions (common in exported BIM meshes): an edge with a single triangle may be split on
+/// the other side by vertices lying on it. Such edges are split at those vertices, so both
+/// sides share sub-edges and the dihedral test sees the real neighbours.
+void splitTJunctions(const std::vector<Eigen::Vector3d>& verts, EdgeMap& edge_tris, double tol) {
+  if (verts.empty()) return;
+  Bounds b;
+  for (const auto& v : verts) b.extend(v);
+  const double cell = std::max(b.diagonal() / 256.0, 1e-3);
+  auto cellOf = [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector3d q = (p - b.min) / cell;
+    return std::array<std::int64_t, 3>{std::int64_t(q.x()), std::int64_t(q.y()), std::int64_t(q.z())};
+  };
+  auto hash = [](const std::array<std::int64_t, 3>& c) {
+    return (std::uint64_t(c[0] & 0x1FFFFF) << 42) | (std::uint64_t(c[1] & 0x1FFFFF) << 21) | std::uint64_t(c[2] & 0x1FFFFF);
+  };
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid;
+  for (std::size_t i = 0; i < verts.size(); ++i) grid[hash(cellOf(verts[i]))].push_back(static_cast<std::uint32_t>(i));
+  std::vector<std::uint64_t> boundary;
+  for (const auto& [key, tris] : edge_tris)
+    if (tris.size() == 1) boundary.push_back(key);
+  std::sort(boundary.begin(), boundary.end());
+  for (auto key : boundary) {
+    const auto a = static_cast<std::uint32_t>(key >> 32), c = static_cast<std::uint32_t>(key & 0xffffffffu);
+    const Eigen::Vector3d pa = verts[a], d = verts[c] - verts[a];
+    const double len = d.norm();
+    if (!(len > 0)) continue;
+    std::vector<std::pair<double, std::uint32_t>> on;
+    std::vector<std::uint64_t> seen;
+    const int steps = static_cast<int>(len / (0.5 * cell)) + 1;
+    for (int k = 0; k <= steps; ++k) {
+      const auto c0 = cellOf(pa + d * (double(k) / steps));
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dz = -1; dz <= 1; ++dz) {
+            const auto h = hash({c0[0] + dx, c0[1] + dy, c0[2] + dz});
+            if (std::find(seen.begin(), seen.end(), h) != seen.end()) continue;
+            seen.push_back(h);
+            auto it = grid.find(h);
+            if (it == grid.end()) continue;
+            for (auto v : it->second) {
+              if (v == a || v == c) continue;
+              const double t = (verts[v] - pa).dot(d) / (len * len);
+              if (t <= 1e-9 || t >= 1 - 1e-9) continue;
+              if ((pa + t * d - verts[v]).norm() <= tol) on.emplace_back(t, v);
+            }
+          }
+    }
+    if (on.empty()) continue;
+    std::sort(on.begin(), on.end());
+    const std::uint32_t tri = edge_tris[key].front();
+    edge_tris.erase(key);
+    std::uint32_t prev = a;
+    for (const auto& [t, v] : on) {
+      edge_tris[edgeKey(prev, v)].push_back(tri);
+      prev = v;
+    }
+    edge_tris[edgeKey(prev, c)].push_back(tri);
+  }
+}
+
 }  // namespace
 
 MeshEdgeResult extractSharpEdges(const TriangleMesh& mesh, const MeshEdgeParams& params,
@@ -73,7 +138,7 @@ MeshEdgeResult extractSharpEdges(const TriangleMesh& mesh, const MeshEdgeParams&
   const auto vmap = weld(mesh, params.weld_tolerance, verts);
   reportProgress(progress, 0.1, "edges");
   // Edge -> incident triangles (after welding; degenerate triangles skipped).
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> edge_tris;
+  EdgeMap edge_tris;
   std::vector<Eigen::Vector3d> normals(mesh.triangles.size(), Eigen::Vector3d::Zero());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
@@ -84,10 +149,11 @@ MeshEdgeResult extractSharpEdges(const TriangleMesh& mesh, const MeshEdgeParams&
     normals[t] = n.normalized();
     const std::uint32_t e[3][2] = {{a, b}, {b, c}, {c, a}};
     for (auto& ed : e) {
-      const std::uint64_t key = (std::uint64_t(std::min(ed[0], ed[1])) << 32) | std::max(ed[0], ed[1]);
-      edge_tris[key].push_back(static_cast<std::uint32_t>(t));
+      edge_tris[edgeKey(ed[0], ed[1])].push_back(static_cast<std::uint32_t>(t));
     }
   }
+  checkCanceled(progress);
+  splitTJunctions(verts, edge_tris, std::max(10.0 * params.weld_tolerance, 1e-6));
   checkCanceled(progress);
   // Sharp edges: dihedral (turning) angle between face normals above the threshold. Edges
   // between coplanar triangles vanish, which merges coplanar triangles into facets.

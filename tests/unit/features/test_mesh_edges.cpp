@@ -80,3 +80,27 @@ TEST(PoissonDisk, SamplesRespectTheRadiusAndCoverTheMesh) {
 
 }  // namespace
 }  // namespace plumb
+
+namespace plumb {
+namespace {
+
+TEST(MeshEdges, TJunctionsAreSplitSoFlatFacesGiveNoEdges) {
+  // Two coplanar squares side by side in z = 0: the left one is one quad (2 triangles), the
+  // right one is split in two along x, so its vertex (1, 0.5) sits on the left quad's edge.
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}, {2, 1, 0}, {1, 0.5, 0}, {2, 0.5, 0}};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 7}, {1, 7, 6}, {6, 7, 5}, {6, 5, 2}};
+  MeshEdgeParams p;
+  p.include_boundary = false;
+  EXPECT_TRUE(extractSharpEdges(m, p).segments.empty());
+  // With boundaries: the outline only, chained into the 4 sides of the 2 x 1 rectangle.
+  p.include_boundary = true;
+  const auto r = extractSharpEdges(m, p);
+  ASSERT_EQ(r.segments.size(), 4u);
+  double total = 0;
+  for (const auto& s : r.segments) total += s.length();
+  EXPECT_NEAR(total, 6.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace plumb
