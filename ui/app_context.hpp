@@ -2,12 +2,15 @@
 // The parts of the application that reactions (menu actions) work on. Owned by MainWindow
 // (Qt parent ownership); reactions hold a reference to this for their lifetime.
 class QMainWindow;
+class QUndoStack;
 
 namespace plumb::ui {
 
 class LayerTreePanel;
 class LogPanel;
 class PropertiesPanel;
+class RegistrationPanel;
+class ManualAlignPanel;
 class RecentFiles;
 class Scene;
 class TaskManager;
@@ -22,6 +25,9 @@ struct AppContext {
   LayerTreePanel& layers;
   PropertiesPanel& properties;
   RecentFiles& recent;
+  QUndoStack& undo;  ///< every applied transform (Edit > Undo/Redo)
+  RegistrationPanel* registration = nullptr;  ///< the Registration dock (set once built)
+  ManualAlignPanel* manual = nullptr;         ///< the Manual alignment dock
 };
 
 }  // namespace plumb::ui

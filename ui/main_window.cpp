@@ -5,9 +5,14 @@
 #include <QDragEnterEvent>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QScrollArea>
 #include <QStatusBar>
+#include <QUndoStack>
 
+#include "ui/actions/export_cloud_reaction.hpp"
 #include "ui/actions/open_file_reaction.hpp"
+#include "ui/actions/project_reactions.hpp"
+#include "ui/actions/registration_step_reaction.hpp"
 #include "ui/actions/recent_files.hpp"
 #include "ui/actions/recent_files_reaction.hpp"
 #include "ui/actions/remove_layer_reaction.hpp"
@@ -20,6 +25,9 @@
 #include "ui/panels/log_panel.hpp"
 #include "ui/panels/properties_panel.hpp"
 #include "ui/panels/task_progress_widget.hpp"
+#include "ui/project/project_file.hpp"
+#include "ui/registration/manual_align_panel.hpp"
+#include "ui/registration/registration_panel.hpp"
 #include "ui/tasks/load_files.hpp"
 #include "ui/tasks/task_manager.hpp"
 #include "ui/view/lod_controller.hpp"
@@ -39,12 +47,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   auto* tree = new LayerTreePanel(*scene, this);
   auto* properties = new PropertiesPanel(*scene, this);
   auto* recent = new RecentFiles(this);
-  context_.reset(new AppContext{*this, *view, *scene, *tasks, *log, *tree, *properties, *recent});
+  auto* undo = new QUndoStack(this);
+  context_.reset(
+      new AppContext{*this, *view, *scene, *tasks, *log, *tree, *properties, *recent, *undo});
+  context_->registration = new RegistrationPanel(*context_, this);
+  context_->manual = new ManualAlignPanel(*context_, this);
+  // Commands hold layer pointers: forget them when a layer goes.
+  connect(scene, &Scene::layerAboutToBeRemoved, undo, [undo](Layer* layer) {
+    if (layer->parent() == nullptr) undo->clear();
+  });
   new LodController(*view, *scene, this);
 
   connect(scene, &Scene::renderNeeded, view, &VtkViewWidget::requestRender);
   connect(tree, &LayerTreePanel::currentLayerChanged, properties, &PropertiesPanel::showLayer);
   connect(view, &VtkViewWidget::clicked, this, [this](int x, int y) {
+    if (context_->manual->picking()) return;
     if (auto hit = context_->scene.pick(x, y))
       context_->properties.showRows(hit->layer->name(), hit->rows);
   });
@@ -57,7 +74,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
           });
   createDocks();
   createMenus();
-  resize(1280, 800);
+  resize(1400, 900);
 }
 
 MainWindow::~MainWindow() {
@@ -76,6 +93,14 @@ void MainWindow::createDocks() {
   dock(tr("Layers"), "layersDock", &context_->layers, Qt::LeftDockWidgetArea);
   dock(tr("Properties"), "propertiesDock", &context_->properties, Qt::LeftDockWidgetArea);
   dock(tr("Log"), "logDock", &context_->log, Qt::BottomDockWidgetArea);
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidget(context_->registration);
+  scroll->setWidgetResizable(true);
+  scroll->setMinimumWidth(340);
+  dock(tr("Registration"), "registrationDock", scroll, Qt::RightDockWidgetArea);
+  QDockWidget* manual =
+      dock(tr("Manual alignment"), "manualDock", context_->manual, Qt::RightDockWidgetArea);
+  manual->hide();
 }
 
 void MainWindow::createMenus() {
@@ -84,13 +109,34 @@ void MainWindow::createMenus() {
   new OpenFileReaction(file->addAction(tr("&Open..."), QKeySequence::Open), app);
   new RecentFilesReaction(file->addMenu(tr("Recent files")), app);
   file->addSeparator();
+  new OpenProjectReaction(file->addAction(tr("Open &project...")), app);
+  new SaveProjectReaction(file->addAction(tr("Save project..."), QKeySequence::Save), app);
+  file->addSeparator();
+  new ExportCloudReaction(file->addAction(tr("Export registered &cloud...")), app);
+  new ExportTransformReaction(file->addAction(tr("Export &transform...")), app);
   new ScreenshotReaction(file->addAction(tr("Export &screenshot...")), app);
   file->addSeparator();
   connect(file->addAction(tr("&Quit"), QKeySequence::Quit), &QAction::triggered, this,
           &QWidget::close);
 
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = app.undo.createUndoAction(this, tr("&Undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = app.undo.createRedoAction(this, tr("&Redo"));
+  redo->setShortcut(QKeySequence::Redo);
+  edit->addAction(undo);
+  edit->addAction(redo);
+  edit->addSeparator();
   new RemoveLayerReaction(edit->addAction(tr("&Remove layer"), QKeySequence::Delete), app);
+
+  using Step = RegistrationStepReaction::Step;
+  QMenu* reg = menuBar()->addMenu(tr("&Registration"));
+  const std::pair<QString, Step> steps[] = {{tr("&Detect features"), Step::DetectFeatures},
+                                            {tr("&Register"), Step::Register},
+                                            {tr("Colour by &distance"), Step::ColourByDistance},
+                                            {tr("&Accept result"), Step::Accept},
+                                            {tr("Re&vert result"), Step::Revert}};
+  for (const auto& [label, step] : steps) new RegistrationStepReaction(reg->addAction(label), app, step);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   const std::pair<QString, StandardView> views[] = {
@@ -105,7 +151,22 @@ void MainWindow::createMenus() {
   for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
 }
 
-void MainWindow::openFiles(const QStringList& paths) { loadFiles(*context_, paths); }
+void MainWindow::openFiles(const QStringList& paths) {
+  // A project among the files replaces the scene; other files load as layers.
+  QStringList data;
+  for (const QString& p : paths) {
+    if (p.endsWith(".plumb.json", Qt::CaseInsensitive)) {
+      try {
+        openProject(*context_, p);
+      } catch (const std::exception& e) {
+        context_->log.error(QString::fromUtf8(e.what()));
+      }
+    } else {
+      data << p;
+    }
+  }
+  if (!data.isEmpty()) loadFiles(*context_, data);
+}
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
   if (event->mimeData()->hasUrls()) event->acceptProposedAction();

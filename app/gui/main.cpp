@@ -1,12 +1,15 @@
-// plumb: the desktop application. `plumb FILE...` opens files; `plumb --screenshot OUT.png
-// FILE...` renders them and exits (tests, documentation).
+// plumb: the desktop application.
+//   plumb [FILE...] [--project P.plumb.json] [--register S,T] [--screenshot OUT.png]
+// FILEs are scans or models (a *.plumb.json is opened as a project); --register registers file
+// S onto file T after loading; --screenshot renders the view into OUT.png and exits (tests,
+// documentation).
 #include <QApplication>
 #include <QCommandLineParser>
 
 #include <iostream>
 
 #include "ui/main_window.hpp"
-#include "ui/screenshot_run.hpp"
+#include "ui/startup_run.hpp"
 #include "ui/view/surface_format.hpp"
 
 int main(int argc, char** argv) {
@@ -21,29 +24,50 @@ int main(int argc, char** argv) {
       "Plumb: registration of building survey data (scans to scans, scans to BIM)");
   parser.addHelpOption();
   parser.addVersionOption();
-  QCommandLineOption screenshot("screenshot", "Render the files into OUT.png and exit.", "OUT.png");
+  QCommandLineOption screenshot("screenshot", "Render the view into OUT.png and exit.", "OUT.png");
   QCommandLineOption size("size", "Window size for --screenshot (default 1280x800).", "WxH",
                           "1280x800");
-  parser.addOption(screenshot);
-  parser.addOption(size);
+  QCommandLineOption project("project", "Open a project file (*.plumb.json).", "FILE");
+  QCommandLineOption reg("register",
+                         "After loading, register file SOURCE onto file TARGET (0-based indices "
+                         "of the files given, or of a project's layers).",
+                         "SOURCE,TARGET");
+  QCommandLineOption whole("screenshot-window",
+                           "With --screenshot: capture the whole window (docks included).");
+  parser.addOptions({screenshot, size, project, reg, whole});
   parser.addPositionalArgument("files", "Scans (E57, LAS, PLY, PCD, XYZ) or models (IFC, OBJ...).",
                                "[FILES...]");
   parser.process(app);
 
+  plumb::ui::StartupOptions options;
+  options.files = parser.positionalArguments();
+  options.project = parser.value(project);
+  for (const QString& f : parser.positionalArguments())
+    if (f.endsWith(".plumb.json", Qt::CaseInsensitive) && options.project.isEmpty()) {
+      options.project = f;
+      options.files.removeAll(f);
+    }
+  options.screenshot = parser.value(screenshot);
+  options.whole_window = parser.isSet(whole);
+  if (parser.isSet(reg)) {
+    options.register_pair = plumb::ui::parseRegisterPair(parser.value(reg));
+    if (!options.register_pair) {
+      std::cerr << "plumb: error: --register expects SOURCE,TARGET indices, e.g. 0,1\n";
+      return 2;
+    }
+  }
+
   plumb::ui::MainWindow window;
-  if (parser.isSet(screenshot)) {
+  if (!options.screenshot.isEmpty()) {
     const QStringList wh = parser.value(size).split('x');
     if (wh.size() != 2 || wh[0].toInt() <= 0 || wh[1].toInt() <= 0) {
       std::cerr << "plumb: error: --size expects WxH, e.g. 1280x800\n";
       return 2;
     }
     window.resize(wh[0].toInt(), wh[1].toInt());
-    window.show();
-    auto* run = new plumb::ui::ScreenshotRun(window, parser.value(screenshot), &window);
-    run->start(parser.positionalArguments());
-    return QApplication::exec();
   }
   window.show();
-  window.openFiles(parser.positionalArguments());
+  auto* run = new plumb::ui::StartupRun(window, options, &window);
+  run->start();
   return QApplication::exec();
 }

@@ -34,6 +34,17 @@ Rgb rampColor(RampKind ramp, double t) {
     const auto g = toByte(0.15 + 0.85 * t);
     return {g, g, g};
   }
+  if (ramp == RampKind::Distance) {
+    // Blue, cyan, green, yellow, red at equal steps (CloudCompare-like deviation scale).
+    static constexpr std::array<std::array<double, 3>, 5> kStops = {
+        {{0.0, 0.0, 1.0}, {0.0, 1.0, 1.0}, {0.0, 1.0, 0.0}, {1.0, 1.0, 0.0}, {1.0, 0.0, 0.0}}};
+    const double x = t * (kStops.size() - 1);
+    const auto i = std::min<std::size_t>(static_cast<std::size_t>(x), kStops.size() - 2);
+    const double f = x - static_cast<double>(i);
+    Rgb c{};
+    for (int k = 0; k < 3; ++k) c[k] = toByte(kStops[i][k] * (1 - f) + kStops[i + 1][k] * f);
+    return c;
+  }
   const double x = t * (kViridis.size() - 1);
   const auto i = std::min<std::size_t>(static_cast<std::size_t>(x), kViridis.size() - 2);
   const double f = x - static_cast<double>(i);

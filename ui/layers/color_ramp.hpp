@@ -12,6 +12,7 @@ using Rgb = std::array<std::uint8_t, 3>;
 enum class RampKind {
   Viridis,  ///< perceptually uniform; elevation, scalar fields, distances
   Grey,     ///< intensity
+  Distance, ///< registration QA: blue (on the target) -> green -> yellow -> red (far)
 };
 
 /// Colour of t in [0,1] (clamped) on the ramp.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "ui/layers/feature_layer.hpp"
 #include "ui/layers/scan_layer.hpp"
 
 namespace plumb::ui {
@@ -35,7 +36,8 @@ DatasetLayer::DatasetLayer(std::shared_ptr<const Dataset> data, const Eigen::Vec
 
 std::vector<ScanLayer*> DatasetLayer::scans() const {
   std::vector<ScanLayer*> out;
-  for (const auto& c : children()) out.push_back(static_cast<ScanLayer*>(c.get()));
+  for (const auto& c : children())
+    if (c->kind() == LayerKind::Scan) out.push_back(static_cast<ScanLayer*>(c.get()));
   return out;
 }
 
@@ -43,6 +45,16 @@ void DatasetLayer::setStyle(const PointStyle& style) {
   style_ = style;
   const Bounds b = bounds();
   for (ScanLayer* s : scans()) s->setStyle(style_, b.min.z(), b.max.z());
+}
+
+void DatasetLayer::setDistances(std::vector<std::vector<float>> per_scan, double max_distance) {
+  const auto list = scans();
+  for (std::size_t i = 0; i < list.size(); ++i)
+    list[i]->setDistances(i < per_scan.size() ? std::move(per_scan[i]) : std::vector<float>{},
+                          max_distance);
+  has_distances_ = !per_scan.empty();
+  if (has_distances_) style_.mode = PointColorMode::Distance;
+  setStyle(style_);
 }
 
 std::vector<std::string> DatasetLayer::scalarFieldNames() const {
@@ -66,6 +78,8 @@ void DatasetLayer::setShowsTransform(bool show) {
 void DatasetLayer::applyTransform() {
   const RigidTransform shown = shows_transform_ ? transform_ : RigidTransform();
   for (ScanLayer* s : scans()) s->setDatasetTransform(shown);
+  for (const auto& c : children())
+    if (c->kind() == LayerKind::Features) static_cast<FeatureLayer*>(c.get())->setTransform(shown);
   if (style_.mode == PointColorMode::Elevation) setStyle(style_);
 }
 

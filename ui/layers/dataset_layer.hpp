@@ -37,6 +37,11 @@ class DatasetLayer : public Layer {
   bool showsTransform() const { return shows_transform_; }
   void setShowsTransform(bool show);
 
+  /// Distance to the registration target per point of each scan (NaN: no match), drawn by the
+  /// Distance colour mode on a ramp over [0, max_distance]; switches the style to it.
+  void setDistances(std::vector<std::vector<float>> per_scan, double max_distance);
+  bool hasDistances() const { return has_distances_; }
+
   std::vector<PropertyRow> describe() const override;
 
  private:
@@ -45,6 +50,7 @@ class DatasetLayer : public Layer {
   PointStyle style_;
   RigidTransform transform_;
   bool shows_transform_ = true;
+  bool has_distances_ = false;
 };
 
 }  // namespace plumb::ui

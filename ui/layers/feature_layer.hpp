@@ -30,6 +30,7 @@ class FeatureLayer : public Layer {
   ~FeatureLayer() override;
 
   const FeatureSet& features() const { return *features_; }
+  std::shared_ptr<const FeatureSet> sharedFeatures() const { return features_; }
   void setTransform(const RigidTransform& t);
 
   /// The feature drawn by cell `cell` of the actor `prop`, if `prop` is this layer's.

@@ -13,6 +13,17 @@ Layer& Layer::addChild(std::unique_ptr<Layer> child) {
   return *children_.back();
 }
 
+std::unique_ptr<Layer> Layer::takeChild(const Layer* child) {
+  for (auto it = children_.begin(); it != children_.end(); ++it)
+    if (it->get() == child) {
+      std::unique_ptr<Layer> out = std::move(*it);
+      children_.erase(it);
+      out->parent_ = nullptr;
+      return out;
+    }
+  return nullptr;
+}
+
 bool Layer::effectivelyVisible() const {
   for (const Layer* l = this; l; l = l->parent_)
     if (!l->visible_) return false;

@@ -31,6 +31,8 @@ class Layer {
   Layer* parent() const { return parent_; }
   const std::vector<std::unique_ptr<Layer>>& children() const { return children_; }
   Layer& addChild(std::unique_ptr<Layer> child);
+  /// Detaches a direct child (nullptr if `child` is not one).
+  std::unique_ptr<Layer> takeChild(const Layer* child);
 
   bool visible() const { return visible_; }
   /// Visible and every ancestor visible.

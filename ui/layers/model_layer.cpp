@@ -15,6 +15,7 @@
 #include <map>
 
 #include "ui/layers/color_ramp.hpp"
+#include "ui/layers/feature_layer.hpp"
 #include "ui/layers/point_geometry.hpp"
 #include "ui/layers/render_frame.hpp"
 
@@ -99,6 +100,8 @@ void ModelLayer::setTransform(const RigidTransform& t) {
   Eigen::Matrix4d local = Eigen::Matrix4d::Identity();
   local.block<3, 1>(0, 3) = model_->mesh.bounds().center();
   actor_->SetUserMatrix(renderMatrix(origin_, transform_.matrix() * local));
+  for (const auto& c : children())
+    if (c->kind() == LayerKind::Features) static_cast<FeatureLayer*>(c.get())->setTransform(t);
 }
 
 std::vector<vtkProp*> ModelLayer::props() const { return {actor_}; }

@@ -27,6 +27,7 @@ class ModelLayer : public Layer {
   std::shared_ptr<const BimModel> sharedModel() const { return model_; }
   const MeshStyle& style() const { return style_; }
   void setStyle(const MeshStyle& style);
+  const RigidTransform& transform() const { return transform_; }
   void setTransform(const RigidTransform& t);
 
   std::vector<vtkProp*> props() const override;

@@ -1,6 +1,7 @@
 #include "ui/layers/point_coloring.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace plumb::ui {
 
@@ -15,6 +16,7 @@ PointColorMode effectiveMode(const PointCloud& cloud, const PointStyle& style) {
       return f && f->values.size() == cloud.size() ? PointColorMode::ScalarField
                                                     : PointColorMode::Elevation;
     }
+    case PointColorMode::Distance: return PointColorMode::Elevation;  // needs ScanLayer data
     default: return style.mode;
   }
 }
@@ -31,6 +33,13 @@ void fillFromValues(std::span<const float> values, double lo, double hi, RampKin
 
 }  // namespace
 
+void fillDistanceColors(std::span<const float> distances, double max_distance, std::span<Rgb> out) {
+  const double scale = max_distance > 0 ? 1.0 / max_distance : 1.0;
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = std::isfinite(distances[i]) ? rampColor(RampKind::Distance, distances[i] * scale)
+                                         : Rgb{190, 190, 190};
+}
+
 void fillPointColors(const PointCloud& cloud, const PointColoring& c, std::span<Rgb> out) {
   switch (effectiveMode(cloud, c.style)) {
     case PointColorMode::Rgb:
@@ -46,7 +55,8 @@ void fillPointColors(const PointCloud& cloud, const PointColoring& c, std::span<
     case PointColorMode::Scan:
       std::fill(out.begin(), out.end(), categoryColor(c.scan_index));
       return;
-    case PointColorMode::Elevation: break;
+    case PointColorMode::Elevation:
+    case PointColorMode::Distance: break;
   }
   const double z0 = c.elevation_row.head<3>().dot(cloud.offset) + c.elevation_row[3];
   const Eigen::Vector3f row = c.elevation_row.head<3>().cast<float>();

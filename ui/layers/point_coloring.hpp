@@ -27,6 +27,8 @@ struct PointColoring {
 /// field fall back to elevation.
 PointColorMode effectiveMode(const PointCloud& cloud, const PointStyle& style);
 /// Writes one colour per point of `cloud` into `out` (out.size() == cloud.size()).
+/// Distance colours: the distance ramp over [0, max_distance]; NaN (no match) light grey.
+void fillDistanceColors(std::span<const float> distances, double max_distance, std::span<Rgb> out);
 void fillPointColors(const PointCloud& cloud, const PointColoring& coloring, std::span<Rgb> out);
 
 }  // namespace plumb::ui

@@ -5,11 +5,11 @@
 
 namespace plumb::ui {
 
-enum class PointColorMode { Rgb, Intensity, Elevation, Scan, ScalarField };
+enum class PointColorMode { Rgb, Intensity, Elevation, Scan, ScalarField, Distance };
 
 inline const std::vector<std::string>& pointColorModeNames() {
   static const std::vector<std::string> names{"RGB", "Intensity", "Elevation", "Scan",
-                                              "Scalar field"};
+                                              "Scalar field", "Distance"};
   return names;
 }
 

@@ -76,8 +76,13 @@ void ScanLayer::setStyle(const PointStyle& style, double z_min, double z_max) {
   coloring.z_max = z_max;
 
   auto full = makeColorArray(cloud.size());
-  fillPointColors(cloud, coloring,
-                  {reinterpret_cast<Rgb*>(full->GetPointer(0)), cloud.size()});
+  std::span<Rgb> colors{reinterpret_cast<Rgb*>(full->GetPointer(0)), cloud.size()};
+  if (style.mode == PointColorMode::Distance && distances_.size() == cloud.size()) {
+    fillDistanceColors(distances_, distance_max_, colors);
+  } else {
+    if (style.mode == PointColorMode::Distance) coloring.style.mode = PointColorMode::Elevation;
+    fillPointColors(cloud, coloring, colors);
+  }
   auto lod = makeColorArray(lod_indices_.size());
   const auto* src = reinterpret_cast<const Rgb*>(full->GetPointer(0));
   auto* dst = reinterpret_cast<Rgb*>(lod->GetPointer(0));
@@ -88,6 +93,11 @@ void ScanLayer::setStyle(const PointStyle& style, double z_min, double z_max) {
   lod_poly_->Modified();
   full_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
   lod_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
+}
+
+void ScanLayer::setDistances(std::vector<float> distances, double max_distance) {
+  distances_ = std::move(distances);
+  distance_max_ = max_distance > 0 ? max_distance : 1.0;
 }
 
 std::vector<vtkProp*> ScanLayer::props() const { return {full_actor_, lod_actor_}; }

@@ -34,6 +34,9 @@ class ScanLayer : public Layer {
   void setDatasetTransform(const RigidTransform& t);
   /// Recolours both representations. z range is world elevation for the Elevation mode.
   void setStyle(const PointStyle& style, double z_min, double z_max);
+  /// Per-point distances (Distance colour mode), ramp over [0, max_distance]; NaN drawn grey.
+  void setDistances(std::vector<float> distances, double max_distance);
+  const std::vector<float>& distances() const { return distances_; }
   /// Scan points -> world.
   Eigen::Matrix4d localToWorld() const;
 
@@ -59,6 +62,8 @@ class ScanLayer : public Layer {
   vtkNew<vtkPolyDataMapper> lod_mapper_;
   vtkNew<vtkActor> full_actor_;
   vtkNew<vtkActor> lod_actor_;
+  std::vector<float> distances_;
+  double distance_max_ = 1.0;
   bool reduced_ = false;
   bool shown_ = true;
 };

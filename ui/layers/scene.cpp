@@ -85,9 +85,19 @@ void Scene::removeProps(Layer& layer) {
 }
 
 void Scene::removeLayer(Layer* layer) {
+  if (!layer) return;
+  if (Layer* parent = layer->parent()) {
+    emit layerAboutToBeRemoved(layer);
+    removeProps(*layer);
+    parent->takeChild(layer);
+    emit layersChanged();
+    emit renderNeeded();
+    return;
+  }
   auto it = std::find_if(layers_.begin(), layers_.end(),
                          [layer](const auto& l) { return l.get() == layer; });
   if (it == layers_.end()) return;
+  emit layerAboutToBeRemoved(layer);
   removeProps(**it);
   layers_.erase(it);
   emit layersChanged();
@@ -95,7 +105,10 @@ void Scene::removeLayer(Layer* layer) {
 }
 
 void Scene::clear() {
-  for (auto& l : layers_) removeProps(*l);
+  for (auto& l : layers_) {
+    emit layerAboutToBeRemoved(l.get());
+    removeProps(*l);
+  }
   layers_.clear();
   origin_.reset();
   emit layersChanged();

@@ -44,7 +44,7 @@ class Scene : public QObject {
   /// Adds features as a child of `parent` (a dataset or model layer) or at the root.
   FeatureLayer& addFeatures(QString name, std::shared_ptr<const FeatureSet> features,
                             Layer* parent = nullptr);
-  /// Removes a root layer (and its children).
+  /// Removes a layer (root or child) and its children.
   void removeLayer(Layer* layer);
   void clear();
 
@@ -63,6 +63,8 @@ class Scene : public QObject {
   void layerChanged(Layer* layer);
 
  signals:
+  /// Emitted before `layer` (and its children) is destroyed.
+  void layerAboutToBeRemoved(plumb::ui::Layer* layer);
   /// Layers were added or removed.
   void layersChanged();
   /// A layer's appearance changed: the view must render.

@@ -1,0 +1,38 @@
+#pragma once
+// The parameter groups of the registration pipeline, listed once: each nested Params struct of
+// PipelineParams with its key, label and schema. The UI's parameter panels, the project file's
+// JSON and any CLI flag set come from this one list.
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+
+#include "registration/auto/registration_pipeline.hpp"
+
+namespace plumb {
+
+/// Calls f(key, label, schema, params_member) for every group, in pipeline order. `P` is
+/// PipelineParams or const PipelineParams.
+template <class P, class F>
+void forEachParamGroup(P& p, F&& f) {
+  f("plane-extraction", "Plane extraction", PlaneExtractionParams::schema(), p.plane_extraction);
+  f("opening-detection", "Opening detection", OpeningDetectionParams::schema(), p.opening_detection);
+  f("segment-detection", "Segment detection", SegmentDetectionParams::schema(), p.segment_detection);
+  f("mesh-edges", "Model sharp edges", MeshEdgeParams::schema(), p.mesh_edges);
+  f("planes", "Planes registration", PlaneRegistrationParams::schema(), p.planes);
+  f("openings", "Openings registration", OpeningRegistrationParams::schema(), p.openings);
+  f("segments", "Segments registration", SegmentRegistrationParams::schema(), p.segments);
+  f("refinement", "Refinement (ICP)", RefineParams::schema(), p.refinement);
+  f("quality", "Quality checks", QualityParams::schema(), p.quality);
+}
+
+/// Whether the group `key` takes part in a registration with `method` (auto: all).
+bool paramGroupUsedBy(const std::string& key, RegistrationMethod method);
+
+/// {"method": "auto", "refine": true, "seed": 1, "model-sample-spacing": 0.05,
+///  "<group key>": {<param key>: value, ...}, ...}
+nlohmann::json pipelineParamsToJson(const PipelineParams& params);
+/// Reads the keys present (others keep their value); throws InputError for unknown keys or
+/// values out of range.
+void pipelineParamsFromJson(const nlohmann::json& j, PipelineParams& params);
+
+}  // namespace plumb

@@ -1,0 +1,29 @@
+#pragma once
+// One side of a registration built from what a file holds (a dataset or a model) placed in
+// world coordinates by `to_world` (identity for data as read; a previous registration
+// otherwise). Used by the desktop app so it feeds registerData exactly like plumb-cli.
+#include <optional>
+
+#include "model/bim_model.hpp"
+#include "model/dataset.hpp"
+#include "registration/auto/registration_pipeline.hpp"
+
+namespace plumb {
+
+struct RegistrationInput {
+  PointCloud cloud;                  ///< scans merged, world (datasets)
+  std::optional<BimModel> model;     ///< transformed copy (models)
+  std::optional<Eigen::Vector3d> viewpoint;
+  std::optional<FeatureSet> features;  ///< precomputed, world
+  /// Pointers into this object: do not move it while the side is in use.
+  RegistrationSide side() const;
+};
+
+/// Merged scans (non-finite points removed), moved by `to_world`. A single static scan with a
+/// pose gives its scanner position as the viewpoint (plane normals face it), like plumb-cli.
+/// Throws FileError when the dataset has no points.
+RegistrationInput makeRegistrationInput(const Dataset& data, const RigidTransform& to_world);
+/// Throws FileError when the model has no triangles.
+RegistrationInput makeRegistrationInput(const BimModel& model, const RigidTransform& to_world);
+
+}  // namespace plumb

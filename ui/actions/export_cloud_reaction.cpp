@@ -1,0 +1,52 @@
+#include "ui/actions/export_cloud_reaction.hpp"
+
+#include <QFileDialog>
+#include <QMainWindow>
+
+#include "ui/app_context.hpp"
+#include "ui/layers/layer_transform.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/panels/layer_tree_panel.hpp"
+#include "ui/panels/log_panel.hpp"
+#include "ui/registration/registration_panel.hpp"
+#include "ui/tasks/export_tasks.hpp"
+
+namespace plumb::ui {
+
+Layer* exportLayer(AppContext& app) {
+  Layer* layer = app.layers.currentLayer();
+  while (layer && layer->parent()) layer = layer->parent();
+  if (isRegistrable(layer)) return layer;
+  return app.registration ? app.registration->sourceLayer() : nullptr;
+}
+
+void ExportCloudReaction::onTriggered() {
+  Layer* layer = exportLayer(app());
+  if (!layer || layer->kind() != LayerKind::Dataset) {
+    app().log.error(tr("Export: select a point dataset"));
+    return;
+  }
+  const QString path = QFileDialog::getSaveFileName(
+      &app().window, tr("Export registered cloud"), layer->name(),
+      tr("E57 with poses (*.e57);;PLY (*.ply);;LAS (*.las)"));
+  if (path.isEmpty()) return;
+  try {
+    exportRegisteredDataset(app(), *layer, path);
+  } catch (const std::exception& e) {
+    app().log.error(QString::fromUtf8(e.what()));
+  }
+}
+
+void ExportTransformReaction::onTriggered() {
+  Layer* layer = exportLayer(app());
+  if (!layer) {
+    app().log.error(tr("Export transform: select a dataset or a model"));
+    return;
+  }
+  const QString path = QFileDialog::getSaveFileName(&app().window, tr("Export transform"),
+                                                    "transform.json",
+                                                    tr("JSON (*.json);;4x4 text (*.txt)"));
+  if (!path.isEmpty()) exportTransform(app(), *layer, path);
+}
+
+}  // namespace plumb::ui

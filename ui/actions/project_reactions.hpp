@@ -1,0 +1,26 @@
+#pragma once
+#include "ui/actions/reaction.hpp"
+
+namespace plumb::ui {
+
+/// File > Open project: replaces the scene with a project's layers and setup.
+class OpenProjectReaction : public Reaction {
+  Q_OBJECT
+ public:
+  using Reaction::Reaction;
+
+ protected:
+  void onTriggered() override;
+};
+
+/// File > Save project: layers (files, transforms, visibility) and registration setup.
+class SaveProjectReaction : public Reaction {
+  Q_OBJECT
+ public:
+  using Reaction::Reaction;
+
+ protected:
+  void onTriggered() override;
+};
+
+}  // namespace plumb::ui

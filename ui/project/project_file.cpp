@@ -1,0 +1,163 @@
+#include "ui/project/project_file.hpp"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QUndoStack>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "registration/auto/pipeline_param_groups.hpp"
+#include "ui/app_context.hpp"
+#include "ui/layers/layer_transform.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/panels/log_panel.hpp"
+#include "ui/registration/registration_panel.hpp"
+#include "ui/tasks/load_files.hpp"
+
+namespace plumb::ui {
+
+using nlohmann::json;
+
+bool looksLikeProject(const QString& path) {
+  return path.endsWith(".plumb.json", Qt::CaseInsensitive) ||
+         path.endsWith(".json", Qt::CaseInsensitive);
+}
+
+void saveProject(const AppContext& app, const QString& path) {
+  const QDir dir = QFileInfo(path).absoluteDir();
+  json layers = json::array();
+  int source = -1, target = -1;
+  for (const auto& l : app.scene.layers()) {
+    if (!isRegistrable(l.get())) continue;
+    const QString file = layerSource(*l);
+    if (file.isEmpty()) continue;  // generated data has no file to reopen
+    const QString rel = dir.relativeFilePath(file);
+    json e;
+    e["file"] = (rel.startsWith("..") ? QFileInfo(file).absoluteFilePath() : rel).toStdString();
+    e["visible"] = l->visible();
+    e["transform"] = json::parse(transformToJson(layerTransform(*l)));
+    if (app.registration && l.get() == app.registration->sourceLayer()) source = int(layers.size());
+    if (app.registration && l.get() == app.registration->targetLayer()) target = int(layers.size());
+    layers.push_back(e);
+  }
+  json j;
+  j["plumb-project"] = kProjectVersion;
+  j["layers"] = layers;
+  if (app.registration)
+    j["registration"] = {{"source", source},
+                         {"target", target},
+                         {"params", pipelineParamsToJson(app.registration->params())}};
+  writeFileAtomically(path.toStdString(), [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+}
+
+namespace {
+
+struct Entry {
+  QString file;
+  RigidTransform transform;
+  bool visible = true;
+};
+
+json readJson(const QString& path) {
+  std::ifstream in(path.toStdString());
+  if (!in) throw FileError(path.toStdString(), "cannot open the project file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  try {
+    return json::parse(ss.str());
+  } catch (const json::parse_error& e) {
+    throw FileError(path.toStdString(), std::string("not valid JSON: ") + e.what(),
+                    FileLocation{e.byte, std::nullopt, {}});
+  }
+}
+
+}  // namespace
+
+void openProject(AppContext& app, const QString& path, std::function<void(bool)> done) {
+  const json j = readJson(path);
+  const std::string file = path.toStdString();
+  if (!j.is_object() || !j.contains("plumb-project"))
+    throw FileError(file, "not a Plumb project (no \"plumb-project\" key)");
+  if (j.at("plumb-project") != kProjectVersion)
+    throw FileError(file, "unsupported project version " + j.at("plumb-project").dump());
+  if (!j.contains("layers") || !j.at("layers").is_array())
+    throw FileError(file, "\"layers\" must be an array");
+  const QDir dir = QFileInfo(path).absoluteDir();
+  auto entries = std::make_shared<std::vector<Entry>>();
+  for (std::size_t i = 0; i < j.at("layers").size(); ++i) {
+    const json& e = j.at("layers")[i];
+    const std::string where = "layers[" + std::to_string(i) + "]";
+    if (!e.is_object() || !e.contains("file") || !e.at("file").is_string())
+      throw FileError(file, where + " needs a \"file\" string");
+    Entry entry;
+    entry.file = dir.absoluteFilePath(QString::fromStdString(e.at("file").get<std::string>()));
+    entry.visible = e.value("visible", true);
+    if (e.contains("transform")) {
+      try {
+        entry.transform = transformFromJson(e.at("transform").dump(), file);
+      } catch (const std::exception& ex) {
+        throw FileError(file, where + ".transform: " + ex.what());
+      }
+    }
+    entries->push_back(entry);
+  }
+  int source = -1, target = -1;
+  if (j.contains("registration") && app.registration) {
+    const json& r = j.at("registration");
+    source = r.value("source", -1);
+    target = r.value("target", -1);
+    if (r.contains("params")) {
+      PipelineParams p;
+      try {
+        pipelineParamsFromJson(r.at("params"), p);
+      } catch (const std::exception& ex) {
+        throw FileError(file, std::string("registration.params: ") + ex.what());
+      }
+      app.registration->params() = p;
+      app.registration->refreshParams();
+    }
+  }
+  app.undo.clear();
+  app.scene.clear();
+  QStringList files;
+  for (const auto& e : *entries) files << e.file;
+  auto layers = std::make_shared<std::vector<Layer*>>(entries->size(), nullptr);
+  auto remaining = std::make_shared<int>(int(entries->size()));
+  auto all_ok = std::make_shared<bool>(true);
+  app.log.info(QObject::tr("Opening project %1 (%2 files)").arg(path).arg(files.size()));
+  auto finish = [&app, layers, source, target, done, all_ok] {
+    if (app.registration) {
+      auto at = [&layers](int i) { return i >= 0 && std::size_t(i) < layers->size() ? (*layers)[std::size_t(i)] : nullptr; };
+      if (Layer* s = at(source)) app.registration->setSourceLayer(s);
+      if (Layer* t = at(target)) app.registration->setTargetLayer(t);
+    }
+    if (done) done(*all_ok);
+  };
+  if (files.isEmpty()) {
+    finish();
+    return;
+  }
+  loadFiles(
+      app, files,
+      [&app, entries, layers](Layer& layer, const QString& p) {
+        for (std::size_t i = 0; i < entries->size(); ++i)
+          if ((*entries)[i].file == p && !(*layers)[i]) {
+            (*layers)[i] = &layer;
+            setLayerTransform(app.scene, layer, (*entries)[i].transform);
+            layer.setVisible((*entries)[i].visible);
+            break;
+          }
+      },
+      [remaining, all_ok, finish](const QString&, bool ok) {
+        *all_ok = *all_ok && ok;
+        if (--*remaining == 0) finish();
+      });
+}
+
+}  // namespace plumb::ui

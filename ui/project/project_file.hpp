@@ -1,0 +1,28 @@
+#pragma once
+// Plumb project files (*.plumb.json): the layers with their file paths (relative to the project
+// file when below it), transforms and visibility, and the registration setup (source, target,
+// every parameter through the core's param groups). Example:
+//   {"plumb-project": 1,
+//    "layers": [{"file": "indoor.e57", "visible": true, "transform": {"matrix": [[...]]}}, ...],
+//    "registration": {"source": 0, "target": 1, "params": {"method": "auto", ...}}}
+#include <QString>
+
+#include <functional>
+
+namespace plumb::ui {
+
+struct AppContext;
+
+constexpr int kProjectVersion = 1;
+
+/// Writes the project (atomic). Throws FileError.
+void saveProject(const AppContext& app, const QString& path);
+/// Clears the scene, loads the project's files in the background, applies their transforms
+/// and the registration setup. `done(ok)` runs when every file finished (ok: all loaded).
+/// Throws FileError when the project file itself cannot be read or is invalid.
+void openProject(AppContext& app, const QString& path, std::function<void(bool ok)> done = {});
+
+/// True for a path named like a project file (*.plumb.json or *.json holding a project).
+bool looksLikeProject(const QString& path);
+
+}  // namespace plumb::ui

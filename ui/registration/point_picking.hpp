@@ -1,0 +1,22 @@
+#pragma once
+// Picking a point of a layer under the mouse for manual alignment: the view ray through the
+// pixel, then the point of the dataset closest to the ray in angle (points), or the picked
+// position on a model's surface (VTK cell picker).
+#include <Eigen/Core>
+
+#include <optional>
+
+class vtkRenderer;
+
+namespace plumb::ui {
+
+class Layer;
+class Scene;
+
+/// World position of the point of `layer` (dataset or model) under display position (x, y)
+/// (VTK convention: y up, device pixels), within `tolerance_deg` of the ray; nullopt if none.
+std::optional<Eigen::Vector3d> pickLayerPoint(vtkRenderer* renderer, const Scene& scene,
+                                              const Layer& layer, int x, int y,
+                                              double tolerance_deg = 0.5);
+
+}  // namespace plumb::ui

@@ -1,0 +1,31 @@
+#pragma once
+// The quality report of the last registration: the verdict (coloured by success) above a
+// table of its figures (method, RMS, overlap, features, runner-up gap, weak directions...).
+#include <QWidget>
+
+class QLabel;
+class QTableWidget;
+
+namespace plumb {
+struct PipelineResult;
+}
+
+namespace plumb::ui {
+
+class QualityReportView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit QualityReportView(QWidget* parent = nullptr);
+  void showResult(const PipelineResult& result);
+  void clear();
+  QString verdict() const;
+  /// Figure rows (name, value), for tests.
+  int rowCount() const;
+
+ private:
+  void addRow(const QString& name, const QString& value);
+  QLabel* verdict_;
+  QTableWidget* table_;
+};
+
+}  // namespace plumb::ui

@@ -1,0 +1,103 @@
+#pragma once
+// The Registration dock: source and target layers, method, parameter panels generated from the
+// core's ParamSchemas, "Detect features" (overlays on both layers), "Register" (background,
+// progress and cancel in the status bar), the quality report, before/after, accept/revert, and
+// the visual QA (colour the registered source by distance, legend and histogram).
+#include <QWidget>
+
+#include <memory>
+
+#include "quality/cloud_distance.hpp"
+#include "registration/auto/registration_pipeline.hpp"
+#include "model/rigid_transform.hpp"
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QToolBox;
+class QUndoCommand;
+
+namespace plumb::ui {
+
+struct AppContext;
+class DistanceLegend;
+class HistogramWidget;
+class Layer;
+class ParamPanel;
+class QualityReportView;
+struct LayerDistances;
+
+class RegistrationPanel : public QWidget {
+  Q_OBJECT
+ public:
+  RegistrationPanel(AppContext& app, QWidget* parent = nullptr);
+  ~RegistrationPanel() override;
+
+  PipelineParams& params() { return params_; }
+  /// Re-reads every parameter editor (after params() changed elsewhere, e.g. a project).
+  void refreshParams();
+  DistanceParams& distanceParams() { return distance_params_; }
+
+  Layer* sourceLayer() const;
+  Layer* targetLayer() const;
+  void setSourceLayer(const Layer* layer);
+  void setTargetLayer(const Layer* layer);
+  void setMethod(RegistrationMethod method);
+
+  /// Start the background work; false (and a log message) when the inputs are not valid.
+  bool detectFeatures();
+  bool startRegistration();
+  bool colourByDistance();
+  /// Keep the applied result / undo it.
+  void accept();
+  void revert();
+  /// Before/after: show the source where it was before the last registration.
+  void showBefore(bool before);
+
+  std::shared_ptr<const PipelineResult> lastResult() const { return result_; }
+  std::shared_ptr<const LayerDistances> lastDistances() const { return distances_; }
+  const QualityReportView& report() const { return *report_; }
+  const HistogramWidget& histogram() const { return *histogram_; }
+
+ signals:
+  void featuresDetected(bool ok);
+  void registrationFinished(bool success);
+  void distancesComputed(bool ok);
+
+ private:
+  void rebuildLayerCombos();
+  void updateEnabled();
+  void applyResult(std::shared_ptr<const PipelineResult> result);
+  void forgetLayer(Layer* layer);
+  bool checkInputs(Layer*& source, Layer*& target);
+
+  AppContext& app_;
+  PipelineParams params_;
+  DistanceParams distance_params_;
+  QComboBox* source_;
+  QComboBox* target_;
+  QComboBox* method_;
+  QCheckBox* use_features_;
+  QToolBox* groups_;
+  std::vector<std::pair<std::string, ParamPanel*>> panels_;
+  ParamPanel* distance_panel_;
+  QPushButton* detect_;
+  QPushButton* register_;
+  QPushButton* accept_;
+  QPushButton* revert_;
+  QPushButton* distance_;
+  QCheckBox* before_;
+  QualityReportView* report_;
+  HistogramWidget* histogram_;
+  QLabel* distance_stats_;
+  std::unique_ptr<DistanceLegend> legend_;
+  std::shared_ptr<const PipelineResult> result_;
+  std::shared_ptr<const LayerDistances> distances_;
+  Layer* result_layer_ = nullptr;  ///< the layer the last result moved
+  RigidTransform before_transform_, after_transform_;
+  const QUndoCommand* pushed_ = nullptr;
+  bool busy_ = false;
+};
+
+}  // namespace plumb::ui

@@ -1,0 +1,143 @@
+#include "ui/registration/registration_tasks.hpp"
+
+#include <variant>
+
+#include "common/error.hpp"
+#include "registration/auto/registration_input.hpp"
+#include "ui/app_context.hpp"
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/feature_layer.hpp"
+#include "ui/layers/layer_transform.hpp"
+#include "ui/layers/model_layer.hpp"
+#include "ui/layers/scan_layer.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/panels/log_panel.hpp"
+#include "ui/tasks/task_manager.hpp"
+
+namespace plumb::ui {
+
+namespace {
+
+/// What a layer holds, shared with the worker (the layer itself stays on the UI thread).
+struct LayerData {
+  std::shared_ptr<const Dataset> dataset;
+  std::shared_ptr<const BimModel> model;
+  RigidTransform to_world;
+  std::shared_ptr<const FeatureSet> features;  ///< detected overlay, data frame
+  QString name;
+};
+
+LayerData dataOf(const Layer& layer) {
+  LayerData d;
+  d.name = layer.name();
+  d.to_world = layerTransform(layer);
+  if (layer.kind() == LayerKind::Dataset)
+    d.dataset = static_cast<const DatasetLayer&>(layer).sharedDataset();
+  else if (layer.kind() == LayerKind::Model)
+    d.model = static_cast<const ModelLayer&>(layer).sharedModel();
+  else
+    throw InputError("'" + layer.name().toStdString() + "' is not a dataset or a model");
+  if (const Layer* f = featureOverlay(layer))
+    d.features = static_cast<const FeatureLayer*>(f)->sharedFeatures();
+  return d;
+}
+
+RegistrationInput inputOf(const LayerData& d, const RigidTransform& to_world) {
+  return d.dataset ? makeRegistrationInput(*d.dataset, to_world)
+                   : makeRegistrationInput(*d.model, to_world);
+}
+
+}  // namespace
+
+Layer* featureOverlay(const Layer& layer) {
+  for (const auto& c : layer.children())
+    if (c->kind() == LayerKind::Features) return c.get();
+  return nullptr;
+}
+
+Task* startFeatureDetection(AppContext& app, Layer& source, Layer& target,
+                            const PipelineParams& params, std::function<void()> done) {
+  const LayerData s = dataOf(source), t = dataOf(target);
+  Layer* src = &source;
+  Layer* tgt = &target;
+  Task* task = app.tasks.run(QObject::tr("Detecting features"), [&app, s, t, src, tgt, params,
+                                                                  done](Progress& progress) {
+    std::vector<std::string> log;
+    std::shared_ptr<const FeatureSet> fs, ft;
+    {
+      Progress p = progress.sub(0.0, 0.5);
+      const RegistrationInput in = inputOf(s, {});
+      fs = std::make_shared<const FeatureSet>(extractFeatures(in.side(), params, true, &log, &p));
+    }
+    {
+      Progress p = progress.sub(0.5, 1.0);
+      const RegistrationInput in = inputOf(t, {});
+      ft = std::make_shared<const FeatureSet>(extractFeatures(in.side(), params, true, &log, &p));
+    }
+    return [&app, src, tgt, fs, ft, log, done] {
+      for (const auto& [layer, features] : {std::pair{src, fs}, std::pair{tgt, ft}}) {
+        if (Layer* old = featureOverlay(*layer)) app.scene.removeLayer(old);
+        auto& overlay = app.scene.addFeatures(QObject::tr("features"), features, layer);
+        overlay.setTransform(layerTransform(*layer));
+      }
+      for (const auto& line : log) app.log.info(QString::fromStdString(line));
+      app.scene.layerChanged(src);
+      if (done) done();
+    };
+  });
+  return task;
+}
+
+Task* startRegistration(AppContext& app, Layer& source, Layer& target, const PipelineParams& params,
+                        bool use_features,
+                        std::function<void(std::shared_ptr<const PipelineResult>)> done) {
+  const LayerData s = dataOf(source), t = dataOf(target);
+  return app.tasks.run(QObject::tr("Registering %1 onto %2").arg(s.name, t.name),
+                       [s, t, params, use_features, done](Progress& progress) {
+                         RegistrationInput in_s = inputOf(s, s.to_world);
+                         RegistrationInput in_t = inputOf(t, t.to_world);
+                         if (use_features && s.features && t.features) {
+                           in_s.features = *s.features;
+                           in_s.features->transform(s.to_world);
+                           in_t.features = *t.features;
+                           in_t.features->transform(t.to_world);
+                         }
+                         auto result = std::make_shared<const PipelineResult>(
+                             registerData(in_s.side(), in_t.side(), params, &progress));
+                         return [result, done] { done(result); };
+                       });
+}
+
+Task* startDistanceComputation(AppContext& app, Layer& source, Layer& target,
+                               const DistanceParams& params,
+                               std::function<void(std::shared_ptr<const LayerDistances>)> done) {
+  if (source.kind() != LayerKind::Dataset)
+    throw InputError("distance colouring needs a point dataset as the source");
+  const LayerData s = dataOf(source), t = dataOf(target);
+  return app.tasks.run(QObject::tr("Distances %1 to %2").arg(s.name, t.name), [s, t, params, done](
+                                                                                   Progress& progress) {
+    auto out = std::make_shared<LayerDistances>();
+    PointCloud target_cloud;
+    if (t.dataset) {
+      target_cloud = t.dataset->merged(false);
+      target_cloud.removeNonFinite();
+    }
+    const std::size_t n = s.dataset->scans.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      Progress p = progress.sub(double(i) / double(n), double(i + 1) / double(n));
+      const Scan& scan = s.dataset->scans[i];
+      const RigidTransform scan_to_world = s.to_world * scan.pose;
+      DistanceResult r =
+          t.dataset ? cloudToCloudDistances(scan.cloud, scan_to_world, target_cloud, t.to_world,
+                                            params, &p)
+                    : cloudToMeshDistances(scan.cloud, scan_to_world, t.model->mesh, t.to_world,
+                                           params, &p);
+      out->all.distances.insert(out->all.distances.end(), r.distances.begin(), r.distances.end());
+      out->per_scan.push_back(std::move(r.distances));
+    }
+    summarizeDistances(out->all);
+    return [out, done] { done(out); };
+  });
+}
+
+}  // namespace plumb::ui

@@ -1,0 +1,43 @@
+#pragma once
+// The registration workflow's background work, on the same core calls as plumb-cli register
+// (makeRegistrationInput + extractFeatures / registerData, computeDistances): each function
+// starts a Task that copies what it needs from the layers, runs off the UI thread, and hands
+// its result back on the UI thread.
+#include <functional>
+#include <memory>
+
+#include "quality/cloud_distance.hpp"
+#include "registration/auto/registration_pipeline.hpp"
+
+namespace plumb::ui {
+
+struct AppContext;
+class Layer;
+class Task;
+
+/// Features of each layer in its own data frame (a scan: planes, openings, segments; a model:
+/// sharp edges), shown as overlays under the layers (replacing earlier ones).
+Task* startFeatureDetection(AppContext& app, Layer& source, Layer& target,
+                            const PipelineParams& params, std::function<void()> done = {});
+
+/// registerData(source, target) with both sides in world coordinates (their current
+/// transforms). `use_features`: the layers' detected overlays replace extraction. The result's
+/// transform maps the source's world position to its registered one.
+Task* startRegistration(AppContext& app, Layer& source, Layer& target, const PipelineParams& params,
+                        bool use_features,
+                        std::function<void(std::shared_ptr<const PipelineResult>)> done);
+
+/// Per-scan distances of a dataset layer to the target (cloud-to-cloud for a dataset,
+/// cloud-to-mesh for a model), as shown (current transforms).
+struct LayerDistances {
+  std::vector<std::vector<float>> per_scan;
+  DistanceResult all;  ///< statistics over all scans (distances concatenated)
+};
+Task* startDistanceComputation(AppContext& app, Layer& source, Layer& target,
+                               const DistanceParams& params,
+                               std::function<void(std::shared_ptr<const LayerDistances>)> done);
+
+/// The overlay child of a layer holding detected features, or nullptr.
+Layer* featureOverlay(const Layer& layer);
+
+}  // namespace plumb::ui

@@ -1,0 +1,51 @@
+#include "ui/tasks/export_tasks.hpp"
+
+#include "common/error.hpp"
+#include "io/io.hpp"
+#include "ui/app_context.hpp"
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/layer_transform.hpp"
+#include "ui/panels/log_panel.hpp"
+#include "ui/tasks/task_manager.hpp"
+
+namespace plumb::ui {
+
+namespace {
+void logResult(AppContext& app, Task* task, const QString& what, const QString& path) {
+  QObject::connect(task, &Task::finished, &app.log, [&app, what, path](bool ok, const QString& msg) {
+    if (ok) app.log.info(QObject::tr("%1 written to %2").arg(what, path));
+    else app.log.error(QObject::tr("Cannot write %1: %2").arg(path, msg));
+  });
+}
+}  // namespace
+
+Task* exportRegisteredDataset(AppContext& app, const Layer& layer, const QString& path) {
+  if (layer.kind() != LayerKind::Dataset)
+    throw InputError("export: '" + layer.name().toStdString() + "' is not a point dataset");
+  const auto data = static_cast<const DatasetLayer&>(layer).sharedDataset();
+  const RigidTransform T = layerTransform(layer);
+  Task* task = app.tasks.run(QObject::tr("Exporting %1").arg(layer.name()),
+                             [data, T, path](Progress& progress) -> Task::Apply {
+                               Dataset moved = *data;
+                               for (auto& scan : moved.scans) {
+                                 scan.pose = T * scan.pose;
+                                 scan.has_pose = true;
+                               }
+                               writeDataset(path.toStdString(), moved, {}, &progress);
+                               return {};
+                             });
+  logResult(app, task, QObject::tr("Registered %1").arg(layer.name()), path);
+  return task;
+}
+
+Task* exportTransform(AppContext& app, const Layer& layer, const QString& path) {
+  const RigidTransform T = layerTransform(layer);
+  Task* task = app.tasks.run(QObject::tr("Exporting transform"), [T, path](Progress&) -> Task::Apply {
+    writeTransformFile(path.toStdString(), T);
+    return {};
+  });
+  logResult(app, task, QObject::tr("Transform of %1").arg(layer.name()), path);
+  return task;
+}
+
+}  // namespace plumb::ui
