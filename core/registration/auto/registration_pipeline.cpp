@@ -119,6 +119,59 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
   return first;
 }
 
+namespace {
+
+const PointCloud* refinementTarget(const RegistrationSide& target, const PipelineParams& p,
+                                   PointCloud& storage) {
+  if (!target.isModel()) return target.cloud;
+  if (target.model_samples) return target.model_samples;
+  storage = sampleMeshSurface(target.model->mesh, p.model_sample_spacing, p.seed);
+  return &storage;
+}
+
+/// Beyond the papers: two clearly different hypotheses scored almost the same on features
+/// (a nearly symmetric feature layout, e.g. mirrored dwellings). Both are refined on points;
+/// when one leaves clearly fewer source points unexplained (1 - refined overlap ratio), it
+/// wins and
+/// the result says so; otherwise the result stays Ambiguous.
+void resolveAmbiguity(const RegistrationSide& source, const RegistrationSide& target,
+                      const PipelineParams& p, PipelineResult& out, Progress* progress) {
+  PointCloud sampled;
+  const PointCloud* tc = refinementTarget(target, p, sampled);
+  if (!source.cloud || !tc) return;
+  auto rp = p.refinement;
+  rp.seed = p.seed;
+  RefineResult a = refineRegistration(*source.cloud, *tc, out.global.transform, rp, progress);
+  RefineResult b = refineRegistration(*source.cloud, *tc, out.global.runner_up->transform, rp, progress);
+  const double hi = std::max(a.overlap, b.overlap), lo = std::min(a.overlap, b.overlap);
+  std::ostringstream msg;
+  msg << "ambiguity: refined point overlap " << a.overlap << " (best) vs " << b.overlap
+      << " (runner-up)";
+  out.global.figures.push_back({"refined overlap of best hypothesis", a.overlap});
+  out.global.figures.push_back({"refined overlap of runner-up", b.overlap});
+  // Unexplained fractions: points of the source without a target match after refinement.
+  if (hi - lo < p.min_overlap_gap || (1.0 - lo) < p.min_unexplained_ratio * (1.0 - hi)) {
+    msg << ": too close to decide";
+    out.log.push_back(msg.str());
+    return;
+  }
+  const bool swap = b.overlap > a.overlap;
+  if (swap) {
+    Hypothesis old{out.global.transform, out.global.score, "previous best"};
+    out.global.transform = out.global.runner_up->transform;
+    out.global.score = out.global.runner_up->score;
+    out.global.runner_up = old;
+    out.global.relative_gap = old.score > 0 ? (out.global.score - old.score) / old.score : 0.0;
+  }
+  msg << ": resolved in favour of the " << (swap ? "runner-up" : "best") << " hypothesis";
+  out.log.push_back(msg.str());
+  out.global.status = RegistrationStatus::Success;
+  out.global.message += "; " + msg.str();
+  out.refinement = swap ? std::move(b) : std::move(a);
+}
+
+}  // namespace
+
 PipelineResult registerData(const RegistrationSide& source_in, const RegistrationSide& target_in,
                             const PipelineParams& p, Progress* progress) {
   PipelineResult out;
@@ -152,17 +205,16 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
   const bool refine = p.refine || p.method == RegistrationMethod::Icp;
   if (out.global.ok() && refine) {
     PointCloud sampled;
-    const PointCloud* tc = target.cloud;
-    if (target.isModel()) {
-      sampled = sampleMeshSurface(target.model->mesh, p.model_sample_spacing, p.seed);
-      tc = &sampled;
-    }
+    const PointCloud* tc = refinementTarget(target, p, sampled);
     const PointCloud* sc = source.cloud;
     if (sc && tc) {
       auto rp = p.refinement;
       rp.seed = p.seed;
       out.refinement = refineRegistration(*sc, *tc, out.global.transform, rp, progress);
     }
+  } else if (out.global.status == RegistrationStatus::Ambiguous && out.global.runner_up &&
+             refine && p.resolve_ambiguity_by_points) {
+    resolveAmbiguity(source, target, p, out, progress);
   }
   out.seconds_refine = since(t0);
   out.report = assessRegistration(out.global, out.refinement ? &*out.refinement : nullptr, p.quality);

@@ -38,6 +38,9 @@ struct RegistrationSide {
   std::optional<Eigen::Vector3d> viewpoint;
   /// Precomputed features (skips extraction when set).
   const FeatureSet* features = nullptr;
+  /// Model only: points already sampled on its surface (sampleMeshSurface) for refinement,
+  /// reused across registrations against the same model; sampled on demand when null.
+  const PointCloud* model_samples = nullptr;
   bool isModel() const { return model != nullptr; }
 };
 
@@ -55,6 +58,15 @@ struct PipelineParams {
   QualityParams quality;
   /// Spacing of the points sampled on a model for refinement, metres, [0.005, 1].
   double model_sample_spacing = 0.05;
+  /// When the global step is Ambiguous (two clearly different hypotheses with almost the same
+  /// feature score), refine both and keep the one whose refined point overlap is clearly
+  /// larger (beyond the papers). Needs refinement on.
+  bool resolve_ambiguity_by_points = true;
+  /// "Clearly larger": by at least this absolute overlap ratio, [0, 1] ...
+  double min_overlap_gap = 0.005;
+  /// ... and the loser leaves at least this many times more source points unexplained
+  /// (1 - overlap) than the winner, [1, 100].
+  double min_unexplained_ratio = 2.0;
   std::uint64_t seed = 1;
 };
 
