@@ -45,10 +45,21 @@ have_display() { [[ -n "${DISPLAY:-}" || -n "${WAYLAND_DISPLAY:-}" ]]; }
 demo() {
   deps
   build
-  "$BUILD/app/plumb-cli" demo -o "$BUILD/demo-output" "$@"
+  local out="$BUILD/demo-output"
+  # Simulated survey of the "house" preset: indoor TLS (perturbed), outdoor MMS, the BIM model.
+  "$BUILD/app/plumb-cli" simulate --demo -o "$out" "$@"
+  # A project with the three layers (the model hidden; the indoor scans register onto it).
+  cat > "$out/demo.plumb.json" <<'JSON'
+{"plumb-project": 1,
+ "layers": [{"file": "indoor.e57"}, {"file": "outdoor.e57"},
+            {"file": "model.ply", "visible": false}],
+ "registration": {"source": 0, "target": 2, "params": {"method": "auto"}}}
+JSON
   if have_display && [[ -x "$BUILD/app/plumb" ]]; then
-    exec "$BUILD/app/plumb" --project "$BUILD/demo-output/demo.plumb.json"
+    exec "$BUILD/app/plumb" --project "$out/demo.plumb.json" --register 0,2
   fi
+  "$BUILD/app/plumb-cli" register "$out/indoor.e57" "$out/model.ply" \
+    --transform "$out/indoor_to_model.json" --report "$out/report.json"
 }
 
 run_tests() {

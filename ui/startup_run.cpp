@@ -3,15 +3,11 @@
 #include <QCoreApplication>
 #include <QTimer>
 
-#include <algorithm>
-#include <array>
 #include <iostream>
 
 #include "common/error.hpp"
 
-#include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
-#include "ui/layers/scan_layer.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/main_window.hpp"
 #include "ui/panels/log_panel.hpp"
@@ -24,42 +20,6 @@
 
 namespace plumb::ui {
 
-namespace {
-
-/// Box of the 3%..97% quantiles per axis of a sample of a dataset's points (world); the
-/// layer's bounds for other layers.
-Bounds coreBounds(const Layer& layer) {
-  if (layer.kind() != LayerKind::Dataset) return layer.bounds();
-  std::array<std::vector<double>, 3> axes;
-  for (const ScanLayer* scan : static_cast<const DatasetLayer&>(layer).scans()) {
-    const auto& pts = scan->scan().cloud.positions;
-    const Eigen::Matrix4d m = scan->localToWorld();
-    const std::size_t step = std::max<std::size_t>(1, pts.size() / 20000);
-    for (std::size_t i = 0; i < pts.size(); i += step) {
-      if (!pts[i].allFinite()) continue;
-      const Eigen::Vector3d w = (m * pts[i].cast<double>().homogeneous()).head<3>();
-      for (int k = 0; k < 3; ++k) axes[std::size_t(k)].push_back(w[k]);
-    }
-  }
-  if (axes[0].empty()) return layer.bounds();
-  Bounds b;
-  Eigen::Vector3d lo, hi;
-  for (int k = 0; k < 3; ++k) {
-    auto& v = axes[std::size_t(k)];
-    auto at = [&v](double q) {
-      const auto i = static_cast<std::size_t>(q * double(v.size() - 1));
-      std::nth_element(v.begin(), v.begin() + long(i), v.end());
-      return v[i];
-    };
-    lo[k] = at(0.03);
-    hi[k] = at(0.97);
-  }
-  b.extend(lo);
-  b.extend(hi);
-  return b;
-}
-
-}  // namespace
 
 std::optional<std::pair<int, int>> parseRegisterPair(const QString& text) {
   const QStringList parts = text.split(',');
@@ -84,7 +44,11 @@ void StartupRun::start() {
   AppContext& app = window_.context();
   if (!options_.project.isEmpty()) {
     try {
-      openProject(app, options_.project, [this](bool ok) { loaded(ok); });
+      openProject(app, options_.project,
+                  [this](bool ok, const std::vector<Layer*>& layers) {
+                    layers_ = layers;
+                    loaded(ok);
+                  });
     } catch (const std::exception& e) {
       app.log.error(QString::fromUtf8(e.what()));
       QTimer::singleShot(0, this, [this] { finish(false); });
@@ -125,13 +89,8 @@ void StartupRun::loaded(bool ok) {
 void StartupRun::registerPair() {
   AppContext& app = window_.context();
   const auto [s, t] = *options_.register_pair;
-  // Project: its registrable layers in order; files: command-line order.
-  std::vector<Layer*> layers = layers_;
-  if (!options_.project.isEmpty()) {
-    layers.clear();
-    for (const auto& l : app.scene.layers())
-      if (isRegistrable(l.get())) layers.push_back(l.get());
-  }
+  // Files: command-line order; project: its layers' order.
+  const std::vector<Layer*>& layers = layers_;
   const int n = int(layers.size());
   if (s >= n || t >= n || s == t || !layers[std::size_t(s)] || !layers[std::size_t(t)]) {
     app.log.error(tr("--register %1,%2: needs two different indices below %3").arg(s).arg(t).arg(n));
@@ -159,7 +118,7 @@ void StartupRun::finish(bool ok) {
   RegistrationPanel& panel = *app.registration;
   if (options_.register_pair && panel.sourceLayer() && panel.targetLayer()) {
     // The bulk of the registered source, with a margin (scans see far ground through windows).
-    Bounds b = coreBounds(*panel.sourceLayer());
+    Bounds b = bulkBounds(*panel.sourceLayer());
     const Eigen::Vector3d margin = 0.15 * b.size();
     b.extend(Eigen::Vector3d(b.min - margin));
     b.extend(Eigen::Vector3d(b.max + margin));

@@ -18,7 +18,7 @@ namespace plumb {
 struct DistanceParams {
   /// Search radius, metres, [0.001, 100]: points with nothing closer get NaN (no match; they
   /// are outside the overlap and not counted in the statistics).
-  double max_distance = 1.0;
+  double max_distance = 0.1;
   static const ParamSchema<DistanceParams>& schema();
 };
 

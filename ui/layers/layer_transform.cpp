@@ -2,8 +2,12 @@
 
 #include <QFileInfo>
 
+#include <algorithm>
+#include <array>
+
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/model_layer.hpp"
+#include "ui/layers/scan_layer.hpp"
 #include "ui/layers/scene.hpp"
 
 namespace plumb::ui {
@@ -30,6 +34,39 @@ QString layerSource(const Layer& layer) {
   if (layer.kind() == LayerKind::Dataset) p = static_cast<const DatasetLayer&>(layer).dataset().source;
   if (layer.kind() == LayerKind::Model) p = static_cast<const ModelLayer&>(layer).model().source;
   return QString::fromStdString(p.string());
+}
+
+/// Box of the 3%..97% quantiles per axis of a sample of a dataset's points (world); the
+/// layer's bounds for other layers.
+Bounds bulkBounds(const Layer& layer) {
+  if (layer.kind() != LayerKind::Dataset) return layer.bounds();
+  std::array<std::vector<double>, 3> axes;
+  for (const ScanLayer* scan : static_cast<const DatasetLayer&>(layer).scans()) {
+    const auto& pts = scan->scan().cloud.positions;
+    const Eigen::Matrix4d m = scan->localToWorld();
+    const std::size_t step = std::max<std::size_t>(1, pts.size() / 20000);
+    for (std::size_t i = 0; i < pts.size(); i += step) {
+      if (!pts[i].allFinite()) continue;
+      const Eigen::Vector3d w = (m * pts[i].cast<double>().homogeneous()).head<3>();
+      for (int k = 0; k < 3; ++k) axes[std::size_t(k)].push_back(w[k]);
+    }
+  }
+  if (axes[0].empty()) return layer.bounds();
+  Bounds b;
+  Eigen::Vector3d lo, hi;
+  for (int k = 0; k < 3; ++k) {
+    auto& v = axes[std::size_t(k)];
+    auto at = [&v](double q) {
+      const auto i = static_cast<std::size_t>(q * double(v.size() - 1));
+      std::nth_element(v.begin(), v.begin() + long(i), v.end());
+      return v[i];
+    };
+    lo[k] = at(0.03);
+    hi[k] = at(0.97);
+  }
+  b.extend(lo);
+  b.extend(hi);
+  return b;
 }
 
 Layer* findLayerBySource(const Scene& scene, const QString& path) {

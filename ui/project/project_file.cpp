@@ -79,7 +79,7 @@ json readJson(const QString& path) {
 
 }  // namespace
 
-void openProject(AppContext& app, const QString& path, std::function<void(bool)> done) {
+void openProject(AppContext& app, const QString& path, ProjectDone done) {
   const json j = readJson(path);
   const std::string file = path.toStdString();
   if (!j.is_object() || !j.contains("plumb-project"))
@@ -137,7 +137,7 @@ void openProject(AppContext& app, const QString& path, std::function<void(bool)>
       if (Layer* s = at(source)) app.registration->setSourceLayer(s);
       if (Layer* t = at(target)) app.registration->setTargetLayer(t);
     }
-    if (done) done(*all_ok);
+    if (done) done(*all_ok, *layers);
   };
   if (files.isEmpty()) {
     finish();

@@ -8,19 +8,24 @@
 #include <QString>
 
 #include <functional>
+#include <vector>
 
 namespace plumb::ui {
 
 struct AppContext;
+class Layer;
+
+/// ok: every file loaded; layers: per project entry, in file order (nullptr if it failed).
+using ProjectDone = std::function<void(bool ok, const std::vector<Layer*>& layers)>;
 
 constexpr int kProjectVersion = 1;
 
 /// Writes the project (atomic). Throws FileError.
 void saveProject(const AppContext& app, const QString& path);
 /// Clears the scene, loads the project's files in the background, applies their transforms
-/// and the registration setup. `done(ok)` runs when every file finished (ok: all loaded).
+/// and the registration setup. `done` runs when every file finished (ok: all loaded).
 /// Throws FileError when the project file itself cannot be read or is invalid.
-void openProject(AppContext& app, const QString& path, std::function<void(bool ok)> done = {});
+void openProject(AppContext& app, const QString& path, ProjectDone done = {});
 
 /// True for a path named like a project file (*.plumb.json or *.json holding a project).
 bool looksLikeProject(const QString& path);

@@ -136,6 +136,8 @@ RegistrationPanel::RegistrationPanel(AppContext& app, QWidget* parent)
 
 RegistrationPanel::~RegistrationPanel() = default;
 
+bool RegistrationPanel::legendVisible() const { return legend_->visible(); }
+
 void RegistrationPanel::refreshParams() {
   for (auto& [key, panel] : panels_) panel->refresh();
   distance_panel_->refresh();
@@ -187,7 +189,7 @@ void RegistrationPanel::forgetLayer(Layer* layer) {
     pushed_ = nullptr;
     before_->setChecked(false);
   }
-  if (distances_ && layer) legend_->hide();
+  if (layer == sourceLayer() || layer == targetLayer()) legend_->hide();
   updateEnabled();
 }
 

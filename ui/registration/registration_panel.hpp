@@ -59,6 +59,7 @@ class RegistrationPanel : public QWidget {
   std::shared_ptr<const LayerDistances> lastDistances() const { return distances_; }
   const QualityReportView& report() const { return *report_; }
   const HistogramWidget& histogram() const { return *histogram_; }
+  bool legendVisible() const;
 
  signals:
   void featuresDetected(bool ok);

@@ -1,0 +1,348 @@
+// GUI test of the registration workflow on simulated demo data (core/simulation): the indoor
+// TLS scans of the "house" preset, perturbed by a known rigid transform, and the BIM model.
+// Through the Registration dock's buttons: detect features, register (background task), check
+// the transform against the simulation's ground truth, colour by distance, undo/redo, manual
+// point pairs + ICP, project save/open, exports. Screenshots go to
+// <build>/test-artifacts/gui_registration/.
+#include <QApplication>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTest>
+#include <QUndoStack>
+
+#include <fstream>
+#include <random>
+
+#include "common/error.hpp"
+#include "io/io.hpp"
+#include "simulation/building_generator.hpp"
+#include "simulation/presets.hpp"
+#include "simulation/survey.hpp"
+#include "support/test_support.hpp"
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/feature_layer.hpp"
+#include "ui/layers/layer_transform.hpp"
+#include "ui/layers/scan_layer.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/main_window.hpp"
+#include "ui/panels/histogram_widget.hpp"
+#include "ui/panels/log_panel.hpp"
+#include "ui/project/project_file.hpp"
+#include "ui/registration/manual_align_panel.hpp"
+#include "ui/registration/quality_report_view.hpp"
+#include "ui/registration/registration_panel.hpp"
+#include "ui/registration/registration_tasks.hpp"
+#include "ui/tasks/export_tasks.hpp"
+#include "ui/tasks/task.hpp"
+#include "ui/tasks/task_manager.hpp"
+#include "ui/view/screenshot.hpp"
+#include "ui/view/standard_view.hpp"
+#include "ui/view/surface_format.hpp"
+#include "ui/view/vtk_view_widget.hpp"
+
+using namespace plumb;
+using namespace plumb::ui;
+
+namespace {
+
+constexpr int kTaskTimeoutMs = 180000;
+
+/// Pixels that are not background grey: saturated or bright.
+int countNonBackground(const QImage& image) {
+  int n = 0;
+  const QImage img = image.convertToFormat(QImage::Format_RGB32);
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x) {
+      const QColor c = img.pixelColor(x, y);
+      if (c.saturation() > 90 || c.value() > 140) ++n;
+    }
+  return n;
+}
+
+/// Pixels whose hue is within 20 degrees of `hue` and clearly saturated.
+int countHue(const QImage& image, int hue) {
+  int n = 0;
+  const QImage img = image.convertToFormat(QImage::Format_RGB32);
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x) {
+      const QColor c = img.pixelColor(x, y);
+      if (c.saturation() > 120 && c.value() > 80 && c.hue() >= 0 &&
+          std::min(std::abs(c.hue() - hue), 360 - std::abs(c.hue() - hue)) <= 20)
+        ++n;
+    }
+  return n;
+}
+
+struct Demo {
+  std::filesystem::path indoor, model;
+  RigidTransform truth;  ///< perturbed indoor dataset frame -> model frame
+};
+
+/// The demo survey of the house preset without the MMS pass (indoor only), written as E57,
+/// and the model as PLY. Generated once per run.
+const Demo& demo() {
+  static const Demo d = [] {
+    Demo out;
+    const auto dir = test::scratchDir("gui_registration_data");
+    const GeneratedBuilding b = generateBuilding(buildingPreset("house"));
+    SurveyRequest r = demoSurveyRequest(b.spec, 7);
+    r.mms = false;
+    const SimulatedSurvey s = simulateSurvey(b.model, b.glass_triangles, b.truth.footprint, r);
+    out.indoor = dir / "indoor.e57";
+    out.model = dir / "model.ply";
+    writeDataset(out.indoor, s.datasets.at(0).data);
+    writeModel(out.model, b.model);
+    out.truth = s.datasets.at(0).truth;
+    return out;
+  }();
+  return d;
+}
+
+}  // namespace
+
+class GuiRegistrationTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() { demo(); }
+
+  void init() {
+    window_ = std::make_unique<MainWindow>();
+    window_->resize(1400, 900);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    AppContext& app = window_->context();
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    window_->openFiles({q(demo().indoor), q(demo().model)});
+    QVERIFY(idle.wait(60000));
+    QVERIFY2(app.log.errorCount() == 0, qPrintable(app.log.toPlainText()));
+    indoor_ = findLayerBySource(app.scene, q(demo().indoor));
+    model_ = findLayerBySource(app.scene, q(demo().model));
+    QVERIFY(indoor_ && model_);
+    app.registration->setSourceLayer(indoor_);
+    app.registration->setTargetLayer(model_);
+  }
+  void cleanup() { window_.reset(); }
+
+  void detectAndRegisterThroughTheDock() {
+    AppContext& app = window_->context();
+    RegistrationPanel& panel = *app.registration;
+    auto* detect = panel.findChild<QPushButton*>("detectFeatures");
+    auto* reg = panel.findChild<QPushButton*>("register");
+    QVERIFY(detect && reg && detect->isEnabled());
+
+    QSignalSpy detected(&panel, &RegistrationPanel::featuresDetected);
+    QTest::mouseClick(detect, Qt::LeftButton);
+    QVERIFY(detected.wait(kTaskTimeoutMs));
+    QCOMPARE(detected.at(0).at(0).toBool(), true);
+    auto* scan_features = static_cast<FeatureLayer*>(featureOverlay(*indoor_));
+    auto* model_features = static_cast<FeatureLayer*>(featureOverlay(*model_));
+    QVERIFY(scan_features && model_features);
+    QVERIFY(scan_features->features().planes.size() >= 10);
+    QVERIFY(scan_features->features().segments.size() >= 10);
+    QVERIFY(model_features->features().segments.size() >= 50);  // sharp edges of the model
+    const QImage features = grabView(app.view);
+    saveScreenshot(app.view, artefact("features.png"));
+    QVERIFY(countNonBackground(features) > features.width() * features.height() / 50);
+
+    const Eigen::Vector3d features_before = scan_features->bounds().center();
+    QSignalSpy finished(&panel, &RegistrationPanel::registrationFinished);
+    QTest::mouseClick(reg, Qt::LeftButton);
+    QVERIFY(finished.wait(kTaskTimeoutMs));
+    QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(panel.report().verdict()));
+    const RigidTransform T = layerTransform(*indoor_);
+    const double rot = RigidTransform::rotationErrorDeg(T, demo().truth);
+    const double shift = RigidTransform::translationError(T, demo().truth);
+    QVERIFY2(rot < 0.2 && shift < 0.03, qPrintable(QString("rotation error %1 deg, translation error %2 m").arg(rot).arg(shift)));
+    QVERIFY(panel.report().rowCount() >= 5);
+    QVERIFY(panel.report().verdict().contains("succeeded"));
+    // The feature overlay moved with the dataset.
+    QVERIFY((scan_features->bounds().center() - T.apply(features_before)).norm() < 1e-6);
+
+    // The registered pair on screen: shaded model (IFC type colours) and the points.
+    frameIndoor();
+    const QImage image = grabView(app.view);
+    saveScreenshot(app.view, artefact("registered.png"));
+    QVERIFY(countNonBackground(image) > image.width() * image.height() / 20);
+
+    // Before/after toggle and undo/redo of the applied transform.
+    panel.showBefore(true);
+    QVERIFY(layerTransform(*indoor_).isIdentity());
+    panel.showBefore(false);
+    QVERIFY(RigidTransform::rotationErrorDeg(layerTransform(*indoor_), T) < 1e-9);
+    QVERIFY(app.undo.canUndo());
+    app.undo.undo();
+    QVERIFY(layerTransform(*indoor_).isIdentity());
+    app.undo.redo();
+    QVERIFY(RigidTransform::translationError(layerTransform(*indoor_), T) < 1e-12);
+
+    // Visual QA: distances to the model, legend and histogram.
+    QSignalSpy distances(&panel, &RegistrationPanel::distancesComputed);
+    QTest::mouseClick(panel.findChild<QPushButton*>("colourByDistance"), Qt::LeftButton);
+    QVERIFY(distances.wait(kTaskTimeoutMs));
+    QVERIFY(distances.at(0).at(0).toBool());
+    const auto d = panel.lastDistances();
+    QVERIFY(d && d->all.matched > d->all.distances.size() / 2);
+    // Registered on its model: the median distance is at the noise level (2 mm sigma TLS).
+    QVERIFY2(d->all.median < 0.01, qPrintable(QString::number(d->all.median)));
+    // Histogram over [0, 0.1 m): most matched points in the bins below 1 cm.
+    const DistanceHistogram& h = panel.histogram().histogram();
+    QCOMPARE(h.hi, 0.1);
+    std::size_t in_bins = 0, below_cm = 0;
+    for (std::size_t i = 0; i < h.counts.size(); ++i) {
+      in_bins += h.counts[i];
+      if ((double(i) + 1) * h.binWidth() <= 0.01 + 1e-12) below_cm += h.counts[i];
+    }
+    QCOMPARE(in_bins, d->all.matched);
+    QVERIFY2(below_cm > in_bins / 2, qPrintable(QString("%1 of %2").arg(below_cm).arg(in_bins)));
+    app.scene.removeLayer(model_features);
+    model_->setVisible(false);
+    app.scene.layerChanged(model_);
+    applyStandardView(app.view.renderer(), StandardView::Top);
+    frameIndoor();
+    QVERIFY(panel.legendVisible());
+    const QImage qa = grabView(app.view);
+    saveScreenshot(app.view, artefact("distance_colours.png"));
+    // Points near the model are blue on the distance ramp: many blue pixels.
+    const int blue = countHue(qa, 240);
+    QVERIFY2(blue > qa.width() * qa.height() / 100, qPrintable(QString::number(blue)));
+
+    // Reverting the result puts the source back.
+    model_->setVisible(true);
+    panel.revert();
+    QVERIFY(layerTransform(*indoor_).isIdentity());
+  }
+
+  void manualPairsThenIcp() {
+    AppContext& app = window_->context();
+    ManualAlignPanel& manual = *app.manual;
+    // Four well-spread points of the scans (data frame) and where the truth puts them.
+    const Dataset& data = static_cast<DatasetLayer*>(indoor_)->dataset();
+    const PointCloud cloud = data.merged();
+    const Bounds b = cloud.bounds();
+    const Eigen::Vector3d corners[] = {b.min, {b.max.x(), b.min.y(), b.min.z()},
+                                       {b.min.x(), b.max.y(), b.max.z()}, b.max};
+    std::mt19937 rng(3);
+    for (const auto& c : corners) {
+      std::size_t best = 0;
+      double best_d = 1e30;
+      for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const double dd = (cloud.world(i) - c).squaredNorm();
+        if (dd < best_d) best_d = dd, best = i;
+      }
+      // A picking error of up to 5 cm on the target.
+      std::uniform_real_distribution<double> e(-0.05, 0.05);
+      const Eigen::Vector3d p = cloud.world(best);
+      manual.addPair(p, demo().truth.apply(p) + Eigen::Vector3d(e(rng), e(rng), e(rng)));
+    }
+    QCOMPARE(manual.pairCount(), 4);
+    QVERIFY(manual.align());
+    for (int i = 0; i < 4; ++i) QVERIFY(manual.residual(i) >= 0 && manual.residual(i) < 0.15);
+    const RigidTransform coarse = layerTransform(*indoor_);
+    QVERIFY(RigidTransform::rotationErrorDeg(coarse, demo().truth) < 2.0);
+    QVERIFY(RigidTransform::translationError(coarse, demo().truth) < 0.2);
+
+    QSignalSpy finished(app.registration, &RegistrationPanel::registrationFinished);
+    QVERIFY(manual.refine());
+    QVERIFY(finished.wait(kTaskTimeoutMs));
+    QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(app.registration->report().verdict()));
+    const RigidTransform fine = layerTransform(*indoor_);
+    QVERIFY2(RigidTransform::rotationErrorDeg(fine, demo().truth) < 0.1 &&
+                 RigidTransform::translationError(fine, demo().truth) < 0.02,
+             qPrintable(QString("%1 deg %2 m")
+                            .arg(RigidTransform::rotationErrorDeg(fine, demo().truth))
+                            .arg(RigidTransform::translationError(fine, demo().truth))));
+    // Undo goes back to the manual alignment, then to the identity.
+    app.undo.undo();
+    QVERIFY(RigidTransform::translationError(layerTransform(*indoor_), coarse) < 1e-12);
+    app.undo.undo();
+    QVERIFY(layerTransform(*indoor_).isIdentity());
+  }
+
+  void projectRoundTripAndExports() {
+    AppContext& app = window_->context();
+    const RigidTransform T = demo().truth;
+    setLayerTransform(app.scene, *indoor_, T);
+    app.registration->params().refinement.final_distance = 0.03;
+    const QString project = artefact("demo.plumb.json");
+    saveProject(app, project);
+
+    // Exports of the registered cloud (E57 with poses) and of the transform (JSON).
+    const QString e57 = artefact("indoor_registered.e57");
+    const QString json = artefact("indoor_transform.json");
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    exportRegisteredDataset(app, *indoor_, e57);
+    exportTransform(app, *indoor_, json);
+    QVERIFY(idle.wait(kTaskTimeoutMs));
+    QCOMPARE(app.log.errorCount(), 0);
+    QVERIFY(RigidTransform::translationError(readTransformFile(json.toStdString()), T) < 1e-9);
+    const Dataset exported = readDataset(e57.toStdString());
+    const Dataset& original = static_cast<DatasetLayer*>(indoor_)->dataset();
+    QCOMPARE(exported.pointCount(), original.pointCount());
+    for (std::size_t i = 0; i < original.scans.size(); ++i)
+      QVERIFY(RigidTransform::translationError(exported.scans[i].pose, T * original.scans[i].pose) < 1e-6);
+
+    // Reopen: the scene is replaced by the project's layers with their transforms.
+    app.registration->params().refinement.final_distance = 0.05;
+    bool done = false, ok = false;
+    std::vector<Layer*> loaded;
+    openProject(app, project, [&](bool all, const std::vector<Layer*>& layers) {
+      done = true, ok = all, loaded = layers;
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(done, 60000);
+    QVERIFY(ok);
+    QCOMPARE(app.scene.layers().size(), std::size_t{2});
+    Layer* indoor = findLayerBySource(app.scene, q(demo().indoor));
+    QVERIFY(indoor);
+    QCOMPARE(loaded.size(), std::size_t{2});
+    // Entries in saved (scene) order, each the layer read from its file.
+    Layer* model = findLayerBySource(app.scene, q(demo().model));
+    QVERIFY((loaded[0] == indoor && loaded[1] == model) || (loaded[0] == model && loaded[1] == indoor));
+    QVERIFY(RigidTransform::translationError(layerTransform(*indoor), T) < 1e-9);
+    QCOMPARE(app.registration->sourceLayer(), indoor);
+    QCOMPARE(app.registration->targetLayer(), findLayerBySource(app.scene, q(demo().model)));
+    QCOMPARE(app.registration->params().refinement.final_distance, 0.03);
+  }
+
+  void projectErrorsNameTheFile() {
+    const QString bad = artefact("bad.plumb.json");
+    {
+      std::ofstream out(bad.toStdString());
+      out << "{\"plumb-project\": 1, \"layers\": [ {\"visible\": true} ]}";
+    }
+    try {
+      openProject(window_->context(), bad);
+      QFAIL("no error");
+    } catch (const FileError& e) {
+      QVERIFY(QString(e.what()).contains("bad.plumb.json"));
+      QVERIFY(QString(e.what()).contains("layers[0]"));
+    }
+  }
+
+ private:
+  /// Zooms on the bulk of the indoor scans (they also see far ground through the windows).
+  void frameIndoor() {
+    AppContext& app = window_->context();
+    double b[6];
+    app.scene.renderBounds(bulkBounds(*indoor_), b);
+    zoomToBounds(app.view.renderer(), b);
+  }
+  static QString q(const std::filesystem::path& p) { return QString::fromStdString(p.string()); }
+  QString artefact(const QString& name) {
+    static const auto dir = test::scratchDir("gui_registration");
+    return QString::fromStdString((dir / name.toStdString()).string());
+  }
+  std::unique_ptr<MainWindow> window_;
+  Layer* indoor_ = nullptr;
+  Layer* model_ = nullptr;
+};
+
+int main(int argc, char** argv) {
+  setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  QCoreApplication::setOrganizationName("PlumbTests");
+  GuiRegistrationTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_gui_registration.moc"
