@@ -18,6 +18,7 @@
 #include "simulation/building_generator.hpp"
 #include "simulation/presets.hpp"
 #include "simulation/survey.hpp"
+#include "gui/image_checks.hpp"
 #include "support/test_support.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/feature_layer.hpp"
@@ -42,36 +43,13 @@
 
 using namespace plumb;
 using namespace plumb::ui;
+using plumb::test::countColor;
+using plumb::test::countHue;
+using plumb::test::countNonBackground;
 
 namespace {
 
 constexpr int kTaskTimeoutMs = 180000;
-
-/// Pixels that are not background grey: saturated or bright.
-int countNonBackground(const QImage& image) {
-  int n = 0;
-  const QImage img = image.convertToFormat(QImage::Format_RGB32);
-  for (int y = 0; y < img.height(); ++y)
-    for (int x = 0; x < img.width(); ++x) {
-      const QColor c = img.pixelColor(x, y);
-      if (c.saturation() > 90 || c.value() > 140) ++n;
-    }
-  return n;
-}
-
-/// Pixels whose hue is within 20 degrees of `hue` and clearly saturated.
-int countHue(const QImage& image, int hue) {
-  int n = 0;
-  const QImage img = image.convertToFormat(QImage::Format_RGB32);
-  for (int y = 0; y < img.height(); ++y)
-    for (int x = 0; x < img.width(); ++x) {
-      const QColor c = img.pixelColor(x, y);
-      if (c.saturation() > 120 && c.value() > 80 && c.hue() >= 0 &&
-          std::min(std::abs(c.hue() - hue), 360 - std::abs(c.hue() - hue)) <= 20)
-        ++n;
-    }
-  return n;
-}
 
 struct Demo {
   std::filesystem::path indoor, model;

@@ -14,6 +14,7 @@
 
 #include <fstream>
 
+#include "gui/image_checks.hpp"
 #include "support/test_support.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/feature_layer.hpp"
@@ -33,35 +34,11 @@
 
 using namespace plumb;
 using namespace plumb::ui;
+using plumb::test::countColor;
+using plumb::test::countHue;
+using plumb::test::countNonBackground;
 
 namespace {
-
-/// Pixels of `image` within `tolerance` (per channel) of `color`.
-int countColor(const QImage& image, QColor color, int tolerance = 8) {
-  int n = 0;
-  const QImage img = image.convertToFormat(QImage::Format_RGB32);
-  for (int y = 0; y < img.height(); ++y)
-    for (int x = 0; x < img.width(); ++x) {
-      const QColor c = img.pixelColor(x, y);
-      if (std::abs(c.red() - color.red()) <= tolerance &&
-          std::abs(c.green() - color.green()) <= tolerance &&
-          std::abs(c.blue() - color.blue()) <= tolerance)
-        ++n;
-    }
-  return n;
-}
-
-/// Pixels that are not part of the (grey-blue) background gradient: saturated or bright.
-int countNonBackground(const QImage& image) {
-  int n = 0;
-  const QImage img = image.convertToFormat(QImage::Format_RGB32);
-  for (int y = 0; y < img.height(); ++y)
-    for (int x = 0; x < img.width(); ++x) {
-      const QColor c = img.pixelColor(x, y);
-      if (c.saturation() > 90 || c.value() > 140) ++n;
-    }
-  return n;
-}
 
 /// An ASCII PLY of a 20 m x 20 m grid of red points in the plane z = 0 (test input).
 std::filesystem::path writeRedGridPly(const std::filesystem::path& dir) {
