@@ -83,7 +83,12 @@ std::vector<Ring> alphaRings(const std::vector<K::Point_2>& pts, double alpha_ra
     const auto& c = f->vertex(2)->point();
     return CGAL::squared_radius(a, b, c) < r2;
   };
-  std::map<VH, std::vector<VH>> out_edges;
+  // Ordered by coordinates, not by handle (a memory address): ring starts and walk order, and
+  // so the simplified outlines and their areas, must not depend on the allocator.
+  struct ByPoint {
+    bool operator()(VH a, VH b) const { return a->point() < b->point(); }
+  };
+  std::map<VH, std::vector<VH>, ByPoint> out_edges;
   std::size_t edge_count = 0;
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
     if (!inside(f)) continue;
