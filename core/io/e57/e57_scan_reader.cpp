@@ -285,7 +285,10 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
       if (direct_colors) {  // Integer 0..255: the decoded values are already 8-bit
         for (std::size_t j = 0; j < m; ++j) {
           const std::uint32_t i = sel[j];
-          d[j] = {static_cast<std::uint8_t>(r[i]), static_cast<std::uint8_t>(g[i]), static_cast<std::uint8_t>(b[i])};
+          // A corrupted record can hold values outside the declared 0..255 limits: clamp, as
+          // converting an out-of-range double to uint8 is undefined (found by fuzz_e57).
+          auto to8 = [](double v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0)); };
+          d[j] = {to8(r[i]), to8(g[i]), to8(b[i])};
         }
       } else {
         for (std::size_t j = 0; j < m; ++j) {
