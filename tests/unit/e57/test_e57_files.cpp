@@ -94,42 +94,27 @@ TEST(E57Files, B2) {
   expectScan(d.scans[0], 2, kB2Min, kB2Max, kIrgb);
 }
 
-TEST(E57Files, BunnyFloat) {
-  const Dataset d = read("bunnyFloat.e57");
+// One cloud (the Stanford bunny, 30,571 points) in five encodings; ScaledInteger ones are
+// quantised, hence the 1e-6 m bound tolerance.
+struct BunnyEncoding {
+  const char* file;
+  double tolerance;
+};
+class E57Bunny : public ::testing::TestWithParam<BunnyEncoding> {};
+
+TEST_P(E57Bunny, ReadsTheWholeCloud) {
+  const Dataset d = read(GetParam().file);
   ASSERT_EQ(d.scans.size(), 1u);
   EXPECT_EQ(d.scans[0].name, "bunny");
-  expectScan(d.scans[0], 30571, kBunnyMin, kBunnyMax, {});
+  expectScan(d.scans[0], 30571, kBunnyMin, kBunnyMax, {}, GetParam().tolerance);
 }
 
-TEST(E57Files, BunnyInt19) {
-  const Dataset d = read("bunnyInt19.e57");
-  ASSERT_EQ(d.scans.size(), 1u);
-  expectScan(d.scans[0], 30571, kBunnyMin, kBunnyMax, {}, 1e-6);
-}
-
-TEST(E57Files, BunnyInt21) {
-  const Dataset d = read("bunnyInt21.e57");
-  ASSERT_EQ(d.scans.size(), 1u);
-  expectScan(d.scans[0], 30571, kBunnyMin, kBunnyMax, {}, 1e-6);
-}
-
-TEST(E57Files, BunnyInt24) {
-  const Dataset d = read("bunnyInt24.e57");
-  ASSERT_EQ(d.scans.size(), 1u);
-  expectScan(d.scans[0], 30571, kBunnyMin, kBunnyMax, {}, 1e-6);
-}
-
-TEST(E57Files, BunnyDouble) {
-  const Dataset d = read("libe57format_reference_bunnyDouble.e57");
-  ASSERT_EQ(d.scans.size(), 1u);
-  expectScan(d.scans[0], 30571, kBunnyMin, kBunnyMax, {});
-}
-
-TEST(E57Files, BunnyInt32) {
-  const Dataset d = read("libe57format_reference_bunnyInt32.e57");
-  ASSERT_EQ(d.scans.size(), 1u);
-  expectScan(d.scans[0], 30571, kBunnyMin, kBunnyMax, {}, 1e-6);
-}
+INSTANTIATE_TEST_SUITE_P(
+    Encodings, E57Bunny,
+    ::testing::Values(BunnyEncoding{"bunnyFloat.e57", 2e-6}, BunnyEncoding{"bunnyInt19.e57", 1e-6},
+                      BunnyEncoding{"bunnyInt21.e57", 1e-6}, BunnyEncoding{"bunnyInt24.e57", 1e-6},
+                      BunnyEncoding{"libe57format_reference_bunnyDouble.e57", 2e-6},
+                      BunnyEncoding{"libe57format_reference_bunnyInt32.e57", 1e-6}));
 
 TEST(E57Files, BunnyEncodingsDecodeToTheSamePoints) {
   // Independent of the Python values: five encodings of one cloud agree point by point

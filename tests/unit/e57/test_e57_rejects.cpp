@@ -3,6 +3,8 @@
 // the XML section (fileOffset / section id).
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 #include "common/error.hpp"
 #include "io/e57/e57_reader.hpp"
 #include "support/test_support.hpp"
@@ -26,43 +28,37 @@ void expectContains(const std::string& text, const std::string& part) {
 }
 }  // namespace
 
-TEST(E57Rejects, BadCrcOnPage0) {
-  const auto path = sharedData("e57/libe57format_self_bad-crc.e57");
+// The broken files of shared/data/e57: what the message must say and where it must point.
+struct BrokenFile {
+  const char* file;
+  const char* problem;   // a phrase the message must contain
+  const char* element;   // FileLocation::element
+  std::uint64_t offset;  // FileLocation::byte_offset
+};
+class E57BrokenFile : public ::testing::TestWithParam<BrokenFile> {};
+
+TEST_P(E57BrokenFile, IsRejectedWithFileProblemAndPlace) {
+  const auto path = sharedData(std::string("e57/") + GetParam().file);
   const FileError e = readError(path);
-  expectContains(e.what(), path.string());
-  expectContains(e.what(), "checksum");
-  EXPECT_EQ(e.where().element, "page 0");
-  EXPECT_EQ(e.where().byte_offset, 0u);
+  expectContains(e.what(), path.filename().string());
+  expectContains(e.what(), GetParam().problem);
+  EXPECT_EQ(e.where().element, GetParam().element);
+  EXPECT_EQ(e.where().byte_offset, GetParam().offset);
 }
 
-TEST(E57Rejects, CorruptCrcOnPage33) {
-  // Python: bad CRC on page 33 (byte 33792), the page holding the XML section.
-  const auto path = sharedData("e57/corrupt_crc.e57");
-  const FileError e = readError(path);
-  expectContains(e.what(), "corrupt_crc.e57");
-  expectContains(e.what(), "checksum");
-  EXPECT_EQ(e.where().element, "page 33");
-  EXPECT_EQ(e.where().byte_offset, 33792u);
-}
-
-TEST(E57Rejects, InvalidCompressedVectorHeader) {
-  const auto path = sharedData("e57/libe57format_self_InvalidCVHeader.e57");
-  const FileError e = readError(path);
-  expectContains(e.what(), "InvalidCVHeader.e57");
-  expectContains(e.what(), "section id 182");
-  EXPECT_EQ(e.where().element, "/e57Root/data3D/0/points");
-  EXPECT_EQ(e.where().byte_offset, 48u);  // its fileOffset
-}
-
-TEST(E57Rejects, ZeroPointsWithoutSection) {
-  // fileOffset="0": the "section" is the file header ('A' of ASTM-E57 = 65).
-  const auto path = sharedData("e57/libe57format_self_ZeroPointsInvalid.e57");
-  const FileError e = readError(path);
-  expectContains(e.what(), "ZeroPointsInvalid.e57");
-  expectContains(e.what(), "section id 65");
-  EXPECT_EQ(e.where().element, "/e57Root/data3D/0/points");
-  EXPECT_EQ(e.where().byte_offset, 0u);
-}
+INSTANTIATE_TEST_SUITE_P(
+    SharedData, E57BrokenFile,
+    ::testing::Values(
+        // Python (tools/e57_inspect.py): bad CRC on the first page.
+        BrokenFile{"libe57format_self_bad-crc.e57", "checksum", "page 0", 0},
+        // Python: bad CRC on page 33 (byte 33792), the page holding the XML section.
+        BrokenFile{"corrupt_crc.e57", "checksum", "page 33", 33792},
+        // The points' fileOffset (48) leads to a section id 182, not a compressed vector.
+        BrokenFile{"libe57format_self_InvalidCVHeader.e57", "section id 182",
+                   "/e57Root/data3D/0/points", 48},
+        // fileOffset="0": the "section" is the file header ('A' of ASTM-E57 = 65).
+        BrokenFile{"libe57format_self_ZeroPointsInvalid.e57", "section id 65",
+                   "/e57Root/data3D/0/points", 0}));
 
 TEST(E57Rejects, NotAnE57File) {
   const auto dir = plumb::test::scratchDir("e57_rejects");
