@@ -1,9 +1,21 @@
 // plumb-cli register SOURCE TARGET [--method auto|planes|openings|segments|icp] [--no-refine]
 //   [-o REGISTERED.{e57,ply,las}] [--transform T.json] [--report REPORT.json] [--seed N]
+//   [--params PARAMS.json] [--print-params]
 // Registers SOURCE onto TARGET (scans or models; a PLY/OBJ with faces or an IFC is a model).
-// On failure (too few features, no hypothesis above threshold, ambiguous, refinement lost the
-// overlap) it explains why on stderr, writes the report if asked (it says FAILED) and exits 2
-// without writing any transform or registered file.
+// The inputs are built with makeRegistrationInput, exactly like the desktop app.
+// Parameters: the defaults, then --params (the JSON of pipelineParamsToJson, any subset of
+// its keys), then the flags given on the command line (--method, --no-refine, --seed), in
+// that order; `--print-params` writes the resulting set as JSON to stdout and exits, so
+// `plumb-cli register --print-params > p.json` gives a file to edit.
+// The seed is taken from that one place (PipelineParams::seed) for every random step.
+// Exit codes: 0 success; 1 an input could not be read or the parameters are invalid (one-line
+// error naming the file); 2 registration failed (too few features, no hypothesis above
+// threshold, ambiguous, refinement lost the overlap): it explains why on stderr, writes the
+// report if asked (it says FAILED) and writes neither the transform nor the registered file,
+// so an existing output stays untouched.
+#include <nlohmann/json.hpp>
+
+#include <fstream>
 #include <iostream>
 #include <optional>
 
@@ -13,45 +25,83 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "io/io.hpp"
-#include "registration/auto/registration_pipeline.hpp"
+#include "registration/auto/pipeline_param_groups.hpp"
+#include "registration/auto/registration_input.hpp"
 
 namespace plumb::cli {
 namespace {
 
 struct RegisterOptions {
-  std::string source, target, method = "auto", output, transform, report;
+  std::string source, target, method, output, transform, report, params;
   bool no_refine = false;
-  std::uint64_t seed = 1;
+  bool print_params = false;
+  std::optional<std::uint64_t> seed;
 };
+
+/// The pipeline overrides every group's own seed with PipelineParams::seed; the groups carry
+/// the same value so the JSON shows the one seed in use.
+void syncSeeds(PipelineParams& p) {
+  p.plane_extraction.seed = p.segment_detection.seed = p.planes.seed = p.openings.seed =
+      p.segments.seed = p.refinement.seed = p.seed;
+}
+
+/// A group "seed" in a parameter file would be silently overridden by the top-level one:
+/// refuse it unless it agrees.
+void checkGroupSeeds(const nlohmann::json& j, std::uint64_t seed, const std::string& file) {
+  for (const auto& [key, group] : j.items())
+    if (group.is_object() && group.contains("seed") && group.at("seed") != seed)
+      throw FileError(file, "'" + key + "' sets its own seed; set the top-level \"seed\" "
+                      "instead (every step takes its seed from it)", {std::nullopt, std::nullopt, key});
+}
+
+PipelineParams loadParams(const RegisterOptions& o) {
+  PipelineParams p;
+  syncSeeds(p);
+  if (!o.params.empty()) {
+    std::ifstream in(o.params);
+    if (!in) throw FileError(o.params, "cannot be opened for reading");
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::parse_error& e) {
+      throw FileError(o.params, std::string("is not valid JSON: ") + e.what(),
+                      atByte(e.byte));
+    }
+    try {
+      pipelineParamsFromJson(j, p);
+    } catch (const std::exception& e) {  // InputError (schema) or json type_error
+      throw FileError(o.params, std::string("invalid registration parameters: ") + e.what());
+    }
+    checkGroupSeeds(j, p.seed, o.params);
+  }
+  if (!o.method.empty()) p.method = methodFromName(o.method);
+  if (o.no_refine) p.refine = false;
+  if (o.seed) p.seed = *o.seed;
+  syncSeeds(p);
+  return p;
+}
 
 struct Side {
   LoadedData data;
-  PointCloud cloud;
-  RegistrationSide side;
+  RegistrationInput input;
 };
 
 void load(Side& s, const std::string& path) {
   s.data = readFile(path);
-  if (auto* d = std::get_if<Dataset>(&s.data)) {
-    if (d->pointCount() == 0) throw FileError(path, "holds no points to register");
-    s.cloud = d->merged(false);
-    s.cloud.removeNonFinite();
-    s.side.cloud = &s.cloud;
-    // One static scan with a pose: its scanner position orients plane normals.
-    if (d->scans.size() == 1 && d->scans[0].has_pose && !d->scans[0].cloud.hasSensorOrigins())
-      s.side.viewpoint = d->scans[0].pose.translation();
-  } else {
-    auto& m = std::get<BimModel>(s.data);
-    if (m.mesh.triangles.empty()) throw FileError(path, "model has no triangles to register");
-    s.side.model = &m;
-  }
+  if (const auto* d = std::get_if<Dataset>(&s.data))
+    s.input = makeRegistrationInput(*d, RigidTransform());
+  else
+    s.input = makeRegistrationInput(std::get<BimModel>(s.data), RigidTransform());
 }
 
 int run(const RegisterOptions& o) {
-  PipelineParams p;
-  p.method = methodFromName(o.method);
-  p.refine = !o.no_refine;
-  p.seed = o.seed;
+  const PipelineParams p = loadParams(o);
+  if (o.print_params) {
+    std::cout << pipelineParamsToJson(p).dump(2) << "\n";
+    return 0;
+  }
+  if (o.source.empty() || o.target.empty())
+    throw InputError("register: SOURCE and TARGET are required (or --print-params)");
   Side src, tgt;
   load(src, o.source);
   load(tgt, o.target);
@@ -60,13 +110,14 @@ int run(const RegisterOptions& o) {
   Progress progress([tty](double f, std::string_view stage) {
     if (tty) std::cerr << "\r[" << int(f * 100) << "%] " << stage << "\033[K" << std::flush;
   });
-  const PipelineResult r = registerData(src.side, tgt.side, p, &progress);
+  const PipelineResult r = registerData(src.input.side(), tgt.input.side(), p, &progress);
   if (tty) std::cerr << "\r\033[K";
   for (const auto& line : r.log) std::cerr << "  " << line << "\n";
   if (!o.report.empty())
     writeFileAtomically(o.report, [&](std::ostream& out) { out << qualityReportToJson(r.report); });
   if (!r.success()) {
-    std::cerr << "plumb-cli: registration failed: " << r.report.verdict << "\n";
+    std::cerr << "plumb-cli: registration failed: " << r.report.verdict
+              << (o.output.empty() && o.transform.empty() ? "" : " (no output written)") << "\n";
     return 2;
   }
   std::cout << qualityReportToText(r.report);
@@ -96,10 +147,8 @@ void addRegisterCommand(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand(
       "register", "Register SOURCE onto TARGET (scan/scan, indoor/outdoor, scan/BIM)");
   cmd->add_option("SOURCE", opts->source, "Moving dataset: scan or model file")
-      ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("TARGET", opts->target, "Reference dataset: scan or model file")
-      ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("--method", opts->method, "auto, planes, openings, segments or icp")
       ->check(CLI::IsMember({"auto", "planes", "openings", "segments", "icp"}));
@@ -107,7 +156,14 @@ void addRegisterCommand(CLI::App& app, Action& action) {
   cmd->add_option("-o,--output", opts->output, "Write the registered SOURCE (e57, ply, las...)");
   cmd->add_option("--transform", opts->transform, "Write the transform (JSON or 4x4 text)");
   cmd->add_option("--report", opts->report, "Write the quality report (JSON)");
-  cmd->add_option("--seed", opts->seed, "Random seed (results are deterministic for a seed)");
+  cmd->add_option("--seed", opts->seed,
+                  "Random seed of every step (default 1; results are deterministic for a seed)");
+  cmd->add_option("--params", opts->params,
+                  "Registration parameters (JSON as written by --print-params; any subset of "
+                  "its keys); --method, --no-refine and --seed override it")
+      ->check(CLI::ExistingFile);
+  cmd->add_flag("--print-params", opts->print_params,
+                "Write the parameters (defaults, --params, flags) as JSON to stdout and exit");
   cmd->callback([opts, &action] { action = [opts] { return run(*opts); }; });
 }
 

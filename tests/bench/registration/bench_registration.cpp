@@ -108,7 +108,7 @@ void printTable(const std::string& scenario, const std::string& info, const std:
   std::fflush(stdout);
 }
 
-void runScenario(const std::string& name, int poses, bool peers) {
+void runScenario(const std::string& name, int poses, bool peers, const bench::PeerParams& pp) {
   const PipelineParams params = acceptanceParams();
   const Scenario s = makeScenario(name, params);
   const PointCloud& peer_target = s.isBim() ? s.target_samples : s.target;
@@ -120,7 +120,7 @@ void runScenario(const std::string& name, int poses, bool peers) {
        << s.seconds_target_features << " s";
   std::optional<bench::PeerTarget> pt;
   if (peers) {
-    pt.emplace(peer_target, bench::PeerParams{});
+    pt.emplace(peer_target, pp);
     info << ", peers " << pt->secondsPrepare() << " s";
   }
   std::vector<Row> rows(1);
@@ -259,6 +259,7 @@ int main(int argc, char** argv) {
   bool peers = true, big = true, tables = true;
   double step = 0.42;  // deg: ~300k returns per station in the rooms of "house"
   std::vector<std::string> names = scenarioNames();
+  bench::PeerParams pp;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&]() -> std::string {
@@ -274,6 +275,11 @@ int main(int argc, char** argv) {
     else if (a == "--no-big") big = false;
     else if (a == "--big-only") tables = false;
     else if (a == "--step") step = std::stod(next());
+    else if (a == "--fpfh-voxel") pp.fpfh_voxel = std::stod(next());
+    else if (a == "--fpfh-radius") {  // feature radius; normals at half of it
+      pp.feature_radius = std::stod(next());
+      pp.normal_radius = 0.5 * pp.feature_radius;
+    } else if (a == "--sac-iterations") pp.ransac_iterations = std::stoi(next());
     else if (a == "--smoke") {  // CTest: one pose of indoor-indoor, all peers, no big pair
       poses = 1;
       names = {"indoor-indoor"};
@@ -281,7 +287,8 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: bench_registration [--poses N] [--scenarios a,b] [--no-peers] "
-                   "[--no-big] [--big-only] [--step DEG] [--smoke]\n");
+                   "[--no-big] [--big-only] [--step DEG] [--smoke] [--fpfh-voxel M] "
+                   "[--fpfh-radius M] [--sac-iterations N]\n");
       return 2;
     }
   }
@@ -292,6 +299,6 @@ int main(int argc, char** argv) {
     runBigPair(step, true);
   }
   if (tables)
-    for (const auto& n : names) runScenario(n, poses, peers);
+    for (const auto& n : names) runScenario(n, poses, peers, pp);
   return 0;
 }

@@ -1,0 +1,219 @@
+// plumb-cli register end to end on simulated data (plumb-cli simulate): the transform against
+// truth.json, the report, --params / --print-params, and the failures (unreadable input, too
+// few features, ambiguous result): non-zero exit, one explanation, outputs left untouched.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <Eigen/Geometry>
+
+#include <cstdlib>
+#include <random>
+#include <sstream>
+#include <sys/wait.h>
+
+#include "support/test_support.hpp"
+
+namespace fs = std::filesystem;
+using plumb::test::readAll;
+using plumb::test::scratchDir;
+using plumb::test::writeAll;
+
+namespace {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+/// Runs `plumb-cli ARGS` in `dir` (stdout and stderr captured to files there).
+CliResult plumbCli(const fs::path& dir, const std::string& args) {
+  const fs::path o = dir / "cli.stdout", e = dir / "cli.stderr";
+  const std::string cmd = "cd '" + dir.string() + "' && '" + PLUMB_CLI_PATH + "' " + args + " >'" +
+                          o.string() + "' 2>'" + e.string() + "'";
+  const int status = std::system(cmd.c_str());
+  CliResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = readAll(o);
+  r.err = readAll(e);
+  return r;
+}
+
+Eigen::Matrix4d matrixOf(const nlohmann::json& j) {
+  Eigen::Matrix4d m;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) m(r, c) = j.at(r).at(c).get<double>();
+  return m;
+}
+
+/// Axis-aligned closed box room (floor, ceiling, 4 walls) sampled every 5 cm with 2 mm noise,
+/// shifted by `shift`: symmetric under a half turn, so no registration can pick one answer.
+void writeBoxPly(const fs::path& path, const Eigen::Vector3d& size, const Eigen::Vector3d& shift,
+                 unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, 0.002);
+  std::vector<Eigen::Vector3d> pts;
+  const double step = 0.05;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (double a = 0; a <= size[u] + 1e-9; a += step)
+      for (double b = 0; b <= size[v] + 1e-9; b += step)
+        for (double side : {0.0, size[axis]}) {
+          Eigen::Vector3d p;
+          p[axis] = side;
+          p[u] = a;
+          p[v] = b;
+          pts.push_back(p + shift + Eigen::Vector3d(noise(rng), noise(rng), noise(rng)));
+        }
+  }
+  std::ostringstream s;
+  s << "ply\nformat ascii 1.0\nelement vertex " << pts.size()
+    << "\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+  for (const auto& p : pts) s << p.x() << " " << p.y() << " " << p.z() << "\n";
+  writeAll(path, s.str());
+}
+
+/// A flat 3 m x 3 m patch: one plane only.
+void writePlanePly(const fs::path& path) {
+  std::ostringstream s;
+  s << "ply\nformat ascii 1.0\nelement vertex 3600\nproperty float x\nproperty float y\n"
+       "property float z\nend_header\n";
+  for (int i = 0; i < 60; ++i)
+    for (int j = 0; j < 60; ++j) s << i * 0.05 << " " << j * 0.05 << " 0\n";
+  writeAll(path, s.str());
+}
+
+std::size_t lineCount(const std::string& s) { return std::size_t(std::count(s.begin(), s.end(), '\n')); }
+
+}  // namespace
+
+// Scan to BIM: four TLS stations of the generated "house", moved by a random half-turn-range
+// yaw and up to 15 m, registered onto the model file; the transform must undo the
+// perturbation recorded in truth.json.
+TEST(CliRegister, SimulatedScanToModelMatchesTruth) {
+  const fs::path dir = scratchDir("cli_register_bim");
+  const CliResult sim = plumbCli(dir, "simulate --preset house --tls-rooms --perturb 180,15 --seed 5 "
+                                "--tls-azimuth-step 0.6 --tls-elevation-step 0.6 -o sim");
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const auto truth = nlohmann::json::parse(readAll(dir / "sim/truth.json"));
+  ASSERT_EQ(truth.at("datasets").at(0).at("file"), "indoor.e57");
+  const Eigen::Matrix4d expected = matrixOf(truth["datasets"][0]["transform"]["matrix"]);
+
+  const CliResult r = plumbCli(dir, "register sim/indoor.e57 sim/model.ply --seed 3 --transform T.json "
+                              "--report R.json -o registered.e57");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Eigen::Matrix4d got = matrixOf(nlohmann::json::parse(readAll(dir / "T.json"))["matrix"]);
+  const Eigen::Matrix3d dR = got.topLeftCorner<3, 3>().transpose() * expected.topLeftCorner<3, 3>();
+  EXPECT_LT(Eigen::AngleAxisd(dR).angle() * 180.0 / M_PI, 0.05);
+  // Error at the scanned rooms (the model frame's ground floor lies within ~15 m of the origin).
+  for (const Eigen::Vector3d& x : {Eigen::Vector3d(0, 0, 1.5), Eigen::Vector3d(10, 8, 1.5)}) {
+    const Eigen::Vector3d p = expected.topLeftCorner<3, 3>().transpose() *
+                              (x - expected.topRightCorner<3, 1>());  // data point mapping to x
+    const Eigen::Vector3d y = got.topLeftCorner<3, 3>() * p + got.topRightCorner<3, 1>();
+    EXPECT_LT((y - x).norm(), 0.02) << "at model point " << x.transpose();
+  }
+  const auto report = nlohmann::json::parse(readAll(dir / "R.json"));
+  EXPECT_TRUE(report.at("success").get<bool>());
+  EXPECT_EQ(report.at("method"), "segments");
+  EXPECT_NE(report.at("verdict").get<std::string>().find("succeeded"), std::string::npos);
+  EXPECT_LT(report.at("points").at("rms_m").get<double>(), 0.01);
+  EXPECT_GT(report.at("points").at("overlap_ratio").get<double>(), 0.5);
+  EXPECT_TRUE((matrixOf(report.at("transform")) - got).cwiseAbs().maxCoeff() < 1e-9);
+  EXPECT_NE(r.out.find("method: segments, status: success"), std::string::npos) << r.out;
+  // The registered dataset is written and readable: same 4 scans.
+  const CliResult info = plumbCli(dir, "info registered.e57");
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_NE(info.out.find("scans:     4\n"), std::string::npos) << info.out;
+}
+
+// --print-params writes the defaults with one seed everywhere; --params reads it back; flags
+// override the file; a group seed that disagrees and unknown keys are refused, naming the file.
+TEST(CliRegister, ParamsFileRoundTripAndSeedInOnePlace) {
+  const fs::path dir = scratchDir("cli_register_params");
+  const CliResult d = plumbCli(dir, "register --print-params");
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  const auto defaults = nlohmann::json::parse(d.out);
+  EXPECT_EQ(defaults.at("method"), "auto");
+  const auto seed = defaults.at("seed");
+  for (const char* group : {"plane-extraction", "planes", "openings", "segments", "refinement"})
+    EXPECT_EQ(defaults.at(group).at("seed"), seed) << group;
+
+  auto edited = defaults;
+  edited["method"] = "planes";
+  edited["seed"] = 9;
+  for (auto& [key, group] : edited.items())
+    if (group.is_object() && group.contains("seed")) group["seed"] = 9;
+  edited["refinement"]["voxel"] = 0.07;
+  writeAll(dir / "p.json", edited.dump(2));
+  const CliResult back = plumbCli(dir, "register --params p.json --print-params");
+  ASSERT_EQ(back.exit_code, 0) << back.err;
+  EXPECT_EQ(nlohmann::json::parse(back.out), edited);
+  const CliResult over = plumbCli(dir, "register --params p.json --seed 4 --method segments --print-params");
+  ASSERT_EQ(over.exit_code, 0) << over.err;
+  const auto o = nlohmann::json::parse(over.out);
+  EXPECT_EQ(o.at("method"), "segments");
+  EXPECT_EQ(o.at("plane-extraction").at("seed"), 4);
+  EXPECT_EQ(o.at("refinement").at("voxel"), 0.07);
+
+  writeAll(dir / "seed.json", R"({"seed": 2, "plane-extraction": {"seed": 42}})");
+  const CliResult bad_seed = plumbCli(dir, "register --params seed.json --print-params");
+  EXPECT_EQ(bad_seed.exit_code, 1);
+  EXPECT_NE(bad_seed.err.find("seed.json"), std::string::npos) << bad_seed.err;
+  EXPECT_NE(bad_seed.err.find("plane-extraction"), std::string::npos) << bad_seed.err;
+  writeAll(dir / "unknown.json", R"({"planes": {"no-such-key": 1}})");
+  const CliResult unknown = plumbCli(dir, "register --params unknown.json --print-params");
+  EXPECT_EQ(unknown.exit_code, 1);
+  EXPECT_NE(unknown.err.find("no-such-key"), std::string::npos) << unknown.err;
+  writeAll(dir / "broken.json", "{\"planes\": ");
+  const CliResult broken = plumbCli(dir, "register --params broken.json --print-params");
+  EXPECT_EQ(broken.exit_code, 1);
+  EXPECT_EQ(lineCount(broken.err), 1u) << broken.err;
+  EXPECT_NE(broken.err.find("broken.json: is not valid JSON"), std::string::npos) << broken.err;
+}
+
+// Failures exit non-zero with an explanation and never touch an existing output.
+TEST(CliRegister, FailuresExplainAndLeaveOutputsUntouched) {
+  const fs::path dir = scratchDir("cli_register_fail");
+  writeBoxPly(dir / "a.ply", {6, 4, 3}, {0, 0, 0}, 1);
+  writeBoxPly(dir / "b.ply", {6, 4, 3}, {0.3, -0.2, 0}, 2);
+  writePlanePly(dir / "plane.ply");
+  writeAll(dir / "bad.ply", "ply\nformat ascii 1.0\nelement vertex 10\nproperty float x\nend_header\n1\n");
+  auto reset = [&] {
+    writeAll(dir / "out.ply", "precious");
+    writeAll(dir / "T.json", "precious");
+  };
+  auto untouched = [&](const std::string& what) {
+    EXPECT_EQ(readAll(dir / "out.ply"), "precious") << what;
+    EXPECT_EQ(readAll(dir / "T.json"), "precious") << what;
+  };
+
+  // Ambiguous: the box maps onto itself by a half turn; refined point overlap cannot decide.
+  reset();
+  const CliResult amb = plumbCli(dir, "register a.ply b.ply -o out.ply --transform T.json --report R.json");
+  EXPECT_EQ(amb.exit_code, 2) << amb.err;
+  EXPECT_NE(amb.err.find("registration failed: Registration FAILED (ambiguous)"), std::string::npos)
+      << amb.err;
+  EXPECT_NE(amb.err.find("no output written"), std::string::npos) << amb.err;
+  untouched("ambiguous");
+  const auto report = nlohmann::json::parse(readAll(dir / "R.json"));
+  EXPECT_FALSE(report.at("success").get<bool>());
+  EXPECT_EQ(report.at("status"), "ambiguous");
+
+  // Too few features: one plane cannot fix a pose.
+  reset();
+  const CliResult few = plumbCli(dir, "register plane.ply b.ply -o out.ply --transform T.json");
+  EXPECT_EQ(few.exit_code, 2) << few.err;
+  EXPECT_NE(few.err.find("(too few features)"), std::string::npos) << few.err;
+  untouched("too few features");
+
+  // Unreadable input: one line naming the file and what is wrong.
+  reset();
+  const CliResult bad = plumbCli(dir, "register bad.ply b.ply -o out.ply --transform T.json");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_EQ(lineCount(bad.err), 1u) << bad.err;
+  EXPECT_NE(bad.err.find("bad.ply: vertex element has no x, y and z"), std::string::npos) << bad.err;
+  untouched("unreadable");
+  const CliResult missing = plumbCli(dir, "register missing.ply b.ply -o out.ply");
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_NE(missing.err.find("missing.ply"), std::string::npos) << missing.err;
+  untouched("missing");
+}
