@@ -5,6 +5,7 @@
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/point_types.h>
 #include <pcl/registration/gicp.h>
+#include <pcl/common/io.h>
 #include <pcl/registration/icp.h>
 #include <pcl/registration/sample_consensus_prerejective.h>
 #include <pcl/search/kdtree.h>
@@ -65,6 +66,20 @@ Fpfh::Ptr fpfhOf(const Cloud::Ptr& c, const Normals::Ptr& n, double radius) {
   return f;
 }
 
+/// Thinned cloud with normals, for point-to-plane ICP.
+pcl::PointCloud<pcl::PointNormal>::Ptr withNormals(const PointCloud& c, const Eigen::Vector3d& origin,
+                                                   double voxel, double radius) {
+  const Cloud::Ptr xyz = thinned(c, origin, voxel);
+  const Normals::Ptr n = normalsOf(xyz, radius);
+  pcl::PointCloud<pcl::PointNormal>::Ptr out(new pcl::PointCloud<pcl::PointNormal>);
+  pcl::concatenateFields(*xyz, *n, *out);
+  // PCL leaves NaN normals where a neighbourhood is too small: drop those points.
+  pcl::PointCloud<pcl::PointNormal>::Ptr finite(new pcl::PointCloud<pcl::PointNormal>);
+  for (const auto& q : *out)
+    if (std::isfinite(q.normal_x)) finite->push_back(q);
+  return finite;
+}
+
 Eigen::Matrix4f runIcp(const Cloud::Ptr& src, const Cloud::Ptr& tgt, const Eigen::Matrix4f& guess,
                        double max_distance, int iterations, bool* converged) {
   pcl::IterativeClosestPoint<Xyz, Xyz> icp;
@@ -97,6 +112,7 @@ struct PeerTarget::Impl {
   Cloud::Ptr fine, coarse;
   Normals::Ptr coarse_normals;
   Fpfh::Ptr coarse_fpfh;
+  pcl::PointCloud<pcl::PointNormal>::Ptr refine;
   double seconds_prepare = 0.0;
 };
 
@@ -109,6 +125,7 @@ PeerTarget::PeerTarget(const PointCloud& target, const PeerParams& params)
   impl_->coarse = thinned(target, impl_->origin, params.fpfh_voxel);
   impl_->coarse_normals = normalsOf(impl_->coarse, params.normal_radius);
   impl_->coarse_fpfh = fpfhOf(impl_->coarse, impl_->coarse_normals, params.feature_radius);
+  impl_->refine = withNormals(target, impl_->origin, params.refine_voxel, params.refine_normal_radius);
   impl_->seconds_prepare = since(t0);
 }
 
@@ -153,9 +170,23 @@ PeerOutcome PeerTarget::run(Peer peer, const PointCloud& source) const {
     sac.setInlierFraction(0.25f);
     Cloud aligned;
     sac.align(aligned);
-    if (sac.hasConverged())
-      local = runIcp(src, impl_->fine, sac.getFinalTransformation(), p.refine_max_distance,
-                     p.icp_iterations, &ok);
+    if (sac.hasConverged()) {
+      const auto fine = withNormals(source, impl_->origin, p.refine_voxel, p.refine_normal_radius);
+      pcl::IterativeClosestPointWithNormals<pcl::PointNormal, pcl::PointNormal> icp;
+      icp.setInputSource(fine);
+      icp.setInputTarget(impl_->refine);
+      icp.setMaximumIterations(p.icp_iterations);
+      icp.setTransformationEpsilon(1e-10);
+      local = sac.getFinalTransformation();
+      ok = true;
+      for (double d : {p.refine_max_distance, p.refine_final_distance}) {
+        icp.setMaxCorrespondenceDistance(d);
+        pcl::PointCloud<pcl::PointNormal> aligned;
+        icp.align(aligned, local);
+        ok = ok && icp.hasConverged();
+        local = icp.getFinalTransformation();
+      }
+    }
   }
   out.seconds = since(t0);
   out.returned = ok;
