@@ -57,6 +57,18 @@ struct Planner {
   // Largest half thickness of the walls crossing the node (u-line i, v-line j).
   double nodeHalfV(long i, long j) const { return std::max(halfV(j, i - 1), halfV(j, i)); }
   double nodeHalfU(long i, long j) const { return std::max(halfU(i, j - 1), halfU(i, j)); }
+
+  // Axis-generic views: axis 0 = u-lines (walls along v), axis 1 = v-lines (walls along u).
+  const std::vector<double>& lines(int axis) const { return axis == 0 ? U : V; }
+  long cells(int axis) const { return axis == 0 ? C : R; }  ///< cells between the lines of axis
+  bool room(int axis, long across, long along) const {
+    return axis == 0 ? s.isRoom(across, along) : s.isRoom(along, across);
+  }
+  double half(int axis, long line, long cell) const { return axis == 0 ? halfU(line, cell) : halfV(line, cell); }
+  // Half thickness of the walls crossing `line` of axis at node `node` of the other axis.
+  double nodeHalfAlong(int axis, long line, long node) const {
+    return axis == 0 ? nodeHalfV(line, node) : nodeHalfU(node, line);
+  }
 };
 
 // Centres of n equal slots of [a, b] that can each hold `width` plus margins.
@@ -135,40 +147,29 @@ BuildingLayout layoutBuilding(const BuildingSpec& spec) {
 
   for (int st = 0; st < spec.storeys; ++st) {
     const double z0 = st * H + ts, z1 = (st + 1) * H;
-    // Walls on u-lines (run along v), then on v-lines (run along u).
-    for (long i = 0; i <= p.C; ++i)
-      for (long r = 0; r < p.R; ++r) {
-        const double h = p.halfU(i, r);
-        if (h == 0.0) continue;
-        LayoutWall w;
-        w.axis = 0;
-        w.line = p.U[static_cast<std::size_t>(i)];
-        w.half = h;
-        w.storey = st;
-        const bool left = spec.isRoom(i - 1, r), right = spec.isRoom(i, r);
-        w.outside_sign = left && right ? 0 : (left ? +1 : -1);
-        w.box = makeBox(w.line - h, w.line + h, p.V[static_cast<std::size_t>(r)] - p.nodeHalfV(i, r),
-                        p.V[static_cast<std::size_t>(r + 1)] + p.nodeHalfV(i, r + 1), z0, z1);
-        w.name = "wall-" + std::to_string(st) + "-u" + std::to_string(i) + "-r" + std::to_string(r);
-        L.walls.push_back(w);
-      }
-    for (long j = 0; j <= p.R; ++j)
-      for (long c = 0; c < p.C; ++c) {
-        const double h = p.halfV(j, c);
-        if (h == 0.0) continue;
-        LayoutWall w;
-        w.axis = 1;
-        w.line = p.V[static_cast<std::size_t>(j)];
-        w.half = h;
-        w.storey = st;
-        const bool below = spec.isRoom(c, j - 1), above = spec.isRoom(c, j);
-        w.outside_sign = below && above ? 0 : (below ? +1 : -1);
-        w.box = makeBox(p.U[static_cast<std::size_t>(c)] - p.nodeHalfU(c, j),
-                        p.U[static_cast<std::size_t>(c + 1)] + p.nodeHalfU(c + 1, j), w.line - h,
-                        w.line + h, z0, z1);
-        w.name = "wall-" + std::to_string(st) + "-v" + std::to_string(j) + "-c" + std::to_string(c);
-        L.walls.push_back(w);
-      }
+    // Walls on u-lines (axis 0, run along v), then on v-lines (axis 1, run along u).
+    for (int axis = 0; axis < 2; ++axis) {
+      const auto& lines = p.lines(axis);
+      const auto& cross = p.lines(1 - axis);
+      for (long i = 0; i <= p.cells(axis); ++i)
+        for (long r = 0; r < p.cells(1 - axis); ++r) {
+          const double h = p.half(axis, i, r);
+          if (h == 0.0) continue;
+          LayoutWall w;
+          w.axis = axis;
+          w.line = lines[static_cast<std::size_t>(i)];
+          w.half = h;
+          w.storey = st;
+          const bool before = p.room(axis, i - 1, r), after = p.room(axis, i, r);
+          w.outside_sign = before && after ? 0 : (before ? +1 : -1);
+          const double a0 = cross[static_cast<std::size_t>(r)] - p.nodeHalfAlong(axis, i, r);
+          const double a1 = cross[static_cast<std::size_t>(r + 1)] + p.nodeHalfAlong(axis, i, r + 1);
+          w.box = axis == 0 ? makeBox(w.line - h, w.line + h, a0, a1, z0, z1) : makeBox(a0, a1, w.line - h, w.line + h, z0, z1);
+          w.name = "wall-" + std::to_string(st) + (axis == 0 ? "-u" : "-v") + std::to_string(i) +
+                   (axis == 0 ? "-r" : "-c") + std::to_string(r);
+          L.walls.push_back(w);
+        }
+    }
   }
 
   // Openings: windows in exterior segments, doors in interior ones, one entrance door.

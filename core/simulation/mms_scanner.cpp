@@ -55,21 +55,31 @@ Scan simulateMms(const ScanScene& scene, const Trajectory& trajectory, const Mms
     checkCanceled(progress);
     reportProgress(progress, static_cast<double>(l0) / lines, "MMS scan");
     tbb::parallel_for(l0, std::min(lines, l0 + chunk), [&](std::int32_t line) {
-      auto& out = per_line[static_cast<std::size_t>(line)];
+      // One profiler revolution is traced as one batch (Embree: ray packets).
+      std::vector<Ray> rays(static_cast<std::size_t>(pulses));
+      std::vector<RayHit> hits(rays.size());
+      std::vector<double> times(rays.size());
       for (std::int32_t k = 0; k < pulses; ++k) {
-        const double t = t0 + (line + static_cast<double>(k) / pulses) / p.line_rate_hz;
+        const auto i = static_cast<std::size_t>(k);
+        times[i] = t0 + (line + static_cast<double>(k) / pulses) / p.line_rate_hz;
         Eigen::Vector3d pos, heading;
-        trajectory.sample(t, pos, heading);
+        trajectory.sample(times[i], pos, heading);
         const Eigen::Vector3d lateral = Eigen::Vector3d::UnitZ().cross(heading);
         const Eigen::Vector3d up = std::cos(tilt) * Eigen::Vector3d::UnitZ() + std::sin(tilt) * heading;
         const double phi = 2.0 * M_PI * k / pulses;
-        const Ray ray{pos, (std::cos(phi) * lateral + std::sin(phi) * up).normalized()};
-        const RayHit hit = caster.cast(ray, p.max_range, p.min_range);
+        rays[i] = {pos, (std::cos(phi) * lateral + std::sin(phi) * up).normalized()};
+      }
+      caster.castBatch(rays.data(), rays.size(), hits.data(), p.max_range, p.min_range);
+      auto& out = per_line[static_cast<std::size_t>(line)];
+      for (std::int32_t k = 0; k < pulses; ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        const RayHit& hit = hits[i];
         if (!hit.hit()) continue;
-        sim::PulseRandom rng(seed, static_cast<std::uint64_t>(line) * static_cast<std::uint64_t>(pulses) + static_cast<std::uint64_t>(k));
+        const Ray& ray = rays[i];
+        sim::PulseRandom rng(seed, static_cast<std::uint64_t>(line) * static_cast<std::uint64_t>(pulses) + i);
         const double range = hit.distance + sigma * rng.normal();
-        const double cos_inc = std::abs(caster.mesh().triangleNormal(hit.triangle).dot(ray.direction));
-        out.push_back({(pos + range * ray.direction - cloud.offset).cast<float>(), (pos - cloud.offset).cast<float>(), t,
+        const double cos_inc = std::abs(caster.triangleNormal(hit.triangle).dot(ray.direction));
+        out.push_back({(ray.origin + range * ray.direction - cloud.offset).cast<float>(), (ray.origin - cloud.offset).cast<float>(), times[i],
                        static_cast<float>(std::clamp(cos_inc * std::exp(-range / p.max_range), 0.0, 1.0)), k,
                        static_cast<std::uint8_t>(scene.isGround(hit.triangle) ? 2 : 6)});
       }

@@ -1,6 +1,7 @@
 #include "simulation/presets.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "common/error.hpp"
 #include "simulation/building_layout.hpp"
@@ -15,67 +16,51 @@ struct Preset {
   BuildingSpec (*make)();
 };
 
-BuildingSpec twoRooms() {
+BuildingSpec grid(const char* name, std::vector<double> columns, std::vector<double> rows) {
   BuildingSpec s;
-  s.name = "two-rooms";
-  s.column_widths = {4.0, 4.0};
-  s.row_depths = {5.0};
+  s.name = name;
+  s.column_widths = std::move(columns);
+  s.row_depths = std::move(rows);
   return s;
 }
 
+BuildingSpec twoRooms() { return grid("two-rooms", {4.0, 4.0}, {5.0}); }
+
 BuildingSpec house() {
-  BuildingSpec s;
-  s.name = "house";
-  s.column_widths = {4.5, 4.5};
-  s.row_depths = {4.0, 4.0};
+  BuildingSpec s = grid("house", {4.5, 4.5}, {4.0, 4.0});
   s.storeys = 2;
   s.furniture_per_room = 2;
   return s;
 }
 
 BuildingSpec officeFloor() {
-  BuildingSpec s;
-  s.name = "office-floor";
-  s.column_widths = {4.0, 4.0, 4.0, 4.0};
-  s.row_depths = {5.0, 2.0, 5.0};  // offices, corridor, offices
+  BuildingSpec s = grid("office-floor", {4.0, 4.0, 4.0, 4.0}, {5.0, 2.0, 5.0});  // offices, corridor, offices
   s.storey_height = 3.3;
   s.furniture_per_room = 1;
   return s;
 }
 
 BuildingSpec lShaped() {
-  BuildingSpec s;
-  s.name = "l-shaped";
-  s.column_widths = {4.0, 4.0, 4.0};
-  s.row_depths = {5.0, 5.0};
+  BuildingSpec s = grid("l-shaped", {4.0, 4.0, 4.0}, {5.0, 5.0});
   s.mask = {"###", "#.."};
   s.exterior_wall_thickness = 0.45;
   return s;
 }
 
 BuildingSpec uShaped() {
-  BuildingSpec s;
-  s.name = "u-shaped";
-  s.column_widths = {4.0, 4.0, 4.0};
-  s.row_depths = {4.0, 4.0};
+  BuildingSpec s = grid("u-shaped", {4.0, 4.0, 4.0}, {4.0, 4.0});
   s.mask = {"###", "#.#"};
   return s;
 }
 
 BuildingSpec nonManhattan() {
-  BuildingSpec s;
-  s.name = "non-manhattan";
-  s.column_widths = {5.0, 5.0};
-  s.row_depths = {5.0, 5.0};
+  BuildingSpec s = grid("non-manhattan", {5.0, 5.0}, {5.0, 5.0});
   s.axis_angle_deg = 60.0;
   return s;
 }
 
 BuildingSpec bigOffice() {
-  BuildingSpec s;
-  s.name = "big-office";
-  s.column_widths = {4.0, 4.0, 4.0, 4.0, 4.0, 4.0, 4.0, 4.0, 4.0};
-  s.row_depths = {5.0, 2.0, 5.0};
+  BuildingSpec s = grid("big-office", std::vector<double>(9, 4.0), {5.0, 2.0, 5.0});
   s.storeys = 5;
   s.storey_height = 3.3;
   s.window_spacing = 2.0;

@@ -42,11 +42,21 @@ class RayCaster {
 
   /// Nearest hit within (min_range, max_range]; RayHit{} when none.
   RayHit cast(const Ray& ray, double max_range = 1e30, double min_range = 0.0) const;
-  /// Casts every ray in parallel (TBB); hits[i] for rays[i].
+  /// Casts every ray in parallel (TBB); hits[i] for rays[i]. Any ray order (traced as
+  /// incoherent packets in fixed chunks: identical results for any thread count).
   void castAll(const std::vector<Ray>& rays, std::vector<RayHit>& hits, double max_range = 1e30,
                double min_range = 0.0) const;
 
+  /// Casts rays[0..n) on the calling thread; hits[i] for rays[i]. For rays in scan order (a
+  /// scanner row or profile: neighbours have nearby origins and directions), which Embree
+  /// traces as coherent packets. Deterministic for the same batch; a ray grazing a triangle
+  /// edge may pick the neighbouring triangle compared with cast().
+  void castBatch(const Ray* rays, std::size_t n, RayHit* hits, double max_range = 1e30,
+                 double min_range = 0.0) const;
+
   const TriangleMesh& mesh() const;
+  /// Unit normal of mesh() triangle t (precomputed; zero for degenerate triangles).
+  const Eigen::Vector3d& triangleNormal(std::uint32_t t) const;
   RayCasterBackend backend() const { return backend_; }
   static bool embreeAvailable();
   /// Embree when available (much faster), else CGAL.

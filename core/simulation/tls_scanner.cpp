@@ -42,7 +42,7 @@ Scan simulateTls(const ScanScene& scene, const Eigen::Vector3d& station, const T
       1, static_cast<std::int32_t>(std::floor((p.elevation_max_deg - p.elevation_min_deg) / p.elevation_step_deg + 1e-9)) + 1);
   const Eigen::Matrix3d R = Eigen::AngleAxisd(p.heading_deg * deg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   const double sigma = p.noise_mm * 1e-3;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const float nan_f = std::numeric_limits<float>::quiet_NaN();
   const auto& caster = scene.caster();
 
   struct Pulse {
@@ -50,6 +50,15 @@ Scan simulateTls(const ScanScene& scene, const Eigen::Vector3d& station, const T
     float intensity;
     std::int32_t column;
   };
+  // Beam directions (scanner frame) from per-column / per-row trig tables; each row is traced
+  // as one batch (Embree: ray packets; rows are coherent).
+  std::vector<double> cos_az(static_cast<std::size_t>(columns)), sin_az(cos_az.size());
+  for (std::int32_t col = 0; col < columns; ++col) {
+    const double az = col * p.azimuth_step_deg * deg;
+    cos_az[static_cast<std::size_t>(col)] = std::cos(az);
+    sin_az[static_cast<std::size_t>(col)] = std::sin(az);
+  }
+  const double dropout_scale = 1.0 / std::max(1e-9, 90.0 - p.dropout_start_deg);
   std::vector<std::vector<Pulse>> per_row(static_cast<std::size_t>(rows));
   const std::int32_t chunk = 16;
   for (std::int32_t r0 = 0; r0 < rows; r0 += chunk) {
@@ -57,30 +66,37 @@ Scan simulateTls(const ScanScene& scene, const Eigen::Vector3d& station, const T
     reportProgress(progress, static_cast<double>(r0) / rows, "TLS scan");
     tbb::parallel_for(r0, std::min(rows, r0 + chunk), [&](std::int32_t row) {
       const double el = (p.elevation_max_deg - row * p.elevation_step_deg) * deg;
+      const double cos_el = std::cos(el), sin_el = std::sin(el);
+      std::vector<Eigen::Vector3d> local(static_cast<std::size_t>(columns));
+      std::vector<Ray> rays(local.size());
+      std::vector<RayHit> hits(local.size());
+      for (std::size_t col = 0; col < local.size(); ++col) {
+        local[col] = Eigen::Vector3d(cos_el * cos_az[col], cos_el * sin_az[col], sin_el);
+        rays[col] = {station, R * local[col]};
+      }
+      caster.castBatch(rays.data(), rays.size(), hits.data(), p.max_range, p.min_range);
       auto& out = per_row[static_cast<std::size_t>(row)];
       out.reserve(static_cast<std::size_t>(columns));
       for (std::int32_t col = 0; col < columns; ++col) {
-        const double az = col * p.azimuth_step_deg * deg;
-        const Eigen::Vector3d local(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
-        const Ray ray{station, R * local};
-        const RayHit hit = caster.cast(ray, p.max_range, p.min_range);
-        sim::PulseRandom rng(seed, static_cast<std::uint64_t>(row) * static_cast<std::uint64_t>(columns) + static_cast<std::uint64_t>(col));
+        const auto c = static_cast<std::size_t>(col);
+        const RayHit& hit = hits[c];
         bool keep = hit.hit();
         double cos_inc = 1.0, range = 0.0;
         if (keep) {
-          cos_inc = std::abs(caster.mesh().triangleNormal(hit.triangle).dot(ray.direction));
-          const double inc = std::acos(std::min(1.0, cos_inc)) / deg;
+          sim::PulseRandom rng(seed, static_cast<std::uint64_t>(row) * static_cast<std::uint64_t>(columns) + c);
+          cos_inc = std::abs(caster.triangleNormal(hit.triangle).dot(rays[c].direction));
           const double u = rng.uniform();
-          if (p.incidence_dropout && inc > p.dropout_start_deg &&
-              u < (inc - p.dropout_start_deg) / std::max(1e-9, 90.0 - p.dropout_start_deg))
-            keep = false;
+          if (p.incidence_dropout) {
+            const double inc = std::acos(std::min(1.0, cos_inc)) / deg;
+            if (inc > p.dropout_start_deg && u < (inc - p.dropout_start_deg) * dropout_scale) keep = false;
+          }
           range = hit.distance + sigma * rng.normal();
         }
         if (keep) {
-          out.push_back({(local * range).cast<float>(),
+          out.push_back({(local[c] * range).cast<float>(),
                          static_cast<float>(std::clamp(cos_inc * std::exp(-range / p.max_range), 0.0, 1.0)), col});
         } else if (p.keep_misses) {
-          out.push_back({Eigen::Vector3d::Constant(nan).cast<float>(), 0.0f, col});
+          out.push_back({Eigen::Vector3f::Constant(nan_f), 0.0f, col});
         }
       }
     });

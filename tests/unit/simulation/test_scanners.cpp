@@ -32,6 +32,25 @@ double nearestPlane(const BuildingTruth& t, const Eigen::Vector3d& x) {
   return best;
 }
 
+void expectSameCloud(const Scan& a, const Scan& b) {
+  ASSERT_EQ(a.cloud.size(), b.cloud.size());
+  EXPECT_TRUE(a.cloud.positions == b.cloud.positions);
+  EXPECT_TRUE(a.cloud.column == b.cloud.column);
+  EXPECT_TRUE(a.cloud.timestamps == b.cloud.timestamps);
+  EXPECT_TRUE(a.cloud.classification == b.cloud.classification);
+}
+
+// make() run with one thread, then with all threads.
+template <class F>
+auto oneAndAllThreads(F make) {
+  decltype(make()) one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = make();
+  }
+  return std::make_pair(std::move(one), make());
+}
+
 TEST(Tls, HitRatioIndoorsIsCloseToOne) {
   const auto b = generateBuilding(buildingPreset("two-rooms"));
   ScanSceneOptions opaque;
@@ -86,16 +105,9 @@ TEST(Tls, DeterministicForASeedWhateverTheThreads) {
   const auto station = roomCentres(b.spec)[0];
   TlsParams p = coarseTls(5.0);
   p.incidence_dropout = true;
-  Scan one;
-  {
-    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
-    one = simulateTls(scene, station, p, 42);
-  }
-  const Scan two = simulateTls(scene, station, p, 42);
+  const auto [one, two] = oneAndAllThreads([&] { return simulateTls(scene, station, p, 42); });
   const Scan other = simulateTls(scene, station, p, 43);
-  ASSERT_EQ(one.cloud.size(), two.cloud.size());
-  EXPECT_TRUE(one.cloud.positions == two.cloud.positions);
-  EXPECT_TRUE(one.cloud.column == two.cloud.column);
+  expectSameCloud(one, two);
   EXPECT_FALSE(other.cloud.positions == one.cloud.positions);
 }
 
@@ -189,6 +201,52 @@ TEST(Mms, InteriorPointsAppearThroughWindows) {
                        x.y() < fp.max.y() - 0.5 && x.z() > 0.3 && x.z() < 5.9;
   }
   EXPECT_LT(closed_interior, interior / 5);  // only through the open entrance door
+}
+
+TEST(Mms, DeterministicForASeedWhateverTheThreads) {
+  const auto b = generateBuilding(buildingPreset("house"));
+  const ScanScene scene(b.model, b.glass_triangles);
+  MmsParams p;
+  p.line_rate_hz = 10;
+  const Trajectory traj = streetTrajectory(b.truth.footprint, p);
+  const auto [one, two] = oneAndAllThreads([&] { return simulateMms(scene, traj, p, 9); });
+  EXPECT_GT(one.cloud.size(), 10000u);
+  expectSameCloud(one, two);
+}
+
+// castAll traces fixed chunks as packets: the same hits for 1 and 2 threads, on both backends,
+// and (off triangle edges) the same hits as single casts.
+TEST(RayCaster, CastAllIsIndependentOfThreadsAndMatchesCast) {
+  const auto b = generateBuilding(buildingPreset("office-floor"));
+  std::vector<Ray> rays;
+  const auto centres = roomCentres(b.spec);
+  for (int i = 0; i < 20000; ++i) {
+    const double az = i * 2.399963, z = std::sin(i * 0.917);
+    const double r = std::sqrt(1 - z * z);
+    rays.push_back({centres[static_cast<std::size_t>(i) % centres.size()],
+                    Eigen::Vector3d(r * std::cos(az), r * std::sin(az), z)});
+  }
+  std::vector<RayCasterBackend> backends{RayCasterBackend::Cgal};
+  if (RayCaster::embreeAvailable()) backends.push_back(RayCasterBackend::Embree);
+  for (auto backend : backends) {
+    SCOPED_TRACE(RayCaster::backendName(backend));
+    const RayCaster caster(b.model.mesh, b.glass_triangles, backend);
+    const auto [one, two] = oneAndAllThreads([&] {
+      std::vector<RayHit> hits;
+      caster.castAll(rays, hits, 40.0, 0.1);
+      return hits;
+    });
+    std::size_t same = 0, single_same = 0, hits = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      same += one[i].triangle == two[i].triangle && one[i].distance == two[i].distance;
+      hits += one[i].hit();
+      const RayHit c = caster.cast(rays[i], 40.0, 0.1);
+      single_same += c.hit() == one[i].hit() && (!c.hit() || std::abs(c.distance - one[i].distance) < 1e-9);
+    }
+    EXPECT_EQ(same, rays.size());
+    EXPECT_GT(hits, rays.size() * 9 / 10);
+    EXPECT_GE(single_same, rays.size() - 10);
+  }
 }
 
 TEST(Mms, TrajectoryFileAndErrors) {
