@@ -129,6 +129,25 @@ const PointCloud* refinementTarget(const RegistrationSide& target, const Pipelin
   return &storage;
 }
 
+/// Indoor/outdoor (openings): the indoor wall faces lie one wall thickness behind the façade
+/// faces the outdoor scan saw. A first ICP stage whose correspondence distance reaches that
+/// far pulls the indoor faces onto the façades (a confident wrong answer by about the
+/// thickness). The global step places the openings to a few centimetres, so the refinement
+/// starts below half the measured thickness.
+void limitToWallThickness(const GlobalRegistrationResult& g, RefineParams& rp,
+                          std::vector<std::string>& log) {
+  if (g.method != "openings") return;
+  for (const auto& [name, value] : g.figures) {
+    if (name != "wall thickness (m)" || !(value > 0.0)) continue;
+    const double start = std::max(rp.final_distance, std::min(rp.start_distance, 0.5 * value));
+    if (start < rp.start_distance) {
+      log.push_back("refinement: first correspondence distance " + std::to_string(start) +
+                    " m (half the wall thickness: indoor faces must not snap onto the façades)");
+      rp.start_distance = start;
+    }
+  }
+}
+
 /// Beyond the papers: two clearly different hypotheses scored almost the same on features
 /// (a nearly symmetric feature layout, e.g. mirrored dwellings). Both are refined on points;
 /// when one leaves clearly fewer source points unexplained (1 - refined overlap ratio), it
@@ -210,6 +229,7 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
     if (sc && tc) {
       auto rp = p.refinement;
       rp.seed = p.seed;
+      limitToWallThickness(out.global, rp, out.log);
       out.refinement = refineRegistration(*sc, *tc, out.global.transform, rp, progress);
     }
   } else if (out.global.status == RegistrationStatus::Ambiguous && out.global.runner_up &&

@@ -7,7 +7,7 @@
 #include <random>
 #include <sstream>
 
-#include "registration/segments/segment_registration.hpp"
+#include "registration/openings/opening_match.hpp"
 
 namespace plumb {
 
@@ -35,16 +35,74 @@ const ParamSchema<OpeningRegistrationParams>& OpeningRegistrationParams::schema(
 
 namespace {
 
-std::vector<Segment3D> openingEdges(const std::vector<Opening>& openings) {
-  std::vector<Segment3D> out;
-  for (const auto& o : openings)
-    for (const auto& e : o.edges()) out.push_back(e);
-  return out;
+/// Yaw-only rotation taking horizontal direction `from` onto `to` (scans are Z-up,
+/// ALGORITHMS.md "Frames"): unlike Quaternion::FromTwoVectors it never picks a tilted axis for
+/// opposite vectors.
+Eigen::Matrix3d yawBetween(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+  const double yaw = std::atan2(to.y(), to.x()) - std::atan2(from.y(), from.x());
+  return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
 
-struct Candidate {
-  int so, to, sign, corner_s, corner_t;
+struct Base {
+  int s, t, pairing;
 };
+
+/// Beyond the paper when no perpendicular opening fixed the façade-normal DOF: candidate
+/// shifts along the façade normal from plane pairs parallel to the façade (indoor walls seen
+/// through the windows in the outdoor scan and their indoor counterparts), scored with the
+/// polygon overlap similarity (2021 eq. 10). Returns the shift along `inward` (or NaN).
+double normalShiftFromPlanes(const FeatureSet& source, const FeatureSet& target,
+                             const RigidTransform& T, const Eigen::Vector3d& inward,
+                             double current_thickness, const OpeningRegistrationParams& p,
+                             double* similarity) {
+  const double cos_tol = std::cos(p.planes.clustering.angle_tolerance_deg * M_PI / 180.0);
+  std::vector<double> shifts;
+  std::vector<PlanarPolygon> src_planes, tgt_planes;
+  for (const auto& pt : target.planes)
+    if (std::abs(pt.normal.dot(inward)) >= cos_tol) tgt_planes.push_back(pt);
+  for (const auto& ps : source.planes) {
+    if (std::abs((T.rotation() * ps.normal).dot(inward)) < cos_tol) continue;
+    src_planes.push_back(ps);
+    for (const auto& pt : tgt_planes) {
+      const double shift = inward.dot(pt.centroid - T.apply(ps.centroid));
+      // A plausible positive thickness (at least d): excludes the indoor wall face on the
+      // façade face itself, the zero-thickness placement this step replaces.
+      const double th = current_thickness + shift;
+      if (th >= p.distance.robust_distance && th <= p.max_wall_thickness) shifts.push_back(shift);
+    }
+  }
+  std::sort(shifts.begin(), shifts.end());
+  double best = std::nan(""), best_sim = 0.0;
+  for (double s : shifts) {
+    const RigidTransform Ts(T.rotation(), T.translation() + s * inward);
+    const double sim = planeSimilarity(src_planes, tgt_planes, Ts, p.planes);
+    if (sim > best_sim) {
+      best_sim = sim;
+      best = s;
+    }
+  }
+  *similarity = best_sim;
+  return best;
+}
+
+/// Distinct façade orientations among matched edges (normals more than 30° apart).
+int matchedDirections(const ThickScore& s) {
+  std::vector<Eigen::Vector3d> dirs;
+  for (const auto& m : s.matches) {
+    if (m.similarity < 0.5) continue;
+    bool known = false;
+    for (const auto& d : dirs)
+      if (std::abs(d.dot(m.facade_normal)) > std::cos(M_PI / 6)) known = true;
+    if (!known) dirs.push_back(m.facade_normal);
+  }
+  return int(dirs.size());
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
 
 }  // namespace
 
@@ -56,148 +114,144 @@ GlobalRegistrationResult registerOpenings(const FeatureSet& source, const Featur
   r.score_unit = "matched opening edges";
   r.source_features = source.openings.size();
   r.target_features = target.openings.size();
-  auto usable = [&](const FeatureSet& f) {
-    std::vector<int> idx;
-    for (std::size_t i = 0; i < f.openings.size(); ++i) {
-      const int w = f.openings[i].facade;
-      if (w >= 0 && w < int(f.planes.size()) && f.planes[w].isVertical(p.vertical_tolerance_deg))
-        idx.push_back(int(i));
-    }
-    return idx;
-  };
-  const auto so = usable(source), to = usable(target);
-  if (so.empty() || to.empty()) {
+  const auto src = orientedOpenings(source, p.vertical_tolerance_deg);
+  const auto tgt = orientedOpenings(target, p.vertical_tolerance_deg);
+  if (src.empty() || tgt.empty()) {
     r.status = RegistrationStatus::TooFewFeatures;
     r.message = "openings: need openings on vertical walls in both datasets (source has " +
-                std::to_string(so.size()) + ", target " + std::to_string(to.size()) + ")";
+                std::to_string(src.size()) + ", target " + std::to_string(tgt.size()) + ")";
     return r;
   }
-  const std::vector<Segment3D> src_edges = openingEdges(source.openings);
-  const SegmentSetIndex tgt_index(openingEdges(target.openings), p.distance);
+  const double d = p.distance.robust_distance;
+  const double cos_tol = std::cos(p.distance.max_angle_deg * M_PI / 180.0);
+  const double sin_tol = std::sin(p.vertical_tolerance_deg * M_PI / 180.0);
+  const ThickOpeningMatcher matcher(tgt, p.distance, p.max_wall_thickness, p.distance.max_angle_deg);
 
-  // Enumerate (source opening, target opening, normal sign, bottom-corner pairing).
-  std::vector<Candidate> cands;
-  for (int a : so)
-    for (int b : to)
-      for (int s : {1, -1})
-        for (int cs : {0, 1}) cands.push_back({a, b, s, 0, cs});
-  if (int(cands.size()) > p.max_hypotheses) {
+  // Base hypotheses (2023 §III-B): a source opening's wall onto a target opening's façade,
+  // one bottom corner onto the other. Indoor openings face into the room, outdoor ones out
+  // of the building, so the normals are paired opposite (one rotation, not both signs), and
+  // the indoor bottom-left corner (seen from inside) is the outdoor bottom-right one.
+  std::vector<Base> bases;
+  for (std::size_t a = 0; a < src.size(); ++a)
+    for (std::size_t b = 0; b < tgt.size(); ++b)
+      for (int k : {0, 1}) bases.push_back({int(a), int(b), k});
+  if (int(bases.size()) > p.max_hypotheses) {
     std::mt19937_64 rng(p.seed);
-    std::shuffle(cands.begin(), cands.end(), rng);
-    cands.resize(p.max_hypotheses);
+    std::shuffle(bases.begin(), bases.end(), rng);
+    bases.resize(p.max_hypotheses);
   }
-  HypothesisRanking ranking(2.0, std::max(0.3, 3 * p.distance.robust_distance));
-  for (std::size_t k = 0; k < cands.size(); ++k) {
-    if (k % 256 == 0) {
+  HypothesisRanking ranking(2.0, std::max(0.3, 3 * d));
+  std::vector<double> thicknesses;
+  for (std::size_t h = 0; h < bases.size(); ++h) {
+    if (h % 128 == 0) {
       checkCanceled(progress);
-      reportProgress(progress, 0.7 * double(k) / cands.size(), "openings: hypotheses");
+      reportProgress(progress, 0.8 * double(h) / bases.size(), "openings: hypotheses");
     }
-    const auto& c = cands[k];
-    const Opening& o1 = source.openings[c.so];
-    const Opening& o2 = target.openings[c.to];
-    const Eigen::Vector3d n1 = source.planes[o1.facade].normal;
-    const Eigen::Vector3d n2 = c.sign * target.planes[o2.facade].normal;
-    // Rotation about the intersection line of the two planes: takes n1 onto n2.
-    const Eigen::Matrix3d R = Eigen::Quaterniond::FromTwoVectors(n1, n2).toRotationMatrix();
-    // Bottom corners (0, 1): source corner 0 with target corner 0 or 1.
-    const Eigen::Vector3d c1 = R * o1.corners[c.corner_s];
-    const Eigen::Vector3d c2 = o2.corners[c.corner_t];
-    // In-plane DOF from the corners; along the normal: wall plane onto the façade plane
-    // (zero thickness, the paper's placement).
-    const Eigen::Vector3d nf = target.planes[o2.facade].normal;
-    const double wall_offset = n2.dot(R * source.planes[o1.facade].centroid);
-    Eigen::Vector3d t = c2 - c1;
-    t -= nf.dot(t) * nf;
-    t += (nf.dot(target.planes[o2.facade].centroid) - nf.dot(R * source.planes[o1.facade].centroid)) * nf;
-    (void)wall_offset;
-    const RigidTransform T(R, t);
-    ranking.add({T, tgt_index.similarity(src_edges, T), ""});
+    const OrientedOpening& s = src[bases[h].s];
+    const OrientedOpening& t = tgt[bases[h].t];
+    const Opening& os = source.openings[s.index];
+    const Opening& ot = target.openings[t.index];
+    if (std::abs(s.width - t.width) > 2 * d) continue;  // not the same opening
+    const Eigen::Matrix3d R = yawBetween(s.normal, -t.normal);
+    const int cs = bases[h].pairing == 0 ? 0 : 1, ct = bases[h].pairing == 0 ? 1 : 0;
+    // Zero thickness (the paper's placement): the corners coincide.
+    const Eigen::Vector3d t0 = ot.corners[ct] - R * os.corners[cs];
+    const RigidTransform T0(R, t0);
+    // The third DOF (along the façade normal n): the paper intersects two indoor planes
+    // perpendicular to the façade with the wall and the façade (zero thickness). Here an
+    // opening on a perpendicular wall and a facing target opening at the same height and of the
+    // same width give the shift directly: its in-plane horizontal position is along n. The
+    // source must end up behind the façade face: thickness in [-d, max_wall_thickness].
+    const Eigen::Vector3d n = t.normal;
+    thicknesses.clear();
+    for (const auto& k : src) {
+      const Eigen::Vector3d nk = R * k.normal;
+      if (std::abs(nk.dot(n)) > sin_tol * 2 + 0.02) continue;  // not perpendicular
+      const Eigen::Vector3d ck = T0.apply(k.centre);
+      for (const auto& m : tgt) {
+        if (nk.dot(m.normal) > -cos_tol) continue;
+        if (std::abs(ck.z() - m.centre.z()) > 2 * d || std::abs(k.width - m.width) > 2 * d) continue;
+        const double th = n.dot(ck - m.centre);
+        if (th >= -d && th <= p.max_wall_thickness) thicknesses.push_back(th);
+      }
+    }
+    std::sort(thicknesses.begin(), thicknesses.end());
+    std::size_t kept = 0;
+    for (double th : thicknesses) {
+      if (kept > 0 && th - thicknesses[kept - 1] < 0.5 * d) continue;
+      thicknesses[kept++] = th;
+    }
+    thicknesses.resize(kept);
+    const bool measured = !thicknesses.empty();
+    if (!measured) thicknesses.push_back(p.assumed_wall_thickness);
+    for (double th : thicknesses) {
+      const RigidTransform T(R, t0 - th * n);
+      const std::string label = "opening " + std::to_string(s.index) + " -> " +
+                                std::to_string(t.index) + (measured ? ", normal DOF from a perpendicular opening"
+                                                                     : ", normal DOF assumed");
+      ranking.add({T, matcher.score(src, T).score, label});
+    }
   }
   finalizeFromRanking(ranking, p.min_matched_segments, p.min_relative_gap, r);
   if (!ranking.best()) return r;
-  // Polish the 5-DOF placement on matched opening edges (eq. 14 generalised), then the
-  // third DOF.
-  RigidTransform T = polishOnSegments(src_edges, tgt_index, r.transform, 5, true).transform;
-  // The façade of the best hypothesis: the target façade holding most matched openings.
-  int facade = -1, wall = -1;
-  {
-    std::vector<int> votes(target.planes.size(), 0);
-    for (std::size_t i = 0; i < src_edges.size(); ++i) {
-      const auto m = tgt_index.match(T.apply(src_edges[i].a), T.apply(src_edges[i].b));
-      if (m.target >= 0) {
-        const int f = target.openings[m.target / 4].facade;
-        if (f >= 0) ++votes[f];
-        if (wall < 0) wall = source.openings[i / 4].facade;
+  // Polish the translation on every matched edge (thickness free), the runner-up too so
+  // the gap compares like with like.
+  double rms = 0.0;
+  RigidTransform T = matcher.polish(src, r.transform, 5, &rms);
+  ThickScore fin = matcher.score(src, T, true);
+  r.transform = T;
+  r.score = fin.score;
+  if (r.runner_up) {
+    r.runner_up->transform = matcher.polish(src, r.runner_up->transform, 5);
+    r.runner_up->score = matcher.score(src, r.runner_up->transform).score;
+    r.relative_gap = r.score > 0 ? (r.score - r.runner_up->score) / r.score : 0.0;
+    if (r.ok() && r.relative_gap < p.min_relative_gap) {
+      r.status = RegistrationStatus::Ambiguous;
+      std::ostringstream m;
+      m << "two different transforms score almost the same after polishing (" << r.score
+        << " vs " << r.runner_up->score << " " << r.score_unit << ", gap "
+        << 100.0 * r.relative_gap << "%): the façades are too regular or openings are missing";
+      r.message = m.str();
+    }
+  }
+  r.inlier_features = std::size_t(fin.matched_openings);
+  r.feature_rms = rms;
+  // The façade-normal DOF is measured when matched openings lie on two non-parallel façades.
+  bool measured = matchedDirections(fin) >= 2;
+  double plane_sim = 0.0;
+  if (!measured && r.ok()) {
+    // Fall back to planes parallel to the main façade (interior walls seen through windows).
+    const ThickEdgeMatch* first = fin.matches.empty() ? nullptr : &fin.matches.front();
+    if (first) {
+      const Eigen::Vector3d inward = -first->facade_normal;
+      const double shift =
+          normalShiftFromPlanes(source, target, T, inward, median(fin.thickness), p, &plane_sim);
+      if (!std::isnan(shift)) {
+        T = RigidTransform(T.rotation(), T.translation() + shift * inward);
+        r.transform = T;
+        fin = matcher.score(src, T, true);
+        measured = true;
       }
     }
-    facade = int(std::max_element(votes.begin(), votes.end()) - votes.begin());
   }
-  if (wall < 0) wall = source.openings[so[0]].facade;
-  const Eigen::Vector3d nf = target.planes[facade].normal;
-  // Inward direction: the side of the façade where the (transformed) indoor data lies.
-  double side = 0.0;
-  for (const auto& pl : source.planes) side += pl.area * nf.dot(T.apply(pl.centroid) - target.planes[facade].centroid);
-  const Eigen::Vector3d inward = side >= 0 ? nf : Eigen::Vector3d(-nf);
-  // Candidate shifts along the normal from plane pairs parallel to the façade, within the
-  // thickness range; thickness = distance from the façade face to the shifted wall face.
-  auto thicknessAfter = [&](double shift) {
-    const Eigen::Vector3d wc = T.apply(source.planes[wall].centroid) + shift * inward;
-    return inward.dot(wc - target.planes[facade].centroid);
-  };
-  std::vector<double> shifts;
-  const double cos_tol = std::cos(p.planes.clustering.angle_tolerance_deg * M_PI / 180.0);
-  for (std::size_t i = 0; i < source.planes.size(); ++i) {
-    const auto& ps = source.planes[i];
-    const Eigen::Vector3d n = T.rotation() * ps.normal;
-    if (std::abs(n.dot(nf)) < cos_tol || int(i) == wall) continue;
-    for (std::size_t j = 0; j < target.planes.size(); ++j) {
-      if (int(j) == facade) continue;
-      const auto& pt = target.planes[j];
-      if (std::abs(pt.normal.dot(nf)) < cos_tol) continue;
-      const double shift = inward.dot(pt.centroid - T.apply(ps.centroid));
-      const double th = thicknessAfter(shift);
-      if (th >= -0.02 && th <= p.max_wall_thickness) shifts.push_back(shift);
-    }
-  }
-  const double assumed_shift = p.assumed_wall_thickness - thicknessAfter(0.0);
-  double best_shift = assumed_shift, best_sim = -1.0, second_sim = -1.0;
-  std::vector<PlanarPolygon> tgt_planes;
-  for (std::size_t j = 0; j < target.planes.size(); ++j)
-    if (int(j) != facade) tgt_planes.push_back(target.planes[j]);
-  std::vector<PlanarPolygon> src_planes;
-  for (std::size_t i = 0; i < source.planes.size(); ++i)
-    if (int(i) != wall) src_planes.push_back(source.planes[i]);
-  std::sort(shifts.begin(), shifts.end());
-  for (double s : shifts) {
-    const RigidTransform Ts(T.rotation(), T.translation() + s * inward);
-    const double sim = planeSimilarity(src_planes, tgt_planes, Ts, p.planes);
-    if (sim > best_sim) {
-      second_sim = best_sim;
-      best_sim = sim;
-      best_shift = s;
-    }
-  }
-  const bool measured = best_sim > 0.0;
-  if (!measured) best_shift = assumed_shift;
-  r.transform = RigidTransform(T.rotation(), T.translation() + best_shift * inward);
-  r.score = tgt_index.similarity(src_edges, T);
-  const auto fin = polishOnSegments(src_edges, tgt_index, T, 0, true);
-  r.inlier_features = fin.matched / 4;
-  r.feature_rms = fin.rms;
-  r.figures.push_back({"wall thickness (m)", thicknessAfter(best_shift)});
+  const double thickness = median(fin.thickness);
+  r.figures.push_back({"wall thickness (m)", thickness});
   r.figures.push_back({"wall thickness measured", measured ? 1.0 : 0.0});
-  r.figures.push_back({"normal-DOF plane similarity (m^2)", std::max(0.0, best_sim)});
+  r.figures.push_back({"matched openings", double(fin.matched_openings)});
+  r.figures.push_back({"façade directions with matched openings", double(matchedDirections(fin))});
+  if (plane_sim > 0) r.figures.push_back({"normal-DOF plane similarity (m^2)", plane_sim});
   std::ostringstream msg;
-  msg << "openings: " << r.message << "; wall thickness " << thicknessAfter(best_shift) << " m "
-      << (measured ? "measured from planes seen through the openings"
-                   : "ASSUMED (no plane parallel to the façade seen from both sides): the "
-                     "translation along the façade normal is not measured");
+  msg << "openings: " << r.message << "; wall thickness " << thickness << " m "
+      << (measured ? "measured (openings matched on non-parallel façades, or planes seen "
+                     "through the openings)"
+                   : "ASSUMED (openings matched on one façade only and no plane parallel to it "
+                     "seen from both sides): the translation along the façade normal is not "
+                     "measured");
   r.message = msg.str();
   if (!measured && p.require_measured_thickness && r.ok()) {
     r.status = RegistrationStatus::TooFewFeatures;
     r.message += ". Failing instead of guessing (require-thickness)";
   }
-  (void)second_sim;
   reportProgress(progress, 1.0, "openings: done");
   return r;
 }

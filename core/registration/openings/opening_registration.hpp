@@ -1,24 +1,31 @@
 #pragma once
 // Indoor/outdoor registration with openings and planes (2023 §III-B, ALGORITHMS.md §6).
-// Per hypothesis (all combinations enumerated, or drawn at random with the seed when there
-// are more than `max_hypotheses`):
-//  - a façade in each dataset: the wall plane of a source (indoor) opening and the façade of
-//    a target (outdoor) opening; the source is rotated so the planes coincide, about their
-//    intersection line (both normal signs tried);
-//  - an opening corner in each (fixes the 2 in-plane DOF; bottom corners pair with bottom
-//    corners, both left/right pairings tried);
-//  - scored by the global robust segment distance (2023 eqs. 7-8) between opening edges with
-//    the paper's zero-thickness placement, then polished on matched opening edges (eq. 14).
-// The third DOF (along the façade normal): the paper intersects two indoor planes
-// perpendicular to the façade with the indoor wall (A) and the outdoor façade (B) and moves by
-// AB; p3 ∩ p4 is a line along the façade normal, so AB is the offset between the two planes
-// along it, i.e. zero thickness. Beyond the paper, the wall thickness is estimated: candidate
-// normal shifts come from pairs of planes parallel to the façade (indoor walls seen through
-// the windows in the outdoor scan, and their indoor counterparts), each scored with the
-// polygon overlap similarity (2021 eq. 10) of all planes; the chosen shift gives the
-// thickness (distance between the indoor wall face and the outdoor façade face), reported.
-// Without such planes the thickness is not measurable: `assumed_wall_thickness` is used and
-// the report says the façade-normal translation is assumed, not measured.
+// Hypotheses (all enumerated, or drawn at random with the seed beyond `max_hypotheses`):
+//  - the paper's façade + corner pair: a source (indoor) opening's wall onto a target
+//    (outdoor) opening's façade, rotated about the vertical (scans are Z-up) so the planes
+//    coincide, and one bottom corner onto the other (fixes the 2 in-plane DOF). Openings are
+//    oriented by their corner order (indoor ones face into the room, outdoor ones out of the
+//    building), so one normal pairing and one corner pairing per side are tried, not all four;
+//  - the third DOF (along the façade normal): the paper intersects two indoor planes
+//    perpendicular to the façade with the wall (A) and the façade (B) and moves by AB. p3 ∩ p4
+//    is a line along the façade normal, so AB is the offset between the two planes along it:
+//    zero thickness. Beyond the paper, an opening on a PERPENDICULAR wall paired with a
+//    facing outdoor opening at the same height and of the same width gives this DOF directly
+//    (its in-plane horizontal position is along the first façade's normal); each candidate
+//    must leave the indoor wall a plausible thickness behind the façade, [-d, max].
+// Score: beyond the paper's eq. 8 on zero-thickness edges (which lets one façade match at a
+// time, so a regular façade ties between shifts by one window spacing or one storey), every
+// source opening is matched on every façade at once, through the wall (opening_match.hpp):
+// a hypothesis must fit all façades, and the openings only one storey has (an entrance door)
+// break the storey tie. The best is polished (yaw + translation, eqs. 11-14 with the façade
+// normal free), the runner-up too, and the gap decides ambiguity honestly.
+// Wall thickness: the median offset of the matched indoor openings behind their façades,
+// measured when openings match on two non-parallel façades. With one façade only, candidate
+// normal shifts come from planes parallel to it (indoor walls seen through the windows in the
+// outdoor scan and their indoor counterparts), scored with the polygon overlap similarity
+// (2021 eq. 10), for a thickness in [d, max]. Without either, the thickness is not measured:
+// `assumed_wall_thickness` is used and the result says so (or fails, `require-thickness`).
+
 #include <cstdint>
 
 #include "common/params.hpp"

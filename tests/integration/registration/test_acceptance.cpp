@@ -19,9 +19,7 @@ namespace {
 
 constexpr int kPoses = 20;
 
-/// `require_success_rate`: false only for indoor-outdoor, which does not reach 95% yet (see
-/// below); the no-confident-wrong-answer assertion holds for every scenario.
-void runScenario(const std::string& name, std::uint64_t seed, bool require_success_rate = true) {
+void runScenario(const std::string& name, std::uint64_t seed) {
   const PipelineParams params = acceptanceParams();
   const Scenario s = makeScenario(name, params);
   std::printf("%s: source %zu points, target %s; simulation %.2f s, target features %.2f s\n",
@@ -49,20 +47,12 @@ void runScenario(const std::string& name, std::uint64_t seed, bool require_succe
   }
   std::printf("%s: %d/%d within 0.1 deg / 2 cm, %d confident wrong answers\n", name.c_str(),
               correct, kPoses, confident_wrong);
-  if (require_success_rate)
-    EXPECT_GE(correct, (95 * kPoses + 99) / 100) << name << ": success rate below 95%";
+  EXPECT_GE(correct, (95 * kPoses + 99) / 100) << name << ": success rate below 95%";
 }
 
 }  // namespace
 
 TEST(RegistrationAcceptance, IndoorIndoorTwoStations) { runScenario("indoor-indoor", 11); }
-// NOT at 95% yet (0/20 measured, every case reported as an ambiguous failure): the planes
-// score prefers placing the indoor floor on the street ground (~65 m^2 of overlap) to the true
-// pose (~11 m^2: the MMS sees little of the interior through windows), and the openings score
-// ties between window-spacing shifts of the regular façade. Only the failure-reporting
-// requirement is asserted here until the engine handles it.
-TEST(RegistrationAcceptance, IndoorOutdoorTlsToMmsNeverConfidentlyWrong) {
-  runScenario("indoor-outdoor", 12, /*require_success_rate=*/false);
-}
+TEST(RegistrationAcceptance, IndoorOutdoorTlsToMms) { runScenario("indoor-outdoor", 12); }
 TEST(RegistrationAcceptance, ScanToGeneratedBim) { runScenario("bim-generated", 13); }
 TEST(RegistrationAcceptance, ScanToDuplexIfc) { runScenario("bim-duplex", 14); }

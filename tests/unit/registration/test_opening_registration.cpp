@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <map>
 #include <random>
 
 #include "registration/openings/opening_registration.hpp"
@@ -19,6 +20,8 @@ FeatureSet outdoorFeatures(const FeatureSet& indoor, const std::vector<test::Roo
   out.facades.push_back(0);
   for (auto o : indoor.openings) {
     for (auto& c : o.corners) c.x() = -w;
+    // Seen from outside (plumb::Opening: counter-clockwise from the scanner side): mirrored.
+    o.corners = {o.corners[1], o.corners[0], o.corners[3], o.corners[2]};
     o.facade = 0;
     out.openings.push_back(o);
     // The back wall of the room behind, seen through the window (a patch).
@@ -82,4 +85,112 @@ TEST(OpeningRegistration, UnmeasurableThicknessIsAFailureNotAGuess) {
 TEST(OpeningRegistration, NoOpeningsIsTooFewFeatures) {
   const FeatureSet indoor = test::roomFeatures(test::asymmetricRooms(), false);
   EXPECT_EQ(registerOpenings(indoor, indoor, {}).status, RegistrationStatus::TooFewFeatures);
+}
+
+namespace {
+// A 9 x 8 m house with 0.4 m walls (outer faces x = -0.2, 9.2, y = -0.2, 8.2), two storeys
+// of 3 m, two 1.2 x 1.4 m windows on every side and storey; the front (y = -0.2) has an
+// entrance door instead of its first ground-floor window when `door`. Indoor = the ground
+// floor seen from inside (wall inner faces, openings facing into the rooms); outdoor = both
+// storeys seen from the street (openings facing out). Regular façades: the windows repeat on
+// every side and on both storeys.
+struct House {
+  FeatureSet indoor, outdoor;
+};
+
+Opening facing(const Eigen::Vector3d& centre_on_face, const Eigen::Vector3d& towards_viewer,
+               double width, double bottom, double height, int facade) {
+  // Counter-clockwise seen from the viewer: (c1 - c0) x (c3 - c0) points to the viewer.
+  const Eigen::Vector3d h = Eigen::Vector3d::UnitZ().cross(towards_viewer);
+  Eigen::Vector3d base = centre_on_face;
+  base.z() = bottom;
+  Opening o;
+  o.corners = {base - 0.5 * width * h, base + 0.5 * width * h,
+               base + 0.5 * width * h + height * Eigen::Vector3d::UnitZ(),
+               base - 0.5 * width * h + height * Eigen::Vector3d::UnitZ()};
+  o.facade = facade;
+  o.evidence_count = 300;
+  return o;
+}
+
+House regularHouse(bool door) {
+  House h;
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(),
+                        Z = Eigen::Vector3d::UnitZ();
+  struct Side {
+    Eigen::Vector3d out;  // outward normal
+    double outer;         // outer face offset along out
+    Eigen::Vector3d along;
+    std::array<double, 2> pos;  // window centres along `along`
+  };
+  const std::vector<Side> sides = {{-Y, 0.2, X, {2.2, 6.8}},
+                                   {Y, 8.2, X, {2.2, 6.8}},
+                                   {-X, 0.2, Y, {1.9, 6.1}},
+                                   {X, 9.2, Y, {1.9, 6.1}}};
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    const Side& s = sides[k];
+    const Eigen::Vector3d centre(4.5, 4.0, 0.0);
+    auto onFace = [&](double offset, double a) {
+      Eigen::Vector3d p = centre + (offset - s.out.dot(centre)) * s.out;
+      return Eigen::Vector3d(p + (a - s.along.dot(p)) * s.along);
+    };
+    const int wi = int(h.indoor.planes.size()), wo = int(h.outdoor.planes.size());
+    h.indoor.planes.push_back(test::makeRectPolygon(onFace(s.outer - 0.4, 0.0), s.along, Z, 8.0, 2.5));
+    h.outdoor.planes.push_back(test::makeRectPolygon(onFace(s.outer, -0.5), s.along, Z, 10.0, 6.0));
+    h.indoor.facades.push_back(wi);
+    h.outdoor.facades.push_back(wo);
+    for (int w = 0; w < 2; ++w) {
+      const bool is_door = door && k == 0 && w == 0;
+      const double width = is_door ? 0.9 : 1.2, bottom = is_door ? 0.25 : 1.15,
+                   height = is_door ? 2.1 : 1.4;
+      h.indoor.openings.push_back(
+          facing(onFace(s.outer - 0.4, s.pos[w]), -s.out, width, bottom, height, wi));
+      h.outdoor.openings.push_back(facing(onFace(s.outer, s.pos[w]), s.out, width, bottom, height, wo));
+      h.outdoor.openings.push_back(facing(onFace(s.outer, s.pos[w]), s.out, 1.2, 4.15, 1.4, wo));
+    }
+  }
+  return h;
+}
+}  // namespace
+
+// The paper's zero-thickness edge score matches one façade at a time and ties between shifts
+// by one window spacing or one storey; matching through the wall on every façade at once fixes
+// all three translations (perpendicular openings give the façade-normal DOF), measures the
+// wall thickness, and the entrance door (ground floor only) breaks the storey tie.
+TEST(OpeningRegistration, RegularFacadesOnAllSidesThroughTheWall) {
+  const House house = regularHouse(true);
+  std::mt19937_64 rng(5);
+  test::Perturbation pert;
+  pert.drop_fraction = 0.0;
+  pert.outliers = 0;
+  pert.position_noise = 0.003;
+  const Eigen::Vector3d centre(4.5, 4.0, 1.5);
+  for (int run = 0; run < 10; ++run) {
+    const RigidTransform pose = test::randomPose(rng);
+    FeatureSet source = test::perturb(house.indoor, pert, rng);
+    source.transform(pose.inverse());
+    const auto r = registerOpenings(source, test::perturb(house.outdoor, pert, rng), {});
+    ASSERT_TRUE(r.ok()) << run << ": " << r.message;
+    EXPECT_LT(RigidTransform::rotationErrorDeg(r.transform, pose), 0.1) << run;
+    EXPECT_LT((r.transform.apply(pose.inverse().apply(centre)) - centre).norm(), 0.02) << run;
+    std::map<std::string, double> fig(r.figures.begin(), r.figures.end());
+    EXPECT_NEAR(fig["wall thickness (m)"], 0.4, 0.02) << r.message;
+    EXPECT_EQ(fig["wall thickness measured"], 1.0);
+    EXPECT_GE(fig["façade directions with matched openings"], 2.0);
+  }
+}
+
+// Without the door nothing tells the ground floor from the first floor: the result must be a
+// failure (ambiguous), never a confident answer one storey off.
+TEST(OpeningRegistration, StoreyTieWithoutADoorIsAmbiguous) {
+  const House house = regularHouse(false);
+  std::mt19937_64 rng(6);
+  for (int run = 0; run < 5; ++run) {
+    const RigidTransform pose = test::randomPose(rng);
+    FeatureSet source = house.indoor;
+    source.transform(pose.inverse());
+    const auto r = registerOpenings(source, house.outdoor, {});
+    EXPECT_EQ(r.status, RegistrationStatus::Ambiguous) << run << ": " << r.message;
+    ASSERT_TRUE(r.runner_up.has_value());
+  }
 }
