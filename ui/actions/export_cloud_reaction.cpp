@@ -1,8 +1,8 @@
 #include "ui/actions/export_cloud_reaction.hpp"
 
-#include <QFileDialog>
 #include <QMainWindow>
 
+#include "ui/actions/file_dialogs.hpp"
 #include "ui/app_context.hpp"
 #include "ui/layers/layer_transform.hpp"
 #include "ui/layers/scene.hpp"
@@ -26,7 +26,7 @@ void ExportCloudReaction::onTriggered() {
     app().log.error(tr("Export: select a point dataset"));
     return;
   }
-  const QString path = QFileDialog::getSaveFileName(
+  const QString path = chooseFileToSave(
       &app().window, tr("Export registered cloud"), layer->name(),
       tr("E57 with poses (*.e57);;PLY (*.ply);;LAS (*.las)"));
   if (path.isEmpty()) return;
@@ -43,7 +43,7 @@ void ExportTransformReaction::onTriggered() {
     app().log.error(tr("Export transform: select a dataset or a model"));
     return;
   }
-  const QString path = QFileDialog::getSaveFileName(&app().window, tr("Export transform"),
+  const QString path = chooseFileToSave(&app().window, tr("Export transform"),
                                                     "transform.json",
                                                     tr("JSON (*.json);;4x4 text (*.txt)"));
   if (!path.isEmpty()) exportTransform(app(), *layer, path);

@@ -1,16 +1,16 @@
 #include "ui/actions/open_file_reaction.hpp"
 
-#include <QFileDialog>
 #include <QMainWindow>
 
+#include "ui/actions/file_dialogs.hpp"
 #include "ui/app_context.hpp"
 #include "ui/tasks/load_files.hpp"
 
 namespace plumb::ui {
 
 void OpenFileReaction::onTriggered() {
-  const QStringList files = QFileDialog::getOpenFileNames(&app().window, tr("Open survey data"),
-                                                          {}, supportedFileFilter());
+  const QStringList files = chooseFilesToOpen(&app().window, tr("Open survey data"),
+                                              supportedFileFilter());
   if (!files.isEmpty()) loadFiles(app(), files);
 }
 

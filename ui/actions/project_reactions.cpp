@@ -1,8 +1,8 @@
 #include "ui/actions/project_reactions.hpp"
 
-#include <QFileDialog>
 #include <QMainWindow>
 
+#include "ui/actions/file_dialogs.hpp"
 #include "ui/app_context.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/project/project_file.hpp"
@@ -15,7 +15,7 @@ QString filter() { return QObject::tr("Plumb project (*.plumb.json);;JSON (*.jso
 
 void OpenProjectReaction::onTriggered() {
   const QString path =
-      QFileDialog::getOpenFileName(&app().window, tr("Open project"), {}, filter());
+      chooseFileToOpen(&app().window, tr("Open project"), filter());
   if (path.isEmpty()) return;
   try {
     openProject(app(), path);
@@ -25,7 +25,7 @@ void OpenProjectReaction::onTriggered() {
 }
 
 void SaveProjectReaction::onTriggered() {
-  QString path = QFileDialog::getSaveFileName(&app().window, tr("Save project"),
+  QString path = chooseFileToSave(&app().window, tr("Save project"),
                                               "project.plumb.json", filter());
   if (path.isEmpty()) return;
   if (!path.endsWith(".json", Qt::CaseInsensitive)) path += ".plumb.json";

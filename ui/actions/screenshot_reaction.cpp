@@ -1,8 +1,8 @@
 #include "ui/actions/screenshot_reaction.hpp"
 
-#include <QFileDialog>
 #include <QMainWindow>
 
+#include "ui/actions/file_dialogs.hpp"
 #include "ui/app_context.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/view/screenshot.hpp"
@@ -10,7 +10,7 @@
 namespace plumb::ui {
 
 void ScreenshotReaction::onTriggered() {
-  QString path = QFileDialog::getSaveFileName(&app().window, tr("Export screenshot"),
+  QString path = chooseFileToSave(&app().window, tr("Export screenshot"),
                                               "plumb.png", tr("PNG image (*.png)"));
   if (path.isEmpty()) return;
   if (!path.endsWith(".png", Qt::CaseInsensitive)) path += ".png";

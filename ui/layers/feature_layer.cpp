@@ -153,6 +153,8 @@ void FeatureLayer::setTransform(const RigidTransform& t) {
   line_actor_->SetUserMatrix(m);
 }
 
+vtkProp* FeatureLayer::outlineProp() const { return line_actor_.GetPointer(); }
+
 std::optional<FeatureRef> FeatureLayer::featureAt(const vtkProp* prop, long long cell) const {
   const std::vector<FeatureRef>* refs = nullptr;
   if (prop == fill_actor_.GetPointer()) refs = &fill_cells_;

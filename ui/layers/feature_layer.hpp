@@ -37,6 +37,9 @@ class FeatureLayer : public Layer {
   std::optional<FeatureRef> featureAt(const vtkProp* prop, long long cell) const;
   std::vector<PropertyRow> describeFeature(const FeatureRef& ref) const;
 
+  /// The outlines (plane rings, openings, segments): thin, drawn over the fills, so picked
+  /// before them.
+  vtkProp* outlineProp() const;
   std::vector<vtkProp*> props() const override;
   Bounds bounds() const override;
   std::vector<PropertyRow> describe() const override;

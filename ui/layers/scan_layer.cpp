@@ -9,6 +9,9 @@
 #include <vtkProperty.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
+#include <random>
+
 #include "ui/layers/point_geometry.hpp"
 #include "ui/layers/render_frame.hpp"
 
@@ -24,7 +27,7 @@ Eigen::Matrix4d offsetMatrix(const Eigen::Vector3d& offset) {
 }
 
 void setupActor(vtkActor* actor, vtkPolyDataMapper* mapper, vtkPolyData* poly) {
-  mapper->SetInputData(poly);
+  if (poly) mapper->SetInputData(poly);
   mapper->SetScalarModeToUsePointData();
   mapper->SetColorModeToDirectScalars();
   mapper->ScalarVisibilityOn();
@@ -46,11 +49,45 @@ ScanLayer::ScanLayer(std::shared_ptr<const Dataset> data, std::size_t scan_index
   for (const auto& p : cloud.positions)
     if (p.allFinite()) local_bounds_.extend(p.cast<double>());
   full_poly_ = makeSharedPointPolyData(cloud);
-  lod_indices_ = randomSubset(cloud.size(), lod_points, static_cast<std::uint32_t>(scan_index_));
-  lod_poly_ = makeSubsetPointPolyData(cloud, lod_indices_);
+  const auto seed = static_cast<std::uint32_t>(scan_index_);
+  lod_order_ = randomSubset(cloud.size(), std::min(cloud.size(), kMaxLodPoints), seed);
+  std::shuffle(lod_order_.begin(), lod_order_.end(), std::mt19937(seed + 1));
   setupActor(full_actor_, full_mapper_, full_poly_);
-  setupActor(lod_actor_, lod_mapper_, lod_poly_);
+  setupActor(lod_actor_, lod_mapper_, nullptr);
+  setLodPointCount(lod_points);
+}
+
+void ScanLayer::setLodPointCount(std::size_t points) {
+  const std::size_t k = std::clamp<std::size_t>(points, 1, std::max<std::size_t>(lod_order_.size(), 1));
+  if (k == lod_indices_.size() && lod_poly_) return;
+  // A prefix of a random order is a uniform random subset; sorted, it reads memory in order.
+  lod_indices_.assign(lod_order_.begin(), lod_order_.begin() + std::min(k, lod_order_.size()));
+  std::sort(lod_indices_.begin(), lod_indices_.end());
+  lod_poly_ = makeSubsetPointPolyData(scan().cloud, lod_indices_);
+  lod_mapper_->SetInputData(lod_poly_);
+  copyLodColors();
   updateActors();
+}
+
+void ScanLayer::copyLodColors() {
+  auto* full = vtkUnsignedCharArray::SafeDownCast(full_poly_->GetPointData()->GetScalars());
+  if (!full || !lod_poly_) return;
+  auto lod = makeColorArray(lod_indices_.size());
+  const auto* src = reinterpret_cast<const Rgb*>(full->GetPointer(0));
+  auto* dst = reinterpret_cast<Rgb*>(lod->GetPointer(0));
+  for (std::size_t i = 0; i < lod_indices_.size(); ++i) dst[i] = src[lod_indices_[i]];
+  lod_poly_->GetPointData()->SetScalars(lod);
+  lod_poly_->Modified();
+}
+
+std::size_t ScanLayer::drawnPointCount() const {
+  if (!shown_) return 0;
+  return usesLod() ? lod_indices_.size() : scan().cloud.size();
+}
+
+bool ScanLayer::usesLod() const {
+  // A scan no larger than its subset has nothing to reduce: the full actor always shows.
+  return reduced_ && lod_indices_.size() < scan().cloud.size();
 }
 
 ScanLayer::~ScanLayer() = default;
@@ -83,14 +120,9 @@ void ScanLayer::setStyle(const PointStyle& style, double z_min, double z_max) {
     if (style.mode == PointColorMode::Distance) coloring.style.mode = PointColorMode::Elevation;
     fillPointColors(cloud, coloring, colors);
   }
-  auto lod = makeColorArray(lod_indices_.size());
-  const auto* src = reinterpret_cast<const Rgb*>(full->GetPointer(0));
-  auto* dst = reinterpret_cast<Rgb*>(lod->GetPointer(0));
-  for (std::size_t i = 0; i < lod_indices_.size(); ++i) dst[i] = src[lod_indices_[i]];
   full_poly_->GetPointData()->SetScalars(full);
-  lod_poly_->GetPointData()->SetScalars(lod);
   full_poly_->Modified();
-  lod_poly_->Modified();
+  copyLodColors();
   full_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
   lod_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
 }
@@ -133,9 +165,7 @@ void ScanLayer::applyVisibility(bool effective) {
 }
 
 void ScanLayer::updateActors() {
-  // A scan no larger than its subset has nothing to reduce: the full actor always shows.
-  const bool has_lod = lod_indices_.size() < scan().cloud.size();
-  const bool use_lod = reduced_ && has_lod;
+  const bool use_lod = usesLod();
   full_actor_->SetVisibility(shown_ && !use_lod);
   lod_actor_->SetVisibility(shown_ && use_lod);
   const auto m = renderMatrix(origin_, localToWorld());

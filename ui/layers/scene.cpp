@@ -12,6 +12,8 @@
 #include "ui/layers/feature_layer.hpp"
 #include "ui/layers/model_layer.hpp"
 #include "ui/layers/render_frame.hpp"
+#include "ui/layers/scan_layer.hpp"
+#include "ui/view/lod_budget.hpp"
 
 namespace plumb::ui {
 
@@ -25,7 +27,8 @@ void forEachLayer(Layer& layer, const F& f) {
 
 }  // namespace
 
-Scene::Scene(vtkRenderer* renderer, QObject* parent) : QObject(parent), renderer_(renderer) {}
+Scene::Scene(vtkRenderer* renderer, QObject* parent)
+    : QObject(parent), renderer_(renderer), lod_budget_(LodBudget().points()) {}
 
 Scene::~Scene() {
   for (auto& l : layers_) removeProps(*l);
@@ -52,8 +55,12 @@ ModelLayer& Scene::addModel(std::shared_ptr<const BimModel> model) {
 
 FeatureLayer& Scene::addFeatures(QString name, std::shared_ptr<const FeatureSet> features,
                                  Layer* parent) {
-  auto layer = std::make_unique<FeatureLayer>(std::move(name), std::move(features), origin());
-  ensureOrigin(layer->bounds());
+  auto layer = std::make_unique<FeatureLayer>(name, features, origin());
+  if (!origin_) {
+    // The first layer fixes the render origin: rebuild the layer relative to it.
+    ensureOrigin(layer->bounds());
+    if (origin_) layer = std::make_unique<FeatureLayer>(std::move(name), std::move(features), origin());
+  }
   return static_cast<FeatureLayer&>(adopt(std::move(layer), parent));
 }
 
@@ -66,6 +73,7 @@ Layer& Scene::adopt(std::unique_ptr<Layer> layer, Layer* parent) {
     added = layers_.back().get();
   }
   addProps(*added);
+  applyLodBudget();
   added->setReducedDetail(reduced_);
   emit layersChanged();
   emit renderNeeded();
@@ -132,20 +140,59 @@ void Scene::setReducedDetail(bool reduced) {
   for (auto& l : layers_) forEachLayer(*l, [reduced](Layer& x) { x.setReducedDetail(reduced); });
 }
 
+void Scene::setLodBudget(std::size_t points) {
+  lod_budget_ = points;
+  applyLodBudget();
+}
+
+void Scene::applyLodBudget() {
+  std::vector<ScanLayer*> scans;
+  std::size_t total = 0;
+  for (auto& l : layers_)
+    forEachLayer(*l, [&](Layer& x) {
+      if (x.kind() != LayerKind::Scan) return;
+      scans.push_back(static_cast<ScanLayer*>(&x));
+      total += scans.back()->scan().cloud.size();
+    });
+  if (total == 0) return;
+  const double share = static_cast<double>(lod_budget_) / static_cast<double>(total);
+  for (ScanLayer* s : scans)
+    s->setLodPointCount(static_cast<std::size_t>(share * static_cast<double>(s->scan().cloud.size())));
+}
+
+std::size_t Scene::drawnPointCount() const {
+  std::size_t n = 0;
+  for (const auto& l : layers_)
+    forEachLayer(*l, [&n](Layer& x) {
+      if (x.kind() == LayerKind::Scan) n += static_cast<ScanLayer&>(x).drawnPointCount();
+    });
+  return n;
+}
+
 std::optional<PickResult> Scene::pick(int x, int y) {
-  vtkNew<vtkCellPicker> picker;
-  picker->SetTolerance(0.005);
-  if (!picker->Pick(x, y, 0.0, renderer_)) return std::nullopt;
-  vtkProp* prop = picker->GetViewProp();
-  std::optional<PickResult> result;
+  // Outlines (openings, segments, plane rings) first: they are thin lines drawn over the
+  // translucent plane fills, and a click on one means that feature, not the wall behind it.
+  std::vector<FeatureLayer*> feature_layers;
   for (auto& l : layers_)
     forEachLayer(*l, [&](Layer& layer) {
-      if (result || layer.kind() != LayerKind::Features) return;
-      auto& features = static_cast<FeatureLayer&>(layer);
-      if (auto ref = features.featureAt(prop, picker->GetCellId()))
-        result = PickResult{&layer, features.describeFeature(*ref)};
+      if (layer.kind() == LayerKind::Features && layer.effectivelyVisible())
+        feature_layers.push_back(static_cast<FeatureLayer*>(&layer));
     });
-  return result;
+  for (const bool outlines_only : {true, false}) {
+    vtkNew<vtkCellPicker> picker;
+    picker->SetTolerance(0.005);
+    if (outlines_only) {
+      picker->PickFromListOn();
+      for (FeatureLayer* f : feature_layers) picker->AddPickList(f->outlineProp());
+    }
+    if (!picker->Pick(x, y, 0.0, renderer_)) continue;
+    vtkProp* prop = picker->GetViewProp();
+    for (FeatureLayer* f : feature_layers)
+      if (auto ref = f->featureAt(prop, picker->GetCellId()))
+        return PickResult{f, f->describeFeature(*ref)};
+    if (!outlines_only) break;
+  }
+  return std::nullopt;
 }
 
 void Scene::layerChanged(Layer*) { emit renderNeeded(); }

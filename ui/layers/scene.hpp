@@ -56,6 +56,12 @@ class Scene : public QObject {
   /// Level of detail on/off for every layer.
   void setReducedDetail(bool reduced);
   bool reducedDetail() const { return reduced_; }
+  /// Points drawn per moving frame by the whole scene, split among the scans by size
+  /// (LodBudget chooses it from measured frame times). Applies to layers added later too.
+  void setLodBudget(std::size_t points);
+  std::size_t lodBudget() const { return lod_budget_; }
+  /// Points the visible scans draw now (subsets while reduced, full clouds otherwise).
+  std::size_t drawnPointCount() const;
   /// Picks a feature at display position (x, y), VTK convention (y up, device pixels).
   std::optional<PickResult> pick(int x, int y);
 
@@ -79,7 +85,9 @@ class Scene : public QObject {
   vtkSmartPointer<vtkRenderer> renderer_;  ///< shared with the view
   std::vector<std::unique_ptr<Layer>> layers_;
   std::optional<Eigen::Vector3d> origin_;
+  void applyLodBudget();
   bool reduced_ = false;
+  std::size_t lod_budget_;
 };
 
 }  // namespace plumb::ui

@@ -7,17 +7,40 @@ namespace plumb::ui {
 
 LodController::LodController(VtkViewWidget& view, Scene& scene, QObject* parent)
     : QObject(parent), view_(view), scene_(scene) {
+  scene_.setLodBudget(budget_.points());
   settle_.setSingleShot(true);
   settle_.setInterval(kSettleMs);
   connect(&view_, &VtkViewWidget::interactionStarted, this, [this] {
     settle_.stop();
-    if (!scene_.reducedDetail()) scene_.setReducedDetail(true);
+    moving_ = true;
+    view_.setFrameTiming(true);
+    if (!scene_.reducedDetail()) {
+      scene_.setReducedDetail(true);
+      skip_frames_ = 1;
+    }
   });
-  connect(&view_, &VtkViewWidget::interactionEnded, this, [this] { settle_.start(); });
+  connect(&view_, &VtkViewWidget::interactionEnded, this, [this] {
+    moving_ = false;
+    view_.setFrameTiming(false);
+    settle_.start();
+  });
+  connect(&view_, &VtkViewWidget::frameRendered, this, &LodController::onFrame);
   connect(&settle_, &QTimer::timeout, this, [this] {
     scene_.setReducedDetail(false);
     view_.requestRender();
   });
+}
+
+void LodController::onFrame(double ms) {
+  if (!moving_ || !scene_.reducedDetail()) return;
+  if (skip_frames_ > 0) {
+    --skip_frames_;
+    return;
+  }
+  if (budget_.addFrame(scene_.drawnPointCount(), ms)) {
+    scene_.setLodBudget(budget_.points());
+    skip_frames_ = 1;
+  }
 }
 
 }  // namespace plumb::ui

@@ -138,6 +138,8 @@ void VtkViewWidget::resizeGL(int w, int h) {
 }
 
 void VtkViewWidget::paintGL() {
+  QElapsedTimer timer;
+  timer.start();
   vtkOpenGLState* state = render_window_->GetState();
   state->Reset();
   state->Push();
@@ -161,6 +163,8 @@ void VtkViewWidget::paintGL() {
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   state->Pop();
+  if (frame_timing_) context()->functions()->glFinish();
+  emit frameRendered(static_cast<double>(timer.nsecsElapsed()) / 1e6);
 }
 
 void VtkViewWidget::forwardPointer(QMouseEvent* event, unsigned long vtkEvent, int repeat) {

@@ -32,6 +32,9 @@ class VtkViewWidget : public QOpenGLWidget {
   /// Renders one frame synchronously (context made current, glFinish) and returns the
   /// wall time in milliseconds. Used by benchmarks and screenshot export.
   double renderNow();
+  /// While on, paintGL waits for the GPU (glFinish) so frameRendered reports the true frame
+  /// time (level-of-detail budget while the camera moves); off, it reports CPU time only.
+  void setFrameTiming(bool on) { frame_timing_ = on; }
 
  signals:
   /// The user started / ended moving the camera (drives level of detail).
@@ -39,6 +42,8 @@ class VtkViewWidget : public QOpenGLWidget {
   void interactionEnded();
   /// A click without drag at widget position (device pixels, VTK convention: y up).
   void clicked(int x, int y);
+  /// A frame was painted in `ms` milliseconds (see setFrameTiming).
+  void frameRendered(double ms);
 
  protected:
   void initializeGL() override;
@@ -66,6 +71,7 @@ class VtkViewWidget : public QOpenGLWidget {
   vtkNew<vtkInteractorStyleTrackballCamera> style_;
   QPoint press_position_;
   bool press_moved_ = false;
+  bool frame_timing_ = false;
 };
 
 }  // namespace plumb::ui

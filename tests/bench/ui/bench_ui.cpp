@@ -1,18 +1,40 @@
-// Frame time of the view with N points (default 20 million): full detail (what is drawn when
-// the camera is still) vs the level-of-detail subset (drawn while the camera moves). The
-// camera orbits between frames as during interaction. Prints median and max per mode.
+// Frame times of the 3D view, side by side with a peer, at several cloud sizes:
+//   plumb full   : Plumb's full-detail scan actor (what is drawn when the camera is still)
+//   plumb LOD    : the level-of-detail subset while the camera moves, its size chosen by the
+//                  adaptive LodBudget from measured frame times (the budget it settles on is
+//                  printed), plus the frame that switches back to full detail
+//   peer VTK     : plain vtkPolyDataMapper with default settings on the same points and colours
+//                  (vtkPoints + one vertex cell per point + RGB uchar point scalars)
+// The camera orbits between frames as during interaction; every frame ends with glFinish.
+//
+// usage: xvfb-run -a -s "-screen 0 1280x1024x24" bench_ui [--sizes 1000000,5000000,20000000]
+//                  [--target-ms 50] [--point-size 2] [--seconds 12]
 #include <QApplication>
 #include <QElapsedTimer>
 
+#include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <random>
+#include <sstream>
+#include <string>
 
 #include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/point_style.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/view/lod_budget.hpp"
 #include "ui/view/standard_view.hpp"
 #include "ui/view/surface_format.hpp"
 #include "ui/view/vtk_view_widget.hpp"
@@ -43,18 +65,75 @@ plumb::Dataset syntheticBuilding(std::size_t n) {
   return plumb::Dataset::fromCloud(std::move(cloud));
 }
 
-struct Stats {
-  double median, max;
+struct Timing {
+  double first = 0, median = 0, max = 0;
+  int frames = 0;
 };
 
-Stats measure(plumb::ui::VtkViewWidget& view, int frames) {
+double orbitFrame(plumb::ui::VtkViewWidget& view) {
+  view.renderer()->GetActiveCamera()->Azimuth(3.0);
+  return view.renderNow();
+}
+
+/// The first frame (uploads) alone, then up to `max_frames` orbiting frames within `budget_s`.
+Timing measure(plumb::ui::VtkViewWidget& view, int max_frames, double budget_s) {
+  Timing t;
+  t.first = orbitFrame(view);
   std::vector<double> ms;
-  for (int i = 0; i < frames; ++i) {
-    view.renderer()->GetActiveCamera()->Azimuth(3.0);
-    ms.push_back(view.renderNow());
+  double spent = 0;
+  while (static_cast<int>(ms.size()) < max_frames && (ms.size() < 3 || spent < budget_s * 1e3)) {
+    ms.push_back(orbitFrame(view));
+    spent += ms.back();
   }
   std::sort(ms.begin(), ms.end());
-  return {ms[ms.size() / 2], ms.back()};
+  t.median = ms[ms.size() / 2];
+  t.max = ms.back();
+  t.frames = static_cast<int>(ms.size());
+  return t;
+}
+
+/// The peer: a plain vtkPolyDataMapper with default settings on a copy of the same data.
+vtkSmartPointer<vtkActor> peerActor(const plumb::PointCloud& cloud, double point_size) {
+  const auto n = static_cast<vtkIdType>(cloud.size());
+  vtkNew<vtkPoints> points;  // float by default
+  points->SetNumberOfPoints(n);
+  vtkNew<vtkCellArray> verts;
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    const auto& p = cloud.positions[static_cast<std::size_t>(i)];
+    points->SetPoint(i, p.x(), p.y(), p.z());
+    verts->InsertNextCell(1, &i);
+    const auto& c = cloud.colors[static_cast<std::size_t>(i)];
+    colors->SetTypedTuple(i, c.data());
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(points);
+  poly->SetVerts(verts);
+  poly->GetPointData()->SetScalars(colors);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(poly);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetPointSize(static_cast<float>(point_size));
+  return actor;
+}
+
+std::vector<std::size_t> parseSizes(const char* s) {
+  std::vector<std::size_t> out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ',')) out.push_back(std::stoull(item));
+  return out;
+}
+
+std::string glRenderer(plumb::ui::VtkViewWidget& view) {
+  std::stringstream caps(view.renderWindow()->ReportCapabilities());
+  std::string line;
+  while (std::getline(caps, line))
+    if (line.find("OpenGL renderer string") != std::string::npos) return line;
+  return "OpenGL renderer: unknown";
 }
 
 }  // namespace
@@ -62,37 +141,72 @@ Stats measure(plumb::ui::VtkViewWidget& view, int frames) {
 int main(int argc, char** argv) {
   plumb::ui::setDefaultSurfaceFormat();
   QApplication app(argc, argv);
-  const std::size_t n = argc > 1 ? std::stoull(argv[1]) : 20'000'000;
-  const int frames = 15;
+  std::vector<std::size_t> sizes{1'000'000, 5'000'000, 20'000'000};
+  plumb::ui::LodBudget::Params budget_params;
+  double point_size = 2.0, seconds = 12.0;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--sizes")) sizes = parseSizes(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--target-ms")) budget_params.target_ms = std::stod(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--point-size")) point_size = std::stod(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--seconds")) seconds = std::stod(argv[i + 1]);
+  }
 
   plumb::ui::VtkViewWidget view;
   view.resize(1280, 800);
   view.show();
   QApplication::processEvents();  // benchmark harness only: let the window map once
+  view.renderNow();
 
-  QElapsedTimer t;
-  t.start();
-  auto data = std::make_shared<const plumb::Dataset>(syntheticBuilding(n));
-  const double make_ms = static_cast<double>(t.restart());
-  plumb::ui::Scene scene(view.renderer());
-  scene.addDataset(data);
-  const double layer_ms = static_cast<double>(t.restart());
-  plumb::ui::resetCamera(view.renderer());
-  const double first_ms = view.renderNow();  // includes the upload to the GPU
+  std::printf("bench_ui: %dx%d view, point size %.0f px, target %.0f ms per moving frame\n",
+              view.width(), view.height(), point_size, budget_params.target_ms);
+  std::printf("  %s\n", glRenderer(view).c_str());
+  {
+    plumb::ui::Scene empty(view.renderer());
+    const Timing e = measure(view, 10, 2.0);
+    std::printf("  empty scene: median %.1f ms per frame (background + blit)\n", e.median);
+  }
+  std::printf("  %10s | %-27s | %-36s | %-10s | %-27s\n", "points", "plumb full first/median/max",
+              "plumb LOD budget: median/max", "to full", "peer VTK first/median/max");
+  for (const std::size_t n : sizes) {
+    auto data = std::make_shared<const plumb::Dataset>(syntheticBuilding(n));
+    Timing full, lod, peer;
+    double back_to_full = 0;
+    std::size_t budget_points = 0;
+    {
+      plumb::ui::Scene scene(view.renderer());
+      auto& layer = scene.addDataset(data);
+      plumb::ui::PointStyle style = layer.style();
+      style.point_size = point_size;
+      layer.setStyle(style);
+      plumb::ui::resetCamera(view.renderer());
+      full = measure(view, 15, seconds);
 
-  const Stats full = measure(view, frames);
-  scene.setReducedDetail(true);
-  view.renderNow();  // first LOD frame uploads the subset
-  const Stats lod = measure(view, frames);
-
-  std::printf("bench_ui: %zu points, %dx%d view, %d frames per mode\n", n, view.width(),
-              view.height(), frames);
-  std::printf("  synthetic cloud %.0f ms, layer build (LOD subset + colours) %.0f ms, first frame %.0f ms\n",
-              make_ms, layer_ms, first_ms);
-  std::printf("  full detail : median %.1f ms (%.1f fps), max %.1f ms\n", full.median,
-              1000.0 / full.median, full.max);
-  std::printf("  LOD (%zu pts): median %.1f ms (%.1f fps), max %.1f ms\n",
-              std::min<std::size_t>(n, plumb::ui::DatasetLayer::kLodPointBudget), lod.median,
-              1000.0 / lod.median, lod.max);
+      // Moving: the budget adapts from the frame times, as LodController does.
+      plumb::ui::LodBudget budget(budget_params);
+      scene.setLodBudget(budget.points());
+      scene.setReducedDetail(true);
+      orbitFrame(view);  // switch frame (subset upload), not measured
+      for (int frame = 0; frame < 30; ++frame) {
+        if (budget.addFrame(scene.drawnPointCount(), orbitFrame(view))) {
+          scene.setLodBudget(budget.points());
+          orbitFrame(view);  // the frame after a change uploads the new subset
+        }
+      }
+      budget_points = scene.drawnPointCount();
+      lod = measure(view, 15, seconds);
+      scene.setReducedDetail(false);
+      back_to_full = orbitFrame(view);
+    }
+    {
+      auto actor = peerActor(data->scans[0].cloud, point_size);
+      view.renderer()->AddActor(actor);
+      peer = measure(view, 15, seconds);
+      view.renderer()->RemoveActor(actor);
+    }
+    std::printf("  %10zu | %8.0f %8.1f %8.1f ms | %8zu pts: %8.1f %8.1f ms | %7.0f ms | %8.0f %8.1f %8.1f ms\n",
+                n, full.first, full.median, full.max, budget_points, lod.median, lod.max,
+                back_to_full, peer.first, peer.median, peer.max);
+    std::fflush(stdout);
+  }
   return 0;
 }

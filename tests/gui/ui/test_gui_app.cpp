@@ -14,6 +14,7 @@
 
 #include <fstream>
 
+#include "gui/feature_fixtures.hpp"
 #include "gui/image_checks.hpp"
 #include "support/test_support.hpp"
 #include "ui/layers/dataset_layer.hpp"
@@ -167,21 +168,7 @@ class GuiAppTest : public QObject {
 
   void featureOverlayIsDrawnAndPicked() {
     AppContext& app = window_->context();
-    auto features = std::make_shared<FeatureSet>();
-    PlanarPolygon wall;  // a 10 m x 6 m vertical wall in the plane y = 0
-    wall.normal = Eigen::Vector3d::UnitY();
-    wall.origin = Eigen::Vector3d::Zero();
-    wall.u_axis = Eigen::Vector3d::UnitX();
-    wall.v_axis = Eigen::Vector3d::UnitZ();
-    wall.rings = {{{0, 0}, {10, 0}, {10, 6}, {0, 6}}};
-    wall.area = 60.0;
-    wall.inlier_count = 1234;
-    features->planes.push_back(wall);
-    Opening window;
-    window.corners = {Eigen::Vector3d(2, -0.01, 1), Eigen::Vector3d(4, -0.01, 1),
-                      Eigen::Vector3d(4, -0.01, 3), Eigen::Vector3d(2, -0.01, 3)};
-    window.facade = 0;
-    features->openings.push_back(window);
+    auto features = test::wallWithWindow(1234, false);
     app.scene.addFeatures("features", features);
     QCOMPARE(app.layers.topLevelItemCount(), 1);
     applyStandardView(app.view.renderer(), StandardView::Front);

@@ -1,0 +1,376 @@
+// GUI tests that drive the desktop application as a user does: File > Open (the file dialog
+// answered through the setFileChooser hook), drag and drop onto the main window, File > Recent
+// files, Save/Open project and Export screenshot through the menu, mouse clicks in the 3D view
+// at the projected position of known features (properties shown) and of known points (manual
+// point pairs), and a mouse drag that switches the view to level of detail and back.
+// Screenshots are saved under <build>/test-artifacts/gui_interaction/.
+#include <QApplication>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMimeData>
+#include <QSignalSpy>
+#include <QTest>
+#include <QUrl>
+
+#include <vtkRenderer.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <fstream>
+
+#include "gui/feature_fixtures.hpp"
+#include "gui/image_checks.hpp"
+#include "support/test_support.hpp"
+#include "ui/actions/file_dialogs.hpp"
+#include "ui/actions/recent_files.hpp"
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/layer_transform.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/main_window.hpp"
+#include "ui/panels/log_panel.hpp"
+#include "ui/panels/properties_panel.hpp"
+#include "ui/registration/manual_align_panel.hpp"
+#include "ui/registration/registration_panel.hpp"
+#include "ui/tasks/task_manager.hpp"
+#include "ui/view/lod_budget.hpp"
+#include "ui/view/screenshot.hpp"
+#include "ui/view/standard_view.hpp"
+#include "ui/view/surface_format.hpp"
+#include "ui/view/vtk_view_widget.hpp"
+
+using namespace plumb;
+using namespace plumb::ui;
+
+namespace {
+
+/// An ASCII PLY of `n` x `n` points on a 0.2 m grid in the plane z = 0, one RGB colour.
+std::filesystem::path writeGridPly(const std::filesystem::path& path, int n, int r, int g, int b) {
+  std::ofstream out(path);
+  out << "ply\nformat ascii 1.0\nelement vertex " << n * n
+      << "\nproperty float x\nproperty float y\nproperty float z\n"
+         "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) out << i * 0.2 << " " << j * 0.2 << " 0 " << r << " " << g << " " << b << "\n";
+  return path;
+}
+
+QString q(const std::filesystem::path& p) { return QString::fromStdString(p.string()); }
+
+QString plain(QString text) { return text.remove('&'); }
+
+/// The action `text` of the menu-bar menu `menu` (labels without their '&' shortcuts).
+QAction* menuAction(QMainWindow& window, const QString& menu, const QString& text) {
+  for (QAction* top : window.menuBar()->actions()) {
+    if (plain(top->text()) != menu || !top->menu()) continue;
+    for (QAction* a : top->menu()->actions())
+      if (plain(a->text()) == text) return a;
+  }
+  return nullptr;
+}
+
+/// Widget (logical) position of a world point as the view draws it now.
+QPoint projectToView(AppContext& app, const Eigen::Vector3d& world) {
+  vtkRenderer* r = app.view.renderer();
+  const Eigen::Vector3d p = world - app.scene.origin();
+  r->SetWorldPoint(p.x(), p.y(), p.z(), 1.0);
+  r->WorldToDisplay();
+  const double* d = r->GetDisplayPoint();
+  const double dpr = app.view.devicePixelRatioF();
+  const double device_h = std::floor(app.view.height() * dpr);
+  return QPoint(static_cast<int>(std::lround(d[0] / dpr)),
+                static_cast<int>(std::lround((device_h - 1.0 - d[1]) / dpr)));
+}
+
+/// A user's click (press + release, no drag) at widget position `p` of the view.
+void clickView(AppContext& app, QPoint p) {
+  QTest::mouseClick(&app.view, Qt::LeftButton, Qt::NoModifier, p);
+  QApplication::processEvents();
+}
+
+}  // namespace
+
+class GuiInteractionTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void init() {
+    window_ = std::make_unique<MainWindow>();
+    window_->resize(1100, 800);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    window_->context().recent.clear();
+    chosen_.clear();
+    requests_.clear();
+    // Every file dialog of the application is answered from chosen_ (and recorded).
+    setFileChooser([this](FileRequest request, const QString& caption, const QString&,
+                          const QString&) {
+      requests_.push_back({request, caption});
+      return chosen_;
+    });
+  }
+  void cleanup() {
+    setFileChooser({});
+    window_.reset();
+  }
+
+  void opensFilesThroughTheFileMenu() {
+    AppContext& app = window_->context();
+    const auto dir = test::scratchDir("gui_interaction_open");
+    chosen_ = {q(writeGridPly(dir / "red.ply", 51, 255, 0, 0)),
+               q(writeGridPly(dir / "blue.ply", 41, 0, 0, 255))};
+    QAction* open = menuAction(*window_, "File", "Open...");
+    QVERIFY(open);
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    open->trigger();
+    QVERIFY(idle.wait(30000));
+    QCOMPARE(requests_.size(), std::size_t{1});
+    QVERIFY(requests_[0].first == FileRequest::OpenFiles);
+    QCOMPARE(app.log.errorCount(), 0);
+    QCOMPARE(app.scene.layers().size(), std::size_t{2});
+    QCOMPARE(static_cast<DatasetLayer*>(app.scene.layers()[0].get())->dataset().pointCount(),
+             std::size_t{51 * 51});
+    // Both files are in File > Recent files, most recent first.
+    QCOMPARE(app.recent.files().size(), 2);
+    applyStandardView(app.view.renderer(), StandardView::Top);
+    const QImage image = grabView(app.view);
+    saveScreenshot(app.view, artefact("menu_open_top.png"));
+    QVERIFY(test::countColor(image, QColor(255, 0, 0)) > 500);
+    QVERIFY(test::countColor(image, QColor(0, 0, 255)) > 500);
+
+    // A canceled dialog (no file chosen) changes nothing.
+    chosen_.clear();
+    open->trigger();
+    QTest::qWait(50);
+    QCOMPARE(app.scene.layers().size(), std::size_t{2});
+  }
+
+  void opensDroppedFilesAndRecentFiles() {
+    AppContext& app = window_->context();
+    const auto dir = test::scratchDir("gui_interaction_drop");
+    const QString path = q(writeGridPly(dir / "dropped.ply", 31, 0, 255, 0));
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(path)});
+    const QPoint at(window_->width() / 2, window_->height() / 2);
+    QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &enter);
+    QVERIFY(enter.isAccepted());
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    QDropEvent drop(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &drop);
+    QVERIFY(drop.isAccepted());
+    QVERIFY(idle.wait(30000));
+    QCOMPARE(app.log.errorCount(), 0);
+    QCOMPARE(app.scene.layers().size(), std::size_t{1});
+    QCOMPARE(static_cast<DatasetLayer*>(app.scene.layers()[0].get())->dataset().pointCount(),
+             std::size_t{31 * 31});
+
+    // Something that is not a file (a web URL) is not accepted as a drop.
+    QMimeData web;
+    web.setUrls({QUrl("https://example.org/scan.e57")});
+    QDropEvent web_drop(QPointF(at), Qt::CopyAction, &web, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &web_drop);
+    QVERIFY(!web_drop.isAccepted());
+
+    // File > Recent files lists the dropped file; choosing it loads it again.
+    QAction* recent_menu = menuAction(*window_, "File", "Recent files");
+    QVERIFY(recent_menu && recent_menu->menu());
+    QAction* entry = nullptr;
+    for (QAction* a : recent_menu->menu()->actions())
+      if (a->toolTip() == path) entry = a;
+    QVERIFY(entry);
+    QCOMPARE(plain(entry->text()), QString("1 dropped.ply"));
+    entry->trigger();
+    QVERIFY(idle.wait(30000));
+    QCOMPARE(app.scene.layers().size(), std::size_t{2});
+  }
+
+  void savesAndOpensProjectsAndScreenshotsThroughTheMenu() {
+    AppContext& app = window_->context();
+    const auto dir = test::scratchDir("gui_interaction_project");
+    const QString data = q(writeGridPly(dir / "grid.ply", 21, 255, 0, 0));
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    window_->openFiles({data});
+    QVERIFY(idle.wait(30000));
+    QCOMPARE(app.scene.layers().size(), std::size_t{1});
+
+    // File > Export screenshot: a PNG of the view.
+    const QString png = q(dir / "shot.png");
+    QFile::remove(png);
+    chosen_ = {png};
+    menuAction(*window_, "File", "Export screenshot...")->trigger();
+    QCOMPARE(requests_.back().first, FileRequest::SaveFile);
+    const QImage shot(png);
+    QVERIFY(!shot.isNull());
+    QVERIFY(test::countNonBackground(shot) > 100);
+
+    // File > Save project, then File > Open project replaces the scene with it.
+    const QString project = q(dir / "scene.plumb.json");
+    QFile::remove(project);
+    chosen_ = {project};
+    menuAction(*window_, "File", "Save project...")->trigger();
+    QVERIFY(QFile::exists(project));
+    app.scene.clear();
+    QVERIFY(app.scene.layers().empty());
+    chosen_ = {project};
+    menuAction(*window_, "File", "Open project...")->trigger();
+    QCOMPARE(requests_.back().first, FileRequest::OpenFile);
+    if (app.scene.layers().empty()) QVERIFY(idle.wait(30000));
+    QCOMPARE(app.log.errorCount(), 0);
+    QCOMPARE(app.scene.layers().size(), std::size_t{1});
+    QCOMPARE(static_cast<DatasetLayer*>(app.scene.layers()[0].get())->dataset().pointCount(),
+             std::size_t{21 * 21});
+  }
+
+  void clickingAFeatureShowsItsProperties() {
+    AppContext& app = window_->context();
+    // A wall (plane 0, 4321 inliers) with a 2 m window (opening 0) and an eave (segment 0).
+    auto features = test::wallWithWindow(4321, true);
+    app.scene.addFeatures("features", features);
+    applyStandardView(app.view.renderer(), StandardView::Front);
+    grabView(app.view);  // renders: the projection below uses this frame's camera
+    saveScreenshot(app.view, artefact("features_front.png"));
+
+    auto shown = [&app] {
+      const auto rows = app.properties.rows();
+      return rows.empty() ? QString() : rows.at(0).second;
+    };
+    clickView(app, projectToView(app, {7.5, 0, 4}));  // on the wall, right of the window
+    QCOMPARE(shown(), QString("Plane 0"));
+    QVERIFY(app.properties.rows().size() > 4);
+    QCOMPARE(app.properties.rows().at(5).second, QString("4321"));  // inliers
+    clickView(app, projectToView(app, {3, -0.01, 1}));  // the window's bottom edge
+    QCOMPARE(shown(), QString("Opening 0"));
+    QCOMPARE(app.properties.rows().at(1).second, QString("2.000"));  // width
+    clickView(app, projectToView(app, {5, 0, 7}));  // the middle of the eave
+    QCOMPARE(shown(), QString("Segment 0"));
+    QCOMPARE(app.properties.rows().at(1).second, QString("10.000"));  // length
+    // A click on empty background leaves the properties as they are.
+    clickView(app, projectToView(app, {5, 0, 12}));
+    QCOMPARE(shown(), QString("Segment 0"));
+  }
+
+  void manualPairsArePickedWithTheMouse() {
+    AppContext& app = window_->context();
+    // Source: five marker points; target: the same markers moved by a known transform.
+    const std::vector<Eigen::Vector3d> markers{
+        {0, 0, 0}, {6, 0, 0}, {0, 4, 0}, {0, 0, 3}, {5, 3, 2}};
+    const RigidTransform truth = RigidTransform(
+        Eigen::AngleAxisd(0.35, Eigen::Vector3d(1, 2, 5).normalized()).toRotationMatrix(),
+        Eigen::Vector3d(2.0, -1.0, 0.5));
+    PointCloud source_cloud, target_cloud;
+    for (const auto& m : markers) {
+      source_cloud.positions.push_back(m.cast<float>());
+      target_cloud.positions.push_back(truth.apply(m).cast<float>());
+    }
+    auto& source = app.scene.addDataset(
+        std::make_shared<const Dataset>(Dataset::fromCloud(std::move(source_cloud))));
+    auto& target = app.scene.addDataset(
+        std::make_shared<const Dataset>(Dataset::fromCloud(std::move(target_cloud))));
+    for (DatasetLayer* d : {&source, &target}) {
+      PointStyle style = d->style();
+      style.point_size = 6;
+      d->setStyle(style);
+    }
+    app.registration->setSourceLayer(&source);
+    app.registration->setTargetLayer(&target);
+    applyStandardView(app.view.renderer(), StandardView::Iso);
+    grabView(app.view);
+    saveScreenshot(app.view, artefact("manual_markers.png"));
+
+    ManualAlignPanel& manual = *app.manual;
+    manual.setPicking(true);
+    for (const auto& m : markers) {
+      clickView(app, projectToView(app, m));                // the source marker...
+      clickView(app, projectToView(app, truth.apply(m)));  // ...then the same on the target
+    }
+    QCOMPARE(manual.pairCount(), static_cast<int>(markers.size()));
+    // Clicks in the view went to the pairs, not to feature picking.
+    QVERIFY(manual.align());
+    for (int i = 0; i < manual.pairCount(); ++i) QVERIFY(manual.residual(i) < 1e-4);
+    const RigidTransform found = layerTransform(source);
+    QVERIFY2(RigidTransform::rotationErrorDeg(found, truth) < 1e-3 &&
+                 RigidTransform::translationError(found, truth) < 1e-4,
+             qPrintable(QString("%1 deg %2 m")
+                            .arg(RigidTransform::rotationErrorDeg(found, truth))
+                            .arg(RigidTransform::translationError(found, truth))));
+    manual.setPicking(false);
+  }
+
+  void draggingTheCameraUsesLevelOfDetail() {
+    AppContext& app = window_->context();
+    PointCloud cloud;  // 600,000 points: more than the initial budget
+    for (int i = 0; i < 600000; ++i)
+      cloud.positions.emplace_back(static_cast<float>(i % 1000) * 0.02f,
+                                   static_cast<float>(i / 1000) * 0.02f, 0.0f);
+    app.scene.addDataset(std::make_shared<const Dataset>(Dataset::fromCloud(std::move(cloud))));
+    resetCamera(app.view.renderer());
+    grabView(app.view);
+    QCOMPARE(app.scene.drawnPointCount(), std::size_t{600000});
+
+    const QPoint centre(app.view.width() / 2, app.view.height() / 2);
+    QSignalSpy frames(&app.view, &VtkViewWidget::frameRendered);
+    QTest::mousePress(&app.view, Qt::LeftButton, Qt::NoModifier, centre);
+    for (int i = 1; i <= 6; ++i) {
+      QTest::mouseMove(&app.view, centre + QPoint(12 * i, 4 * i));
+      QTest::qWait(30);
+      app.view.renderNow();
+    }
+    QVERIFY(app.scene.reducedDetail());
+    const std::size_t moving = app.scene.drawnPointCount();
+    QVERIFY2(moving < 600000 && moving >= LodBudget().params().min_points,
+             qPrintable(QString::number(moving)));
+    QCOMPARE(moving, std::min<std::size_t>(600000, app.scene.lodBudget()));
+    QTest::mouseRelease(&app.view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(72, 24));
+    QVERIFY(frames.size() >= 6);
+    // Still again: full detail after the settle delay.
+    QTRY_VERIFY_WITH_TIMEOUT(!app.scene.reducedDetail(), 3000);
+    QCOMPARE(app.scene.drawnPointCount(), std::size_t{600000});
+  }
+
+  void lodBudgetConvergesToTheTargetFrameTime() {
+    // Frame time model t = 8 ms + 0.5 us per point: the target of 50 ms is met at 84,000.
+    LodBudget::Params p;
+    p.target_ms = 50.0;
+    LodBudget budget(p);
+    auto frame_ms = [](std::size_t n) { return 8.0 + 0.5e-3 * static_cast<double>(n); };
+    for (int i = 0; i < 40; ++i) budget.addFrame(budget.points(), frame_ms(budget.points()));
+    QVERIFY2(std::abs(frame_ms(budget.points()) - 50.0) < 50.0 * 0.15,
+             qPrintable(QString::number(budget.points())));
+    // A fast GPU (1 ns per point) grows the budget to its maximum; a hopeless one (fixed cost
+    // above the target) shrinks it to the minimum.
+    LodBudget fast(p), slow(p);
+    for (int i = 0; i < 40; ++i) {
+      fast.addFrame(fast.points(), 2.0 + 1e-6 * static_cast<double>(fast.points()));
+      slow.addFrame(slow.points(), 80.0 + 1e-6 * static_cast<double>(slow.points()));
+    }
+    QCOMPARE(fast.points(), p.max_points);
+    QCOMPARE(slow.points(), p.min_points);
+    // Jitter inside the dead band does not move the budget.
+    LodBudget steady(p);
+    const std::size_t before = steady.points();
+    QVERIFY(!steady.addFrame(before, 52.0));
+    QCOMPARE(steady.points(), before);
+  }
+
+ private:
+  QString artefact(const QString& name) {
+    static const auto dir = test::scratchDir("gui_interaction");
+    return QString::fromStdString((dir / name.toStdString()).string());
+  }
+  std::unique_ptr<MainWindow> window_;
+  QStringList chosen_;
+  std::vector<std::pair<FileRequest, QString>> requests_;
+};
+
+int main(int argc, char** argv) {
+  setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  QCoreApplication::setOrganizationName("PlumbTestsInteraction");
+  GuiInteractionTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_gui_interaction.moc"
