@@ -1,5 +1,6 @@
 #include "registration/auto/registration_pipeline.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 
@@ -61,6 +62,39 @@ FeatureSet extractFeatures(const RegistrationSide& side, const PipelineParams& p
   return f;
 }
 
+namespace {
+/// Beyond the papers: when both sides carry façade openings, planes and openings are two
+/// independent answers. Indoor/outdoor, the planes score can put the indoor floor on the street
+/// ground; indoor/indoor, openings usually find nothing (no opening seen from both sides of a
+/// wall). Agreement -> the openings result (it carries the measured wall thickness that the
+/// refinement needs); disagreement -> Ambiguous with both hypotheses (the pipeline may then
+/// decide on refined points), never a confident pick of one.
+GlobalRegistrationResult crossCheckWithOpenings(GlobalRegistrationResult planes,
+                                                GlobalRegistrationResult openings,
+                                                std::vector<std::string>* log) {
+  if (!openings.ok()) {
+    planes.message = "auto chose planes (openings found no confident answer): " + planes.message;
+    return planes;
+  }
+  const double rot = RigidTransform::rotationErrorDeg(planes.transform, openings.transform);
+  const double tr = RigidTransform::translationError(planes.transform, openings.transform);
+  if (rot <= 2.0 && tr <= 0.3) {
+    openings.message = "auto chose openings, confirmed by planes: " + openings.message;
+    return openings;
+  }
+  std::ostringstream msg;
+  msg << "planes and openings both succeeded but disagree by " << rot << " deg / " << tr
+      << " m: not choosing";
+  note(log, "auto: " + msg.str());
+  planes.status = RegistrationStatus::Ambiguous;
+  planes.runner_up = Hypothesis{openings.transform, openings.score, "openings result"};
+  planes.relative_gap = 0.0;
+  planes.message = "auto: " + msg.str() + " (planes: " + planes.message + "; openings: " +
+                   openings.message + ")";
+  return planes;
+}
+}  // namespace
+
 GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const FeatureSet& target,
                                              bool target_is_model, const PipelineParams& p,
                                              std::vector<std::string>* log, Progress* progress) {
@@ -102,12 +136,19 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
     if (!source.segments.empty() && !target.segments.empty())
       order.push_back(RegistrationMethod::Segments);
     note(log, std::string("auto: two scans -> planes") +
-                  (openings ? ", then openings (both sides carry openings)" : "") +
-                  " if planes fail");
+                  (openings ? ", cross-checked with openings (both sides carry openings), "
+                              "openings alone if planes fail"
+                            : "") +
+                  (order.size() > 1 && order.back() == RegistrationMethod::Segments
+                       ? ", segments as the last resort"
+                       : ""));
   }
   GlobalRegistrationResult first;
   for (std::size_t i = 0; i < order.size(); ++i) {
     auto r = run(order[i]);
+    if (r.ok() && order[i] == RegistrationMethod::Planes &&
+        std::find(order.begin(), order.end(), RegistrationMethod::Openings) != order.end())
+      return crossCheckWithOpenings(std::move(r), run(RegistrationMethod::Openings), log);
     if (r.ok()) {
       r.message = "auto chose " + r.method + ": " + r.message;
       return r;

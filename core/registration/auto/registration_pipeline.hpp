@@ -2,10 +2,11 @@
 // The end-to-end registration: data -> features -> global method -> refinement -> quality
 // report. `auto` picks the method from what the inputs carry and says which it used:
 //   - a model (BIM/mesh) on either side: segments (scan segments vs the model's sharp edges);
-//   - two scans: planes; when planes fail and both sides carry openings on façades: openings
-//     (indoor/outdoor: the planes score is ambiguous there, the indoor floor fitting the street
-//     ground about as well as the few interior surfaces the outdoor scan sees through windows);
-//     segments as the last resort.
+//   - two scans: planes; when both sides carry openings on façades, openings too: alone when
+//     planes fail (indoor/outdoor: the planes score is ambiguous there, the indoor floor fitting
+//     the street ground about as well as the few interior surfaces the outdoor scan sees through
+//     windows), as a cross-check when planes succeed (agreement -> the openings result, which
+//     carries the wall thickness; disagreement -> ambiguous); segments as the last resort.
 // After openings, the refinement starts below half the measured wall thickness so the indoor
 // wall faces cannot snap onto the façade faces.
 // Each attempt and the reason a method was skipped or failed is logged in the result.
