@@ -15,7 +15,9 @@
 // most 2x its time); peak <= 1.3x the attribute bytes.
 #include <fcntl.h>
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <pcl/io/ply_io.h>
@@ -58,49 +60,64 @@ std::string loadAverage() {
 
 void resetPeak() { std::ofstream("/proc/self/clear_refs") << "5"; }
 
-// ---- child modes (run in a fresh exec'ed process; print "seconds..." and peak bytes) ------
+double cpuSelf() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// CPU time (user + system) of the finished children (cat and its shell).
+double cpuChildren() {
+  rusage u{};
+  getrusage(RUSAGE_CHILDREN, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// ---- child modes (run in a fresh exec'ed process; print "first steady peak cpu": seconds of
+// the first run and of the best later run, peak bytes, CPU seconds of the best later run) ----
 
 int childRead(const char* file, int reads) {
-  std::vector<double> t;
+  std::vector<double> t, cpu;
   double peak = 0;
   for (int r = 0; r < reads; ++r) {
     resetPeak();
     const long before = statusKb("VmRSS:");
-    const double t0 = now();
+    const double t0 = now(), c0 = cpuSelf();
     plumb::PlyData d = plumb::readPly(file);
     t.push_back(now() - t0);
+    cpu.push_back(cpuSelf() - c0);
     peak = std::max(peak, static_cast<double>(statusKb("VmHWM:") - before) * 1024.0);
     if (d.vertices.colors.size() != d.vertices.size() || d.vertices.intensity.size() != d.vertices.size()) return 2;
   }
-  const double steady = reads > 1 ? *std::min_element(t.begin() + 1, t.end()) : t[0];
-  std::printf("%.9f %.9f %.0f\n", t[0], steady, peak);
+  const auto best = reads > 1 ? std::min_element(t.begin() + 1, t.end()) : t.begin();
+  std::printf("%.9f %.9f %.0f %.9f\n", t[0], *best, peak, cpu[static_cast<std::size_t>(best - t.begin())]);
   return 0;
 }
 
 // memset of `bytes` into fresh anonymous memory (huge: 2 MiB aligned + MADV_HUGEPAGE).
 int childMemset(std::size_t bytes, bool huge) {
   const std::size_t page = 2u << 20, size = bytes + page;
-  const double t0 = now();
+  const double t0 = now(), c0 = cpuSelf();
   char* p = static_cast<char*>(mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0));
   if (p == MAP_FAILED) return 2;
   char* a = huge ? reinterpret_cast<char*>((reinterpret_cast<std::uintptr_t>(p) + page - 1) & ~(page - 1)) : p;
   if (huge) madvise(a, bytes & ~(page - 1), MADV_HUGEPAGE);
   std::memset(a, 1, bytes);
-  const double t = now() - t0;
+  const double t = now() - t0, c = cpuSelf() - c0;
   munmap(p, size);
-  std::printf("%.9f %.9f 0\n", t, t);
+  std::printf("%.9f %.9f 0 %.9f\n", t, t, c);
   return 0;
 }
 
 // Runs this executable with `args` and parses "first steady peak" from its output.
 struct ChildResult {
-  double first = 0, steady = 0, peak = 0;
+  double first = 0, steady = 0, peak = 0, cpu = 0;
 };
 ChildResult runChild(const std::string& args) {
   ChildResult r;
   const std::string cmd = "/proc/" + std::to_string(getpid()) + "/exe " + args;
   FILE* f = popen(cmd.c_str(), "r");
-  if (!f || std::fscanf(f, "%lf %lf %lf", &r.first, &r.steady, &r.peak) != 3) std::fprintf(stderr, "child failed: %s\n", cmd.c_str());
+  if (!f || std::fscanf(f, "%lf %lf %lf %lf", &r.first, &r.steady, &r.peak, &r.cpu) != 4) std::fprintf(stderr, "child failed: %s\n", cmd.c_str());
   if (f) pclose(f);
   return r;
 }
@@ -160,23 +177,32 @@ int main(int argc, char** argv) {
   const std::string cat = "cat '" + file.string() + "' > /dev/null";
   if (std::system(cat.c_str()) != 0) std::fprintf(stderr, "cat failed\n");  // warm the page cache
 
-  double best_cat = 1e30, best_raw = 1e30, best_first = 1e30, best_steady = 1e30, peak = 0;
-  double best_ms4k = 1e30, best_msthp = 1e30;
+  struct Best {  // best wall time over the rounds, with the CPU time of that run
+    double wall = 1e30, cpu = 0;
+    void add(double w, double c) {
+      if (w < wall) wall = w, cpu = c;
+    }
+  } cat_t, raw_t, first_t, steady_t, ms4k_t, msthp_t;
+  double peak = 0;
   for (int r = 0; r < rounds; ++r) {
     t0 = now();
+    double c0 = cpuChildren();
     if (std::system(cat.c_str()) != 0) std::fprintf(stderr, "cat failed\n");
-    best_cat = std::min(best_cat, now() - t0);
+    cat_t.add(now() - t0, cpuChildren() - c0);
     t0 = now();
+    c0 = cpuSelf();
     rawRead();
-    best_raw = std::min(best_raw, now() - t0);
+    raw_t.add(now() - t0, cpuSelf() - c0);
     const ChildResult first = runChild("--child-read '" + file.string() + "' 1");
-    best_first = std::min(best_first, first.first);
+    first_t.add(first.first, first.cpu);
     peak = std::max(peak, first.peak);
     const ChildResult steady = runChild("--child-read '" + file.string() + "' 4");
-    best_steady = std::min(best_steady, steady.steady);
+    steady_t.add(steady.steady, steady.cpu);
     peak = std::max(peak, steady.peak);
-    best_ms4k = std::min(best_ms4k, runChild("--child-memset " + std::to_string(attr) + " 4k").first);
-    best_msthp = std::min(best_msthp, runChild("--child-memset " + std::to_string(attr) + " huge").first);
+    const ChildResult m4k = runChild("--child-memset " + std::to_string(attr) + " 4k");
+    ms4k_t.add(m4k.first, m4k.cpu);
+    const ChildResult mthp = runChild("--child-memset " + std::to_string(attr) + " huge");
+    msthp_t.add(mthp.first, mthp.cpu);
   }
 
   double t_pcl = 0;
@@ -191,21 +217,22 @@ int main(int argc, char** argv) {
   const double mb = bytes / 1e6;
   std::printf("file: %s, %zu points, %.1f MB, attributes in memory %.1f MB, best of %d rounds\n", file.c_str(), n, mb,
               attr_bytes / 1e6, rounds);
-  std::printf("%-44s %9s %10s %12s %9s\n", "", "time ms", "MB/s", "Mpoints/s", "vs cat");
-  auto row = [&](const char* name, double t) {
-    std::printf("%-44s %9.2f %10.0f %12.1f %8.0f%%\n", name, t * 1e3, mb / t, static_cast<double>(n) / t / 1e6,
-                100.0 * best_cat / t);
+  std::printf("%-46s %9s %9s %9s %9s\n", "", "wall ms", "MB/s", "vs cat", "CPU ms");
+  auto row = [&](const char* name, double t, double cpu) {
+    std::printf("%-46s %9.2f %9.0f %8.0f%% %9.2f\n", name, t * 1e3, mb / t, 100.0 * cat_t.wall / t, cpu * 1e3);
   };
-  row("cat FILE > /dev/null (subprocess)", best_cat);
-  row("raw read(), 1 MiB reused buffer", best_raw);
-  row("plumb readPly, first read in a fresh process", best_first);
-  row("plumb readPly, steady state (reads 2..4)", best_steady);
-  row("floor: memset attribute bytes, fresh 4K pages", best_ms4k);
-  row("floor: memset attribute bytes, fresh THP", best_msthp);
-  if (with_pcl) row("pcl::PLYReader XYZRGB (1 run)", t_pcl);
-  row("plumb writePly (1 run)", t_write);
+  row("cat FILE > /dev/null (subprocess)", cat_t.wall, cat_t.cpu);
+  row("raw read(), 1 MiB reused buffer", raw_t.wall, raw_t.cpu);
+  row("plumb readPly, first read in a fresh process", first_t.wall, first_t.cpu);
+  row("plumb readPly, steady state (reads 2..4)", steady_t.wall, steady_t.cpu);
+  row("floor: memset attribute bytes, fresh 4K pages", ms4k_t.wall, ms4k_t.cpu);
+  row("floor: memset attribute bytes, fresh THP", msthp_t.wall, msthp_t.cpu);
+  if (with_pcl) row("pcl::PLYReader XYZRGB (1 run)", t_pcl, 0);
+  row("plumb writePly (1 run)", t_write, 0);
   std::printf("plumb read speed = %.0f%% (first) / %.0f%% (steady) of cat's (target >= 50%%); peak = %.2fx attributes (target <= 1.30)\n",
-              100.0 * best_cat / best_first, 100.0 * best_cat / best_steady, peak / attr_bytes);
+              100.0 * cat_t.wall / first_t.wall, 100.0 * cat_t.wall / steady_t.wall, peak / attr_bytes);
+  std::printf("CPU time (not counting waits for a core): plumb steady %.1f ms vs cat %.1f ms; memset floor (THP) + raw read = %.1f ms\n",
+              steady_t.cpu * 1e3, cat_t.cpu * 1e3, (msthp_t.cpu + raw_t.cpu) * 1e3);
   std::printf("load average at end: %s\n", loadAverage().c_str());
   if (!keep) std::filesystem::remove(file);
   if (!keep && pos.size() <= 1) std::filesystem::remove(dir);
