@@ -1,9 +1,6 @@
 #include "io/ply/ply_reader.hpp"
 
 #include <sys/mman.h>
-#if defined(__SSE2__)
-#include <immintrin.h>
-#endif
 #include <unistd.h>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -206,8 +203,10 @@ struct Copy {
   // iteration overwrites. The last record is copied exactly, so nothing is written past this
   // block's part of the column (other threads write the neighbouring blocks).
   template <std::size_t B, std::size_t W>
-  static void copy(const char* p, std::size_t k, std::size_t stride, char* d) {
+  void copy(const char* p, std::size_t k, std::size_t stride, std::size_t base) const {
     static_assert(W >= B && W - B <= B);
+    char* d = dst + base * B;
+    p += src;
     if (k == 0) return;
     if (stride >= W - B) {
       for (std::size_t i = 0; i + 1 < k; ++i) {
@@ -220,42 +219,15 @@ struct Copy {
     }
     std::memcpy(d + (k - 1) * B, p + (k - 1) * stride, B);
   }
-  /// Copies the k records' values at p into out (k * bytes bytes).
-  void run(const char* p, std::size_t k, std::size_t stride, char* out) const {
+  void run(const char* p, std::size_t k, std::size_t stride, std::size_t base) const {
     switch (bytes) {
-      case 3: copy<3, 4>(p + src, k, stride, out); break;
-      case 4: copy<4, 4>(p + src, k, stride, out); break;
-      case 12: copy<12, 16>(p + src, k, stride, out); break;
+      case 3: copy<3, 4>(p, k, stride, base); break;
+      case 4: copy<4, 4>(p, k, stride, base); break;
+      case 12: copy<12, 16>(p, k, stride, base); break;
       default: break;
     }
   }
 };
-
-/// memcpy with non-temporal (streaming) stores for the 16-byte-aligned middle: the column
-/// lines are written without being read first (no read-for-ownership), which saves a third of
-/// the memory traffic of filling fresh columns far larger than the caches (measured: ~15% less
-/// CPU time per read). Callers end with streamFence() before the data is used elsewhere.
-void streamCopy(char* dst, const char* src, std::size_t bytes) {
-#if !defined(__SSE2__)
-  std::memcpy(dst, src, bytes);
-#else
-  std::size_t head = (16 - (reinterpret_cast<std::uintptr_t>(dst) & 15)) & 15;
-  head = std::min(head, bytes);
-  std::memcpy(dst, src, head);
-  dst += head;
-  src += head;
-  bytes -= head;
-  for (; bytes >= 16; dst += 16, src += 16, bytes -= 16)
-    _mm_stream_si128(reinterpret_cast<__m128i*>(dst), _mm_loadu_si128(reinterpret_cast<const __m128i*>(src)));
-  std::memcpy(dst, src, bytes);
-#endif
-}
-
-void streamFence() {
-#if defined(__SSE2__)
-  _mm_sfence();
-#endif
-}
 
 /// Splits slots into plain copies (no byte swap, same type, consecutive components, zero
 /// offset) and the rest (converted value by value).
@@ -633,9 +605,8 @@ class Reader {
 
   /// Binary vertex records of fixed size: the file is read in 1 MiB windows (never all at once,
   /// so peak memory is the columns plus one window per thread), windows are processed in
-  /// parallel, and each window is converted in chunks of 2048 records, one column at a time
-  /// (plain copies where the file layout equals the column layout: staged in L1, then
-  /// streamed into the column). pread into a reused buffer measured
+  /// parallel, and each window is converted in L2-sized chunks, one column at a time (plain
+  /// memcpy where the file layout equals the column layout). pread into a reused buffer measured
   /// faster than mapping each window with MAP_POPULATE.
   void readFixedRecords(std::uint64_t start, std::size_t n, std::size_t stride, bool sw,
                         const std::vector<Slot>& slots, const Columns& c) {
@@ -643,11 +614,7 @@ class Reader {
     std::vector<Slot> rest;
     planCopies(slots, c, sw, copies, rest);
     const std::size_t per_window = std::max<std::size_t>(1, kWindowBytes / stride);
-    struct Buffers {
-      std::vector<char> window;   ///< kWindowBytes of records
-      std::vector<char> staging;  ///< one chunk of one column (L1-sized)
-    };
-    tbb::enumerable_thread_specific<Buffers> buffers;  // per thread
+    tbb::enumerable_thread_specific<std::vector<char>> buffers;  // one 4 MiB buffer per thread
     const std::size_t windows = (n + per_window - 1) / per_window;
     std::atomic<std::size_t> done{0};
     const int fd = in_.fd();
@@ -656,21 +623,15 @@ class Reader {
       const std::size_t i0 = w * per_window;
       const std::size_t i1 = std::min(n, i0 + per_window);
       const std::uint64_t b = start + static_cast<std::uint64_t>(i0) * stride;
-      Buffers& buf = buffers.local();
-      const char* window = readWindow(fd, b, (i1 - i0) * stride, buf.window, path_);
-      constexpr std::size_t kChunk = 2048;  // records per column pass (<= 24 KiB staged: L1)
-      buf.staging.resize(kChunk * 12);
+      const char* window = readWindow(fd, b, (i1 - i0) * stride, buffers.local(), path_);
+      constexpr std::size_t kChunk = 8192;  // records per column pass (stays in L2)
       for (std::size_t i = i0; i < i1; i += kChunk) {
         const std::size_t m = std::min(kChunk, i1 - i);
         const char* p = window + (i - i0) * stride;
-        for (const Copy& cp : copies) {  // convert into L1, then stream into the column
-          cp.run(p, m, stride, buf.staging.data());
-          streamCopy(cp.dst + i * cp.bytes, buf.staging.data(), m * cp.bytes);
-        }
+        for (const Copy& cp : copies) cp.run(p, m, stride, i);
         if (sw) extractBlock<true>(p, m, stride, rest, c, i);
         else extractBlock<false>(p, m, stride, rest, c, i);
       }
-      streamFence();  // streaming stores globally visible before the window counts as done
       const std::size_t total = done += i1 - i0;
       if (progress_ && tbb::this_task_arena::current_thread_index() == 0)
         reportProgress(progress_, static_cast<double>(total) / static_cast<double>(n), "reading PLY");
