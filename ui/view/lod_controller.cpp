@@ -13,6 +13,7 @@ LodController::LodController(VtkViewWidget& view, Scene& scene, QObject* parent)
   connect(&view_, &VtkViewWidget::interactionStarted, this, [this] {
     settle_.stop();
     moving_ = true;
+    moving_frames_ = 0;
     view_.setFrameTiming(true);
     if (!scene_.reducedDetail()) {
       scene_.setReducedDetail(true);
@@ -22,6 +23,12 @@ LodController::LodController(VtkViewWidget& view, Scene& scene, QObject* parent)
   connect(&view_, &VtkViewWidget::interactionEnded, this, [this] {
     moving_ = false;
     view_.setFrameTiming(false);
+    // A click (no frame drawn while "moving") goes straight back to full detail: waiting for
+    // the settle delay would draw one reduced frame and then one full frame for nothing.
+    if (moving_frames_ == 0) {
+      scene_.setReducedDetail(false);
+      return;
+    }
     settle_.start();
   });
   connect(&view_, &VtkViewWidget::frameRendered, this, &LodController::onFrame);
@@ -33,6 +40,7 @@ LodController::LodController(VtkViewWidget& view, Scene& scene, QObject* parent)
 
 void LodController::onFrame(double ms) {
   if (!moving_ || !scene_.reducedDetail()) return;
+  ++moving_frames_;
   if (skip_frames_ > 0) {
     --skip_frames_;
     return;

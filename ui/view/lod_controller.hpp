@@ -27,6 +27,7 @@ class LodController : public QObject {
   QTimer settle_;
   LodBudget budget_;
   bool moving_ = false;
+  int moving_frames_ = 0;  ///< frames drawn since the interaction started
   /// Frames not to measure: the first after a switch or a budget change uploads the subset.
   int skip_frames_ = 0;
 };

@@ -239,6 +239,7 @@ class GuiInteractionTest : public QObject {
     };
     clickView(app, projectToView(app, {7.5, 0, 4}));  // on the wall, right of the window
     QCOMPARE(shown(), QString("Plane 0"));
+    QVERIFY(!app.scene.reducedDetail());  // a click is no camera move: full detail at once
     QVERIFY(app.properties.rows().size() > 4);
     QCOMPARE(app.properties.rows().at(5).second, QString("4321"));  // inliers
     clickView(app, projectToView(app, {3, -0.01, 1}));  // the window's bottom edge
