@@ -59,7 +59,9 @@ struct PlaneExtractionParams {
   /// Sensor topology: grid half-window for the 2nd/3rd samples, cells, [1, 100].
   int grid_window = 4;
   bool keep_inlier_indices = true;  ///< fill PlanarPolygon::inliers
-  std::uint64_t seed = 42;
+  /// MSAC sampling seed. Default 1 = PipelineParams::seed, so `plumb-cli features` and
+  /// `plumb-cli register` (which sets it from --seed) detect the same planes by default.
+  std::uint64_t seed = 1;
   static const ParamSchema<PlaneExtractionParams>& schema();
 };
 
