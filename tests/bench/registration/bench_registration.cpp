@@ -5,7 +5,7 @@
 // the peak RSS.
 //
 //   bench_registration [--poses N] [--scenarios a,b,...] [--no-peers] [--no-big] [--big-only]
-//                      [--smoke]
+//                      [--smoke] [--step DEG] [--fpfh-voxel M] [--fpfh-radius M] [--sac-iterations N]
 // Plumb runs end to end per case (source features from the moved cloud, target features
 // extracted once, like the acceptance test); each peer prepares its target once too (thinning,
 // normals, FPFH) and is timed on the source side + registration. Peers start from the initial
@@ -108,7 +108,8 @@ void printTable(const std::string& scenario, const std::string& info, const std:
   std::fflush(stdout);
 }
 
-void runScenario(const std::string& name, int poses, bool peers, const bench::PeerParams& pp) {
+/// Returns Plumb's row.
+Row runScenario(const std::string& name, int poses, bool peers, const bench::PeerParams& pp) {
   const PipelineParams params = acceptanceParams();
   const Scenario s = makeScenario(name, params);
   const PointCloud& peer_target = s.isBim() ? s.target_samples : s.target;
@@ -152,6 +153,7 @@ void runScenario(const std::string& name, int poses, bool peers, const bench::Pe
     std::fflush(stdout);
   }
   printTable(name, info.str(), rows);
+  return rows[0];
 }
 
 /// Time per progress stage: the time since the previous report goes to the stage named by the
@@ -256,7 +258,7 @@ void runBigPair(double step_deg, bool sensor_origins) {
 
 int main(int argc, char** argv) {
   int poses = 5;
-  bool peers = true, big = true, tables = true;
+  bool peers = true, big = true, tables = true, smoke = false;
   double step = 0.42;  // deg: ~300k returns per station in the rooms of "house"
   std::vector<std::string> names = scenarioNames();
   bench::PeerParams pp;
@@ -280,10 +282,12 @@ int main(int argc, char** argv) {
       pp.feature_radius = std::stod(next());
       pp.normal_radius = 0.5 * pp.feature_radius;
     } else if (a == "--sac-iterations") pp.ransac_iterations = std::stoi(next());
-    else if (a == "--smoke") {  // CTest: one pose of indoor-indoor, all peers, no big pair
+    else if (a == "--smoke") {  // CTest: one pose of indoor-indoor, all peers, no big pair;
+                                // exits 1 when Plumb misses it
       poses = 1;
       names = {"indoor-indoor"};
       big = false;
+      smoke = true;
     } else {
       std::fprintf(stderr,
                    "usage: bench_registration [--poses N] [--scenarios a,b] [--no-peers] "
@@ -298,7 +302,16 @@ int main(int argc, char** argv) {
     runBigPair(step, false);
     runBigPair(step, true);
   }
+  int plumb_failures = 0;
   if (tables)
-    for (const auto& n : names) runScenario(n, poses, peers, pp);
+    for (const auto& n : names) {
+      const Row plumb = runScenario(n, poses, peers, pp);
+      plumb_failures += plumb.cases - plumb.correct;
+    }
+  // The smoke run (CTest) fails when Plumb misses its indoor-indoor case.
+  if (smoke && plumb_failures > 0) {
+    std::fprintf(stderr, "bench_registration --smoke: Plumb failed %d case(s)\n", plumb_failures);
+    return 1;
+  }
   return 0;
 }
