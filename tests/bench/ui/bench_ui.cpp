@@ -11,6 +11,8 @@
 //                  [--target-ms 50] [--point-size 2] [--seconds 12]
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -129,11 +131,13 @@ std::vector<std::size_t> parseSizes(const char* s) {
 }
 
 std::string glRenderer(plumb::ui::VtkViewWidget& view) {
-  std::stringstream caps(view.renderWindow()->ReportCapabilities());
-  std::string line;
-  while (std::getline(caps, line))
-    if (line.find("OpenGL renderer string") != std::string::npos) return line;
-  return "OpenGL renderer: unknown";
+  view.makeCurrent();
+  const auto* r = view.context()->functions()->glGetString(GL_RENDERER);
+  const auto* v = view.context()->functions()->glGetString(GL_VERSION);
+  std::string out = std::string("OpenGL renderer: ") + (r ? reinterpret_cast<const char*>(r) : "?") +
+                    ", " + (v ? reinterpret_cast<const char*>(v) : "?");
+  view.doneCurrent();
+  return out;
 }
 
 }  // namespace
