@@ -47,7 +47,7 @@ for type in application/x-e57 application/vnd.las application/x-ply application/
   grep -q "^MimeType=.*$type;" "$desktop" || fail "desktop entry lacks MIME type $type"
   grep -q "type=\"$type\"" "$mime" || fail "MIME XML lacks $type"
 done
-if command -v desktop-file-validate >/dev/null; then desktop-file-validate "$desktop"; fi
+desktop-file-validate "$desktop" || fail "desktop entry does not validate"
 
 version=$(root/usr/bin/plumb-cli --version) || fail "installed plumb-cli --version failed"
 echo "installed plumb-cli --version: $version"
