@@ -109,7 +109,15 @@ struct RingMask {
 };
 
 /// Moves each side of r to the nearest façade inlier beyond it (the wall edge).
-Rect snapToWall(const Rect& r, const std::vector<Eigen::Vector2d>& wall, double snap) {
+/// A side with no inlier within `snap` moves to the first inlier beyond it at any distance
+/// (up to `max_w` / `max_h` for the whole opening): evidence stops short where rays through
+/// the opening return nothing (an indoor scanner sees the sky through a door's upper part:
+/// rays above the horizon give no point, so no evidence, and the top of the evidence sits at
+/// about the scanner's height). The wall samples, not the rays, then give that edge: the band
+/// between the evidence and the first wall sample holds no wall point across the opening's
+/// middle span (a notch or hole of the wall polygon, the ray-confirmed opening itself).
+Rect snapToWall(const Rect& r, const std::vector<Eigen::Vector2d>& wall, double snap,
+                double max_w, double max_h) {
   if (snap <= 0 || wall.empty()) return r;
   Rect out = r;
   const double mu = 0.2 * (r.u1 - r.u0), mv = 0.2 * (r.v1 - r.v0);
@@ -117,12 +125,12 @@ Rect snapToWall(const Rect& r, const std::vector<Eigen::Vector2d>& wall, double 
   double left = -1e300, right = 1e300, bottom = -1e300, top = 1e300;
   for (const auto& p : wall) {
     if (p.y() > r.v0 + mv && p.y() < r.v1 - mv) {
-      if (p.x() <= cu && p.x() >= r.u0 - snap) left = std::max(left, p.x());
-      if (p.x() >= cu && p.x() <= r.u1 + snap) right = std::min(right, p.x());
+      if (p.x() <= cu && p.x() >= r.u1 - max_w) left = std::max(left, p.x());
+      if (p.x() >= cu && p.x() <= r.u0 + max_w) right = std::min(right, p.x());
     }
     if (p.x() > r.u0 + mu && p.x() < r.u1 - mu) {
-      if (p.y() <= cv && p.y() >= r.v0 - snap) bottom = std::max(bottom, p.y());
-      if (p.y() >= cv && p.y() <= r.v1 + snap) top = std::min(top, p.y());
+      if (p.y() <= cv && p.y() >= r.v1 - max_h) bottom = std::max(bottom, p.y());
+      if (p.y() >= cv && p.y() <= r.v0 + max_h) top = std::min(top, p.y());
     }
   }
   // Only move outwards (evidence lies inside the opening; wall points inside it are noise).
@@ -132,6 +140,8 @@ Rect snapToWall(const Rect& r, const std::vector<Eigen::Vector2d>& wall, double 
   auto side = [](double evidence, double wall) {
     return std::abs(wall - evidence) < 0.15 ? 0.5 * (evidence + wall) : wall;
   };
+  // Within `snap`: the usual wall snap; beyond it, only when the band in between is free of
+  // wall samples (true by construction: the nearest sample across the middle span).
   if (bottom == -1e300) {
     // No wall below the opening: a door. It reaches down to where the wall beside it ends
     // (rays through a door's lower part hit the floor closer than d_min and give no evidence).
@@ -327,7 +337,7 @@ OpeningDetectionResult detectOpenings(const PointCloud& cloud,
         r.u0 = std::min(r.u0, p.x()); r.v0 = std::min(r.v0, p.y());
         r.u1 = std::max(r.u1, p.x()); r.v1 = std::max(r.v1, p.y());
       }
-      r = snapToReveals(snapToWall(r, wall, params.snap_distance), reveal, 0.1);
+      r = snapToReveals(snapToWall(r, wall, params.snap_distance, params.max_width, params.max_height), reveal, 0.1);
       if (!sizeOk(r)) continue;
       rects.push_back(r);
       result.openings.push_back(makeOpening(f, r, view[k], result.facades[k], comp.size()));
