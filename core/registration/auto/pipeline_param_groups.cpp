@@ -32,8 +32,11 @@ nlohmann::json pipelineParamsToJson(const PipelineParams& p) {
   j["refine"] = p.refine;
   j["seed"] = p.seed;
   j["model-sample-spacing"] = p.model_sample_spacing;
-  forEachParamGroup(p, [&j](const char* key, const char*, const auto& schema, const auto& group) {
+  forEachParamGroup(p, [&j, &p](const char* key, const char*, const auto& schema,
+                                 const auto& group) {
     j[key] = paramsToJson(schema, group);
+    // The pipeline runs every step with the top-level seed: show that one, not the group's.
+    if (j[key].contains("seed")) j[key]["seed"] = p.seed;
   });
   return j;
 }
