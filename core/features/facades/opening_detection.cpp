@@ -159,15 +159,23 @@ Rect snapToWall(const Rect& r, const std::vector<Eigen::Vector2d>& wall, double 
 
 /// Points just behind a façade (depth in (3 cm, 60 cm) on the far side from the viewer):
 /// the reveals (jambs, sill, lintel) of its openings. (u, v) in the façade frame.
+/// A reveal is seen through its opening, from the viewer's side: with sensor origins, points
+/// measured from the far side are left out. They are the wall's other face (at depth = the
+/// wall thickness, often < 60 cm), e.g. an exterior wall's inner face seen by an MMS through
+/// the windows of the opposite façade, or an interior wall's face seen from the next room;
+/// taken as reveals, they moved a door's top onto the inner face's visible band (+4.5 cm).
 std::vector<Eigen::Vector2d> revealPoints(const PointCloud& cloud, const PlanarPolygon& f,
                                           const Eigen::Vector3d& view) {
   const double sign = view.dot(f.normal) > 0 ? -1.0 : 1.0;  // depth measured away from viewer
+  const bool origins = cloud.hasSensorOrigins();
   std::vector<Eigen::Vector2d> out;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (!cloud.positions[i].allFinite()) continue;
     const Eigen::Vector3d p = cloud.world(i);
     const double depth = sign * f.signedDistance(p);
-    if (depth > 0.03 && depth < 0.6) out.push_back(f.to2d(p));
+    if (depth <= 0.03 || depth >= 0.6) continue;
+    if (origins && sign * f.signedDistance(cloud.offset + cloud.sensor_origins[i].cast<double>()) >= 0) continue;
+    out.push_back(f.to2d(p));
   }
   return out;
 }

@@ -10,7 +10,9 @@
 //  3. Openings: connected components of the evidence (graph edge when two hits are closer
 //     than `link_distance`) -> minimum-area rectangle aligned with the vertical -> 4 corners.
 //     Each side is then moved to the nearest façade inliers (the wall edge of the opening),
-//     and onto the reveal surface (jamb, sill, lintel) behind it when the scan saw one.
+//     at any distance when the evidence stops short (rays through the opening that return
+//     nothing, e.g. indoor rays to the sky through a door's upper part), and onto the reveal
+//     surface (jamb, sill, lintel) behind it when the scan saw one from the viewer's side.
 //  4. Indoor side / no sensor origins: holes of wall polygons become openings too.
 // Corners follow plumb::Opening, seen from the side the scanner saw the façade from (the
 // sensor side; without sensor origins, the side where most of the cloud lies). That is the
