@@ -30,7 +30,7 @@ const ParamSchema<OpeningDetectionParams>& OpeningDetectionParams::schema() {
           .real(&P::max_width, "max-width", "Maximum width", "m", 0, 1000, "")
           .real(&P::max_height, "max-height", "Maximum height", "m", 0, 1000, "")
           .real(&P::snap_distance, "snap-distance", "Snap distance", "m", 0, 2,
-                "sides move to façade inliers within this distance", true);
+                "sides move to the wall edge; closer than this: middle of evidence and wall; 0: off", true);
   return s;
 }
 
@@ -135,13 +135,35 @@ Rect snapToWall(const Rect& r, const std::vector<Eigen::Vector2d>& wall, double 
   }
   // Only move outwards (evidence lies inside the opening; wall points inside it are noise).
   // The edge lies between the last evidence and the first wall sample: take the middle when
-  // they are close (one sampling step each side), the wall sample when the evidence stops
-  // short (rays clipped by a deep reveal).
-  auto side = [](double evidence, double wall) {
-    return std::abs(wall - evidence) < 0.15 ? 0.5 * (evidence + wall) : wall;
+  // they are close (within `snap` and one sampling step each side). When the evidence stops
+  // short, the edge lies within one sampling step before the first wall sample (the sample
+  // before it on the same scan line fell into the opening): take half a step before it, the
+  // step measured on the wall rows (or columns) beyond it (MMS rows are ~6 cm apart; the wall
+  // sample alone put a door top 2.8 cm high).
+  auto step = [&](bool vertical, double edge, double dir) {
+    std::vector<double> d;
+    for (const auto& p : wall) {
+      const bool in_band = vertical ? (p.x() > r.u0 + mu && p.x() < r.u1 - mu)
+                                    : (p.y() > r.v0 + mv && p.y() < r.v1 - mv);
+      const double x = dir * ((vertical ? p.y() : p.x()) - edge);
+      if (in_band && x >= 0 && x < 0.3) d.push_back(x);
+    }
+    std::sort(d.begin(), d.end());
+    std::vector<double> rows, gaps;  // row starts, then the gaps between them
+    for (double x : d)
+      if (rows.empty() || x - rows.back() > 0.015) rows.push_back(x);
+    for (std::size_t q = 1; q < rows.size(); ++q) gaps.push_back(rows[q] - rows[q - 1]);
+    if (gaps.size() < 2) return 0.0;
+    std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
+    const double g = gaps[gaps.size() / 2];
+    return g < 0.15 ? g : 0.0;
   };
-  // Within `snap`: the usual wall snap; beyond it, only when the band in between is free of
-  // wall samples (true by construction: the nearest sample across the middle span).
+  auto side = [&](double evidence, double wall_edge, bool vertical, double dir) {
+    const double gap = std::abs(wall_edge - evidence);
+    if (gap < std::min(0.15, snap)) return 0.5 * (evidence + wall_edge);
+    const double e = wall_edge - dir * 0.5 * step(vertical, wall_edge, dir);
+    return dir > 0 ? std::max(evidence, e) : std::min(evidence, e);
+  };
   if (bottom == -1e300) {
     // No wall below the opening: a door. It reaches down to where the wall beside it ends
     // (rays through a door's lower part hit the floor closer than d_min and give no evidence).
@@ -150,10 +172,10 @@ Rect snapToWall(const Rect& r, const std::vector<Eigen::Vector2d>& wall, double 
       if ((p.x() < r.u0 && p.x() > r.u0 - 0.3) || (p.x() > r.u1 && p.x() < r.u1 + 0.3)) vmin = std::min(vmin, p.y());
     if (vmin < r.v0 - 0.05) out.v0 = vmin;
   }
-  if (left > -1e300 && left < r.u0) out.u0 = side(r.u0, left);
-  if (right < 1e300 && right > r.u1) out.u1 = side(r.u1, right);
-  if (bottom > -1e300 && bottom < r.v0) out.v0 = side(r.v0, bottom);
-  if (top < 1e300 && top > r.v1) out.v1 = side(r.v1, top);
+  if (left > -1e300 && left < r.u0) out.u0 = side(r.u0, left, false, -1);
+  if (right < 1e300 && right > r.u1) out.u1 = side(r.u1, right, false, +1);
+  if (bottom > -1e300 && bottom < r.v0) out.v0 = side(r.v0, bottom, true, -1);
+  if (top < 1e300 && top > r.v1) out.v1 = side(r.v1, top, true, +1);
   return out;
 }
 

@@ -45,7 +45,9 @@ struct OpeningDetectionParams {
   double min_height = 0.3;
   double max_width = 10.0;
   double max_height = 6.0;
-  /// Sides move to the nearest façade inliers found within this distance, metres, [0, 2].
+  /// Sides move to the nearest façade inliers beyond them (the wall edge): within this
+  /// distance (and 15 cm) to the middle between evidence and wall, farther (evidence stopped
+  /// short) to half a sampling step before the wall. 0 disables snapping. Metres, [0, 2].
   double snap_distance = 0.4;
   static const ParamSchema<OpeningDetectionParams>& schema();
 };
