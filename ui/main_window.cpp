@@ -3,6 +3,7 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QDragEnterEvent>
+#include <QLabel>
 #include <QMenuBar>
 #include <QMimeData>
 #include <QScrollArea>
@@ -10,6 +11,7 @@
 #include <QUndoStack>
 
 #include "ui/actions/export_cloud_reaction.hpp"
+#include "ui/actions/full_detail_reaction.hpp"
 #include "ui/actions/open_file_reaction.hpp"
 #include "ui/actions/project_reactions.hpp"
 #include "ui/actions/registration_step_reaction.hpp"
@@ -56,7 +58,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(scene, &Scene::layerAboutToBeRemoved, undo, [undo](Layer* layer) {
     if (layer->parent() == nullptr) undo->clear();
   });
-  new LodController(*view, *scene, this);
+  lod_ = new LodController(*view, *scene, this);
 
   connect(scene, &Scene::renderNeeded, view, &VtkViewWidget::requestRender);
   connect(tree, &LayerTreePanel::currentLayerChanged, properties, &PropertiesPanel::showLayer);
@@ -66,6 +68,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
       context_->properties.showRows(hit->layer->name(), hit->rows);
   });
   statusBar()->addPermanentWidget(new TaskProgressWidget(*tasks, this));
+  // "Showing N of M points" while the view draws a subset (level of detail).
+  auto* detail = new QLabel(this);
+  detail->setObjectName("detailLabel");
+  statusBar()->addPermanentWidget(detail);
+  connect(lod_, &LodController::detailTextChanged, detail, &QLabel::setText);
   connect(tasks, &TaskManager::taskFinished, this,
           [this](const QString& title, bool ok, const QString& message) {
             statusBar()->showMessage(ok ? tr("%1: done").arg(title)
@@ -147,6 +154,7 @@ void MainWindow::createMenus() {
   view->addSeparator();
   new ZoomToLayerReaction(view->addAction(tr("&Zoom to layer")), app);
   new ResetCameraReaction(view->addAction(tr("&Reset camera")), app);
+  new FullDetailReaction(view->addAction(tr("Full detail when still (may be slow)")), app, *lod_);
   view->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
 }

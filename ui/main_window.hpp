@@ -9,6 +9,8 @@
 
 namespace plumb::ui {
 
+class LodController;
+
 class MainWindow : public QMainWindow {
   Q_OBJECT
  public:
@@ -28,6 +30,7 @@ class MainWindow : public QMainWindow {
   void createDocks();
   void createMenus();
   std::unique_ptr<AppContext> context_;
+  LodController* lod_ = nullptr;  ///< level of detail of the view (child QObject)
 };
 
 }  // namespace plumb::ui

@@ -20,16 +20,22 @@ class LodBudget {
     std::size_t max_points = 5'000'000;  ///< never more (bounds the subset's memory)
     std::size_t initial_points = 300'000;  ///< before any frame has been measured
     double dead_band = 0.1;   ///< |T/t - 1| below which the budget stays as it is
+    double max_growth = 4.0;  ///< largest factor T/t taken from one frame (>= 1)
+    /// Step to the geometric mean of the current budget and the proposal (smooth, for the
+    /// many moving frames). Off, the proposal is taken as it is: n T / (a + b n) < T / b, so
+    /// even an undamped step overshoots the target by at most the fixed cost a (still frames,
+    /// where one step should reach the right size).
+    bool damped = true;
   };
 
   LodBudget() : LodBudget(Params{}) {}
   explicit LodBudget(const Params& params);
 
-  /// Points to draw per moving frame (the whole scene).
+  /// Points to draw per frame (the whole scene).
   std::size_t points() const { return points_; }
   const Params& params() const { return params_; }
 
-  /// Reports a moving frame that drew `points_drawn` points in `frame_ms` milliseconds.
+  /// Reports a frame that drew `points_drawn` points in `frame_ms` milliseconds.
   /// Returns true when the budget changed (the caller rebuilds its subsets).
   bool addFrame(std::size_t points_drawn, double frame_ms);
 

@@ -3,8 +3,15 @@
 //   plumb LOD    : the level-of-detail subset while the camera moves, its size chosen by the
 //                  adaptive LodBudget from measured frame times (the budget it settles on is
 //                  printed), plus the frame that switches back to full detail
+//   plumb still  : the still frames of LodController (the camera stops after a few moving
+//                  frames, three times): each still frame's time and the points it drew. The
+//                  still budget (target LodController::kStillTargetMs) is learned from them;
+//                  larger subsets follow in later frames while a frame was well under target
+//   forced full  : "Full detail when still" on: the still frame draws every point
 //   peer VTK     : plain vtkPolyDataMapper with default settings on the same points and colours
 //                  (vtkPoints + one vertex cell per point + RGB uchar point scalars)
+//   peer gauss   : vtkPointGaussianMapper with scale factor 0 (plain points drawn without a
+//                  vertex cell index array), same points and colours
 // The camera orbits between frames as during interaction; every frame ends with glFinish.
 //
 // usage: xvfb-run -a -s "-screen 0 1280x1024x24" bench_ui [--sizes 1000000,5000000,20000000]
@@ -19,6 +26,7 @@
 #include <vtkCellArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkPointData.h>
+#include <vtkPointGaussianMapper.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -37,6 +45,7 @@
 #include "ui/layers/point_style.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/view/lod_budget.hpp"
+#include "ui/view/lod_controller.hpp"
 #include "ui/view/standard_view.hpp"
 #include "ui/view/surface_format.hpp"
 #include "ui/view/vtk_view_widget.hpp"
@@ -94,8 +103,10 @@ Timing measure(plumb::ui::VtkViewWidget& view, int max_frames, double budget_s) 
   return t;
 }
 
-/// The peer: a plain vtkPolyDataMapper with default settings on a copy of the same data.
-vtkSmartPointer<vtkActor> peerActor(const plumb::PointCloud& cloud, double point_size) {
+/// The peers: a plain vtkPolyDataMapper with default settings on a copy of the same data, or
+/// a vtkPointGaussianMapper drawing plain points (scale factor 0) on the same copy.
+vtkSmartPointer<vtkActor> peerActor(const plumb::PointCloud& cloud, double point_size,
+                                    bool gaussian) {
   const auto n = static_cast<vtkIdType>(cloud.size());
   vtkNew<vtkPoints> points;  // float by default
   points->SetNumberOfPoints(n);
@@ -114,12 +125,49 @@ vtkSmartPointer<vtkActor> peerActor(const plumb::PointCloud& cloud, double point
   poly->SetPoints(points);
   poly->SetVerts(verts);
   poly->GetPointData()->SetScalars(colors);
-  vtkNew<vtkPolyDataMapper> mapper;
+  vtkSmartPointer<vtkPolyDataMapper> mapper;
+  if (gaussian) {
+    auto g = vtkSmartPointer<vtkPointGaussianMapper>::New();
+    g->SetScaleFactor(0.0);
+    g->EmissiveOff();
+    mapper = g;
+  } else {
+    mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  }
   mapper->SetInputData(poly);
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   actor->GetProperty()->SetPointSize(static_cast<float>(point_size));
   return actor;
+}
+
+/// Still frames after a camera stop: every frame the view paints (LodController's still
+/// frame and its refinements) until no refinement is pending.
+struct StillRun {
+  std::vector<double> ms;
+  std::size_t drawn = 0;
+};
+
+StillRun stopCamera(plumb::ui::VtkViewWidget& view, plumb::ui::LodController& lod,
+                    const plumb::ui::Scene& scene) {
+  StillRun run;
+  auto c = QObject::connect(&view, &plumb::ui::VtkViewWidget::frameRendered,
+                            [&run](double ms) { run.ms.push_back(ms); });
+  lod.stopMoving();
+  lod.showStill();
+  QElapsedTimer wall;
+  wall.start();
+  while (wall.elapsed() < 600000 && (run.ms.empty() || lod.refinementPending()))
+    QApplication::processEvents(QEventLoop::AllEvents, 20);
+  QObject::disconnect(c);
+  run.drawn = scene.drawnPointCount();
+  return run;
+}
+
+std::string listMs(const std::vector<double>& ms) {
+  std::string out;
+  for (double m : ms) out += (out.empty() ? "" : "+") + std::to_string(static_cast<long>(m + 0.5));
+  return out.empty() ? "-" : out;
 }
 
 std::vector<std::size_t> parseSizes(const char* s) {
@@ -161,8 +209,10 @@ int main(int argc, char** argv) {
   QApplication::processEvents();  // benchmark harness only: let the window map once
   view.renderNow();
 
-  std::printf("bench_ui: %dx%d view, point size %.0f px, target %.0f ms per moving frame\n",
-              view.width(), view.height(), point_size, budget_params.target_ms);
+  std::printf("bench_ui: %dx%d view, point size %.0f px, target %.0f ms per moving frame, "
+              "%.0f ms per still frame\n",
+              view.width(), view.height(), point_size, budget_params.target_ms,
+              plumb::ui::LodController::kStillTargetMs);
   std::printf("  %s\n", glRenderer(view).c_str());
   {
     plumb::ui::Scene empty(view.renderer());
@@ -173,7 +223,9 @@ int main(int argc, char** argv) {
               "plumb LOD budget: median/max", "to full", "peer VTK first/median/max");
   for (const std::size_t n : sizes) {
     auto data = std::make_shared<const plumb::Dataset>(syntheticBuilding(n));
-    Timing full, lod, peer;
+    Timing full, lod, peer, gauss;
+    std::vector<StillRun> stills;
+    StillRun forced;
     double back_to_full = 0;
     std::size_t budget_points = 0;
     {
@@ -200,16 +252,39 @@ int main(int argc, char** argv) {
       lod = measure(view, 15, seconds);
       scene.setReducedDetail(false);
       back_to_full = orbitFrame(view);
+
+      // The application's controller: move (a few frames), stop, still frames; three times,
+      // then once with "Full detail when still".
+      plumb::ui::LodController controller(view, scene);
+      for (int stop = 0; stop < 4; ++stop) {
+        if (stop == 3) controller.setFullDetailWhenStill(true);
+        controller.startMoving();
+        for (int frame = 0; frame < 6; ++frame) orbitFrame(view);
+        (stop == 3 ? forced : stills.emplace_back()) = stopCamera(view, controller, scene);
+      }
     }
     {
-      auto actor = peerActor(data->scans[0].cloud, point_size);
+      auto actor = peerActor(data->scans[0].cloud, point_size, false);
       view.renderer()->AddActor(actor);
       peer = measure(view, 15, seconds);
+      view.renderer()->RemoveActor(actor);
+    }
+    {
+      auto actor = peerActor(data->scans[0].cloud, point_size, true);
+      view.renderer()->AddActor(actor);
+      gauss = measure(view, 15, seconds);
       view.renderer()->RemoveActor(actor);
     }
     std::printf("  %10zu | %8.0f %8.1f %8.1f ms | %8zu pts: %8.1f %8.1f ms | %7.0f ms | %8.0f %8.1f %8.1f ms\n",
                 n, full.first, full.median, full.max, budget_points, lod.median, lod.max,
                 back_to_full, peer.first, peer.median, peer.max);
+    std::printf("  %10s | peer gauss first/median/max: %8.0f %8.1f %8.1f ms\n", "", gauss.first,
+                gauss.median, gauss.max);
+    for (std::size_t i = 0; i < stills.size(); ++i)
+      std::printf("  %10s | still, stop %zu: frames %s ms, drawn %zu of %zu points\n", "", i + 1,
+                  listMs(stills[i].ms).c_str(), stills[i].drawn, n);
+    std::printf("  %10s | still, forced full detail: frames %s ms, drawn %zu of %zu points\n", "",
+                listMs(forced.ms).c_str(), forced.drawn, n);
     std::fflush(stdout);
   }
   return 0;

@@ -2,11 +2,14 @@
 // answered through the setFileChooser hook), drag and drop onto the main window, File > Recent
 // files, Save/Open project and Export screenshot through the menu, mouse clicks in the 3D view
 // at the projected position of known features (properties shown) and of known points (manual
-// point pairs), and a mouse drag that switches the view to level of detail and back.
+// point pairs), a mouse drag that switches the view to level of detail and back, and the still
+// frame after a drag kept to its time budget (a subset of a 5 M point cloud under software GL,
+// reported in the status bar) unless View > Full detail when still is on.
 // Screenshots are saved under <build>/test-artifacts/gui_interaction/.
 #include <QApplication>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMimeData>
@@ -18,6 +21,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -36,6 +40,7 @@
 #include "ui/registration/registration_panel.hpp"
 #include "ui/tasks/task_manager.hpp"
 #include "ui/view/lod_budget.hpp"
+#include "ui/view/lod_controller.hpp"
 #include "ui/view/screenshot.hpp"
 #include "ui/view/standard_view.hpp"
 #include "ui/view/surface_format.hpp"
@@ -130,15 +135,25 @@ class GuiInteractionTest : public QObject {
     QVERIFY(requests_[0].first == FileRequest::OpenFiles);
     QCOMPARE(app.log.errorCount(), 0);
     QCOMPARE(app.scene.layers().size(), std::size_t{2});
-    QCOMPARE(static_cast<DatasetLayer*>(app.scene.layers()[0].get())->dataset().pointCount(),
-             std::size_t{51 * 51});
+    // The files load in parallel: the layers come in the order their loads finish.
+    std::vector<std::size_t> counts;
+    for (const auto& layer : app.scene.layers())
+      counts.push_back(static_cast<DatasetLayer*>(layer.get())->dataset().pointCount());
+    std::sort(counts.begin(), counts.end());
+    QCOMPARE(counts, (std::vector<std::size_t>{41 * 41, 51 * 51}));
     // Both files are in File > Recent files, most recent first.
     QCOMPARE(app.recent.files().size(), 2);
     applyStandardView(app.view.renderer(), StandardView::Top);
     const QImage image = grabView(app.view);
     saveScreenshot(app.view, artefact("menu_open_top.png"));
     QVERIFY(test::countColor(image, QColor(255, 0, 0)) > 500);
-    QVERIFY(test::countColor(image, QColor(0, 0, 255)) > 500);
+    // The grids overlap in z = 0: the one drawn later may cover the other. Alone, blue shows.
+    for (const auto& layer : app.scene.layers())
+      if (static_cast<DatasetLayer*>(layer.get())->dataset().pointCount() == 51 * 51) {
+        layer->setVisible(false);
+        app.scene.layerChanged(layer.get());
+      }
+    QVERIFY(test::countColor(grabView(app.view), QColor(0, 0, 255)) > 500);
 
     // A canceled dialog (no file chosen) changes nothing.
     chosen_.clear();
@@ -309,7 +324,9 @@ class GuiInteractionTest : public QObject {
     app.scene.addDataset(std::make_shared<const Dataset>(Dataset::fromCloud(std::move(cloud))));
     resetCamera(app.view.renderer());
     grabView(app.view);
-    QCOMPARE(app.scene.drawnPointCount(), std::size_t{600000});
+    // Still: the whole cloud or the still budget's subset (see stillFrameKeepsToItsBudget).
+    QTRY_VERIFY_WITH_TIMEOUT(lodController().settled(), 10000);
+    QVERIFY(app.scene.drawnPointCount() > LodBudget().params().min_points);
 
     const QPoint centre(app.view.width() / 2, app.view.height() / 2);
     QSignalSpy frames(&app.view, &VtkViewWidget::frameRendered);
@@ -326,9 +343,88 @@ class GuiInteractionTest : public QObject {
     QCOMPARE(moving, std::min<std::size_t>(600000, app.scene.lodBudget()));
     QTest::mouseRelease(&app.view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(72, 24));
     QVERIFY(frames.size() >= 6);
-    // Still again: full detail after the settle delay.
-    QTRY_VERIFY_WITH_TIMEOUT(!app.scene.reducedDetail(), 3000);
-    QCOMPARE(app.scene.drawnPointCount(), std::size_t{600000});
+    // Still again after the settle delay: the whole cloud, or the still budget's subset when
+    // the OpenGL cannot draw it within the still frame's target.
+    LodController& lod = lodController();
+    QTRY_VERIFY_WITH_TIMEOUT(lod.settled(), 10000);
+    const std::size_t still = app.scene.drawnPointCount();
+    const std::size_t expected = std::min<std::size_t>(600000, lod.stillBudget().points());
+    QVERIFY2(still + 1 >= expected && still <= expected,
+             qPrintable(QString("%1 drawn, still budget %2").arg(still).arg(expected)));
+  }
+
+  void stillFrameKeepsToItsBudget() {
+    // 5,000,000 points: seconds per full frame under software OpenGL (llvmpipe), the still
+    // frame must stay near its target and say in the status bar that it shows a subset.
+    AppContext& app = window_->context();
+    constexpr std::size_t kPoints = 5'000'000;
+    constexpr double kPointSize = 4.0;
+    PointCloud cloud;
+    cloud.positions.reserve(kPoints);
+    for (std::size_t i = 0; i < kPoints; ++i)
+      cloud.positions.emplace_back(static_cast<float>(i % 2500) * 0.01f,
+                                   static_cast<float>(i / 2500) * 0.01f,
+                                   static_cast<float>(i % 7) * 0.05f);
+    LodController& lod = lodController();
+    QSignalSpy frames(&lod, &LodController::stillFrameDrawn);
+    auto& layer =
+        app.scene.addDataset(std::make_shared<const Dataset>(Dataset::fromCloud(std::move(cloud))));
+    // Large points (more fill work per point): 5 M points take 1-2 s per frame on llvmpipe.
+    PointStyle style = layer.style();
+    style.point_size = kPointSize;
+    layer.setStyle(style);
+    resetCamera(app.view.renderer());
+    QCOMPARE(lod.totalPointCount(), kPoints);
+    // Loading draws the still subset (no full frame on the first paint either), then larger
+    // ones while frames are well under target.
+    QTRY_VERIFY_WITH_TIMEOUT(frames.size() > 0 && lod.settled(), 20000);
+    for (const auto& f : frames)
+      QVERIFY2(f[0].toDouble() < kTolerance * LodController::kStillTargetMs,
+               qPrintable(QString("%1 ms").arg(f[0].toDouble())));
+
+    // A camera drag, then the still frame: within its budget, a subset, reported.
+    const QPoint centre(app.view.width() / 2, app.view.height() / 2);
+    QTest::mousePress(&app.view, Qt::LeftButton, Qt::NoModifier, centre);
+    for (int i = 1; i <= 4; ++i) {
+      QTest::mouseMove(&app.view, centre + QPoint(10 * i, 5 * i));
+      QTest::qWait(30);
+      app.view.renderNow();
+    }
+    QVERIFY(lod.moving());
+    QTest::mouseRelease(&app.view, Qt::LeftButton, Qt::NoModifier, centre + QPoint(40, 20));
+    frames.clear();
+    QTRY_VERIFY_WITH_TIMEOUT(frames.size() > 0 && lod.settled(), 20000);
+    for (const auto& f : frames)
+      QVERIFY2(f[0].toDouble() < kTolerance * LodController::kStillTargetMs,
+               qPrintable(QString("still frame %1 ms").arg(f[0].toDouble())));
+    const std::size_t drawn = app.scene.drawnPointCount();
+    QVERIFY2(app.scene.reducedDetail() && drawn < kPoints && drawn >= 20000,
+             qPrintable(QString::number(drawn)));
+    auto* status = window_->findChild<QLabel*>("detailLabel");
+    QVERIFY(status);
+    QCOMPARE(status->text(), detailStatusText(drawn, kPoints));
+    QVERIFY2(status->text().startsWith("Showing ") && status->text().endsWith(" points"),
+             qPrintable(status->text()));
+    qInfo("still frames after the drag: %lld, last %.0f ms, %s",
+          static_cast<long long>(frames.size()), frames.last()[0].toDouble(),
+          qPrintable(status->text()));
+
+    // View > Full detail when still: every point, however long the frame takes.
+    QAction* full = menuAction(*window_, "View", "Full detail when still (may be slow)");
+    QVERIFY(full && full->isCheckable() && !full->isChecked());
+    frames.clear();
+    full->trigger();
+    QVERIFY(lod.fullDetailWhenStill());
+    QTRY_VERIFY_WITH_TIMEOUT(frames.size() > 0, 30000);
+    QCOMPARE(app.scene.drawnPointCount(), kPoints);
+    QVERIFY(!app.scene.reducedDetail());
+    QVERIFY(status->text().isEmpty());
+    qInfo("forced full detail frame: %.0f ms for %zu points", frames.last()[0].toDouble(), kPoints);
+    // Off again: the next still frame is the budget's subset again.
+    full->trigger();
+    QVERIFY(!lod.fullDetailWhenStill());
+    QVERIFY(app.scene.reducedDetail() && app.scene.drawnPointCount() < kPoints);
+    QVERIFY(!status->text().isEmpty());
   }
 
   void lodBudgetConvergesToTheTargetFrameTime() {
@@ -357,6 +453,14 @@ class GuiInteractionTest : public QObject {
   }
 
  private:
+  /// Still frames may exceed their target by this factor: a single frame's time on a shared
+  /// machine (other processes, software GL threads) jitters, the budget adapts over frames.
+  static constexpr double kTolerance = 2.0;
+  LodController& lodController() {
+    auto* lod = window_->findChild<LodController*>();
+    if (!lod) qFatal("the main window has no LodController");
+    return *lod;
+  }
   QString artefact(const QString& name) {
     static const auto dir = test::scratchDir("gui_interaction");
     return QString::fromStdString((dir / name.toStdString()).string());
