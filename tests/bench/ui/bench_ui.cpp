@@ -146,6 +146,7 @@ vtkSmartPointer<vtkActor> peerActor(const plumb::PointCloud& cloud, double point
 struct StillRun {
   std::vector<double> ms;
   std::size_t drawn = 0;
+  double switch_ms = 0;  ///< UI thread time to switch to the still subset (subset rebuild)
 };
 
 StillRun stopCamera(plumb::ui::VtkViewWidget& view, plumb::ui::LodController& lod,
@@ -154,7 +155,10 @@ StillRun stopCamera(plumb::ui::VtkViewWidget& view, plumb::ui::LodController& lo
   auto c = QObject::connect(&view, &plumb::ui::VtkViewWidget::frameRendered,
                             [&run](double ms) { run.ms.push_back(ms); });
   lod.stopMoving();
+  QElapsedTimer switching;
+  switching.start();
   lod.showStill();
+  run.switch_ms = static_cast<double>(switching.nsecsElapsed()) / 1e6;
   QElapsedTimer wall;
   wall.start();
   while (wall.elapsed() < 600000 && (run.ms.empty() || lod.refinementPending()))
@@ -281,8 +285,8 @@ int main(int argc, char** argv) {
     std::printf("  %10s | peer gauss first/median/max: %8.0f %8.1f %8.1f ms\n", "", gauss.first,
                 gauss.median, gauss.max);
     for (std::size_t i = 0; i < stills.size(); ++i)
-      std::printf("  %10s | still, stop %zu: frames %s ms, drawn %zu of %zu points\n", "", i + 1,
-                  listMs(stills[i].ms).c_str(), stills[i].drawn, n);
+      std::printf("  %10s | still, stop %zu: frames %s ms, drawn %zu of %zu points (switch %.0f ms)\n",
+                  "", i + 1, listMs(stills[i].ms).c_str(), stills[i].drawn, n, stills[i].switch_ms);
     std::printf("  %10s | still, forced full detail: frames %s ms, drawn %zu of %zu points\n", "",
                 listMs(forced.ms).c_str(), forced.drawn, n);
     std::fflush(stdout);
