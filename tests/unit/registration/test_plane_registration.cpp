@@ -3,6 +3,7 @@
 #include <random>
 
 #include "registration/planes/plane_registration.hpp"
+#include "unit/registration/random_pose_trials.hpp"
 #include "unit/registration/synthetic_building.hpp"
 
 using namespace plumb;
@@ -17,35 +18,18 @@ FeatureSet roomsSubset(const std::vector<int>& idx) {
 }  // namespace
 
 TEST(PlaneRegistration, RecoversRandomPosesWithNoiseDropsAndOutliers) {
-  const FeatureSet truth = test::roomFeatures(test::asymmetricRooms());
-  std::mt19937_64 rng(11);
-  int ok = 0;
-  const int runs = 20;
-  for (int run = 0; run < runs; ++run) {
-    const RigidTransform pose = test::randomPose(rng);
-    test::Perturbation pert;
-    pert.drop_fraction = 0.15;
-    FeatureSet target = test::perturb(truth, pert, rng);
-    FeatureSet source = test::perturb(truth, pert, rng);
-    source.transform(pose.inverse());
-    PlaneRegistrationParams p;
-    // Two storeys: with unsigned normals the ceilings at 2.8 m and the floors above at 3.0 m
-    // are the same plane up to the slab; the synthetic normals face the rooms like normals
-    // oriented towards indoor scanners.
-    p.oriented_normals = true;
-    const auto r = registerPlanes(source.planes, target.planes, p);
-    const double rot = RigidTransform::rotationErrorDeg(r.transform, pose);
-    const double tr = RigidTransform::translationError(r.transform, pose);
-    if (r.ok()) {
-      // Feature-level accuracy before any point refinement: noise 5 mm, 0.05° per plane.
-      EXPECT_LT(rot, 0.1) << "run " << run << " " << r.message;
-      EXPECT_LT(tr, 0.02) << "run " << run << " " << r.message;
-      if (rot < 0.1 && tr < 0.02) ++ok;
-    } else {
-      EXPECT_FALSE(r.message.empty());
-    }
-  }
-  EXPECT_GE(ok, 19) << "successes out of " << runs;
+  test::Perturbation pert;
+  pert.drop_fraction = 0.15;
+  const int ok = test::randomPoseSuccesses(
+      11, 20, pert, [](const FeatureSet& source, const FeatureSet& target, int) {
+        PlaneRegistrationParams p;
+        // Two storeys: with unsigned normals the ceilings at 2.8 m and the floors above at
+        // 3.0 m are the same plane up to the slab; the synthetic normals face the rooms like
+        // normals oriented towards indoor scanners.
+        p.oriented_normals = true;
+        return registerPlanes(source.planes, target.planes, p);
+      });
+  EXPECT_GE(ok, 19) << "successes out of 20";
 }
 
 TEST(PlaneRegistration, PartialOverlapIndoorIndoor) {

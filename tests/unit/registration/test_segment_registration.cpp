@@ -4,6 +4,7 @@
 
 #include "registration/segments/line_alignment.hpp"
 #include "registration/segments/segment_registration.hpp"
+#include "unit/registration/random_pose_trials.hpp"
 #include "unit/registration/synthetic_building.hpp"
 
 using namespace plumb;
@@ -26,31 +27,13 @@ TEST(LineAlignment, ClosedFormTranslationEq14) {
 }
 
 TEST(SegmentRegistration, RecoversRandomPosesWithNoiseDropsAndOutliers) {
-  const FeatureSet truth = test::roomFeatures(test::asymmetricRooms());
-  std::mt19937_64 rng(42);
-  int ok = 0;
-  const int runs = 20;
-  for (int run = 0; run < runs; ++run) {
-    const RigidTransform pose = test::randomPose(rng);  // maps source -> target
-    test::Perturbation pert;
-    FeatureSet target = test::perturb(truth, pert, rng);
-    FeatureSet source = test::perturb(truth, pert, rng);
-    source.transform(pose.inverse());
-    SegmentRegistrationParams p;
-    p.seed = run;
-    const auto r = registerSegments(source.segments, target.segments, p);
-    const double rot = RigidTransform::rotationErrorDeg(r.transform, pose);
-    const double tr = RigidTransform::translationError(r.transform, pose);
-    if (r.ok()) {
-      EXPECT_LT(rot, 0.1) << "run " << run << " " << r.message;
-      EXPECT_LT(tr, 0.02) << "run " << run << " " << r.message;
-      if (rot < 0.1 && tr < 0.02) ++ok;
-    } else {
-      // A failure must not be a confident wrong answer: it is reported with a reason.
-      EXPECT_FALSE(r.message.empty());
-    }
-  }
-  EXPECT_GE(ok, 19) << "successes out of " << runs;
+  const int ok = test::randomPoseSuccesses(
+      42, 20, {}, [](const FeatureSet& source, const FeatureSet& target, int run) {
+        SegmentRegistrationParams p;
+        p.seed = run;
+        return registerSegments(source.segments, target.segments, p);
+      });
+  EXPECT_GE(ok, 19) << "successes out of 20";
 }
 
 TEST(SegmentRegistration, DeterministicAndReportsTooFewFeatures) {
