@@ -58,7 +58,8 @@ SurveyRequest demoSurveyRequest(const BuildingSpec& spec, std::uint64_t seed) {
   r.tls.azimuth_step_deg = 0.5;
   r.tls.elevation_step_deg = 0.5;
   r.mms = true;
-  r.mms_params.line_rate_hz = 25;
+  // The MMS keeps its default line rate (50 Hz, 6 cm between lines at 3 m/s): at 25 Hz the
+  // refined indoor/outdoor rotation spread reached 0.11 deg (seed 1), above the 0.1 deg target.
   r.perturb_yaw_deg = 30;
   r.perturb_shift_m = 2;
   r.seed = seed;

@@ -46,7 +46,7 @@ SimulatedSurvey simulateSurvey(const BimModel& model, const std::vector<bool>& g
                                Progress* progress = nullptr);
 
 /// The demo: preset "house", a TLS station in each ground-floor room (0.5 deg grid), an MMS
-/// loop, indoor perturbed by up to 30 deg / 2 m. Small (~1 M points), a few seconds.
+/// loop, indoor perturbed by up to 30 deg / 2 m. Small (~1.4 M points), a few seconds.
 SurveyRequest demoSurveyRequest(const BuildingSpec& spec, std::uint64_t seed = 1);
 
 }  // namespace plumb

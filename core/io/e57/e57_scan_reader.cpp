@@ -16,7 +16,7 @@ namespace {
 enum Role {
   X, Y, Z, Range, Azimuth, Elevation, CartesianState, SphericalState, Intensity, Red, Green,
   Blue, Row, Column, ReturnIndex, ReturnCount, TimeStamp, NormalX, NormalY, NormalZ,
-  Classification, IntensityInvalid, ColorInvalid, TimeInvalid, RoleCount
+  Classification, IntensityInvalid, ColorInvalid, TimeInvalid, SensorX, SensorY, SensorZ, RoleCount
 };
 
 std::string localName(const std::string& name) {
@@ -41,6 +41,9 @@ int roleOf(const std::string& name) {
   if (local == "normalY") return NormalY;
   if (local == "normalZ") return NormalZ;
   if (local == "classification") return Classification;
+  if (local == "sensorOriginX") return SensorX;  // Plumb's extension: per-point sensor origin
+  if (local == "sensorOriginY") return SensorY;  // (MMS trajectory), file frame like cartesian*
+  if (local == "sensorOriginZ") return SensorZ;
   return -1;
 }
 
@@ -200,6 +203,7 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
   const bool has_intensity = col[Intensity] >= 0;
   const bool has_time = col[TimeStamp] >= 0;
   const bool has_class = col[Classification] >= 0;
+  const bool has_origins = col[SensorX] >= 0 && col[SensorY] >= 0 && col[SensorZ] >= 0;
   allocate(cloud.positions, n_records);
   if (has_intensity) allocate(cloud.intensity, n_records);
   if (colors) allocate(cloud.colors, n_records);
@@ -208,6 +212,7 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
   if (has_returns) allocate(cloud.return_index, n_records), allocate(cloud.return_count, n_records);
   if (has_time) allocate(cloud.timestamps, n_records);
   if (has_class) allocate(cloud.classification, n_records);
+  if (has_origins) allocate(cloud.sensor_origins, n_records);
   const bool flag_direction = options.keep_direction_only && state_col >= 0;
   for (std::size_t f : others) cloud.scalar_fields.push_back({info.fields[f].name, {}});
   if (flag_direction) cloud.scalar_fields.push_back({"direction_only", {}});
@@ -330,6 +335,14 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
         cloud.normals[out + j] = {static_cast<float>(nx[i]), static_cast<float>(ny[i]), static_cast<float>(nz[i])};
       }
     }
+    if (has_origins) {
+      const double *sx = c(SensorX), *sy = c(SensorY), *sz = c(SensorZ);
+      for (std::size_t j = 0; j < m; ++j) {
+        const std::uint32_t i = sel[j];
+        cloud.sensor_origins[out + j] = {static_cast<float>(sx[i] - ox), static_cast<float>(sy[i] - oy),
+                                         static_cast<float>(sz[i] - oz)};
+      }
+    }
     if (has_class) {
       const double* v = c(Classification);
       for (std::size_t j = 0; j < m; ++j) cloud.classification[out + j] = clampTo<std::uint8_t>(v[sel[j]]);
@@ -350,7 +363,7 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
   };
   trim(cloud.positions), trim(cloud.intensity), trim(cloud.colors), trim(cloud.normals);
   trim(cloud.row), trim(cloud.column), trim(cloud.return_index), trim(cloud.return_count);
-  trim(cloud.timestamps), trim(cloud.classification);
+  trim(cloud.timestamps), trim(cloud.classification), trim(cloud.sensor_origins);
   for (auto& f : cloud.scalar_fields) trim(f.values);
   if (has_grid && !cloud.empty()) {
     auto extent = [](std::int64_t data_max, const std::optional<Limits>& l) {

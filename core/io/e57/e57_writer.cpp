@@ -179,6 +179,30 @@ std::vector<OutField> describeScan(const PointCloud& cloud, const E57WriteOption
       fields.push_back(std::move(f));
     }
   }
+  if (cloud.hasSensorOrigins()) {
+    // Per-point sensor origin (an MMS trajectory), an extension (namespace "plumb"), in the
+    // scan frame like cartesian*, ScaledInteger at 1 mm (ample for the openings' ray tracing,
+    // 2023 §III-A, which needs it; a trajectory is smooth, so it packs small).
+    const char* names_o[3] = {"plumb:sensorOriginX", "plumb:sensorOriginY", "plumb:sensorOriginZ"};
+    constexpr double qo = 1e-3;
+    auto toRaw = [](double v) { return static_cast<std::int64_t>(std::floor(v / qo + 0.5)); };
+    for (int a = 0; a < 3; ++a) {
+      const auto r = rangeOf(cloud.sensor_origins, [&](const Eigen::Vector3f& o) {
+        return std::isfinite(o[a]) ? toRaw(offset[a] + o[a]) : 0;
+      });
+      OutField f;
+      f.spec = integerSpec(names_o[a], r.first, r.second);
+      f.spec.type = FieldType::ScaledInteger;
+      f.spec.scale = qo;
+      f.integers = [&cloud, offset, a, toRaw](std::size_t begin, std::size_t count, std::int64_t* out) {
+        for (std::size_t i = 0; i < count; ++i) {
+          const float o = cloud.sensor_origins[begin + i][a];
+          out[i] = std::isfinite(o) ? toRaw(offset[a] + o) : 0;
+        }
+      };
+      fields.push_back(std::move(f));
+    }
+  }
   for (const auto& f : fields) w.prototype.push_back(f.spec);
   w.records = n;
   return fields;

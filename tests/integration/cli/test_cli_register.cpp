@@ -11,32 +11,17 @@
 #include <sstream>
 #include <sys/wait.h>
 
+#include "cli_runner.hpp"
 #include "support/test_support.hpp"
 
 namespace fs = std::filesystem;
+using plumb::test::CliResult;
+using plumb::test::plumbCli;
 using plumb::test::readAll;
 using plumb::test::scratchDir;
 using plumb::test::writeAll;
 
 namespace {
-
-struct CliResult {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-/// Runs `plumb-cli ARGS` in `dir` (stdout and stderr captured to files there).
-CliResult plumbCli(const fs::path& dir, const std::string& args) {
-  const fs::path o = dir / "cli.stdout", e = dir / "cli.stderr";
-  const std::string cmd = "cd '" + dir.string() + "' && '" + PLUMB_CLI_PATH + "' " + args + " >'" +
-                          o.string() + "' 2>'" + e.string() + "'";
-  const int status = std::system(cmd.c_str());
-  CliResult r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = readAll(o);
-  r.err = readAll(e);
-  return r;
-}
 
 Eigen::Matrix4d matrixOf(const nlohmann::json& j) {
   Eigen::Matrix4d m;
