@@ -48,18 +48,20 @@ demo() {
   local out="$BUILD/demo-output"
   # Simulated survey of the "house" preset: indoor TLS (perturbed), outdoor MMS, the BIM model.
   "$BUILD/app/plumb-cli" simulate --demo -o "$out" "$@"
-  # A project with the three layers (the model hidden; the indoor scans register onto it).
+  # A project with the three layers (the model hidden; the indoor scans register onto the
+  # outdoor MMS through the windows and doors, 2023 §III).
   cat > "$out/demo.plumb.json" <<'JSON'
 {"plumb-project": 1,
  "layers": [{"file": "indoor.e57"}, {"file": "outdoor.e57"},
             {"file": "model.ply", "visible": false}],
- "registration": {"source": 0, "target": 2, "params": {"method": "auto"}}}
+ "registration": {"source": 0, "target": 1, "params": {"method": "auto"}}}
 JSON
   if have_display && [[ -x "$BUILD/app/plumb" ]]; then
-    exec "$BUILD/app/plumb" --project "$out/demo.plumb.json" --register 0,2
+    exec "$BUILD/app/plumb" --project "$out/demo.plumb.json" --register 0,1
   fi
-  "$BUILD/app/plumb-cli" register "$out/indoor.e57" "$out/model.ply" \
-    --transform "$out/indoor_to_model.json" --report "$out/report.json"
+  "$BUILD/app/plumb-cli" register "$out/indoor.e57" "$out/outdoor.e57" \
+    --transform "$out/indoor_to_outdoor.json" --report "$out/report.json" \
+    -o "$out/indoor_registered.e57"
 }
 
 run_tests() {
