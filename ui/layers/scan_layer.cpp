@@ -7,12 +7,9 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
-#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
-#include <random>
 
-#include "ui/layers/point_geometry.hpp"
 #include "ui/layers/render_frame.hpp"
 
 namespace plumb::ui {
@@ -48,46 +45,47 @@ ScanLayer::ScanLayer(std::shared_ptr<const Dataset> data, std::size_t scan_index
   const PointCloud& cloud = scan().cloud;
   for (const auto& p : cloud.positions)
     if (p.allFinite()) local_bounds_.extend(p.cast<double>());
-  full_poly_ = makeSharedPointPolyData(cloud);
-  const auto seed = static_cast<std::uint32_t>(scan_index_);
-  lod_order_ = randomSubset(cloud.size(), std::min(cloud.size(), kMaxLodPoints), seed);
-  std::shuffle(lod_order_.begin(), lod_order_.end(), std::mt19937(seed + 1));
-  setupActor(full_actor_, full_mapper_, full_poly_);
-  setupActor(lod_actor_, lod_mapper_, nullptr);
+  points_ = PermutedPoints(cloud, static_cast<std::uint32_t>(scan_index_));
+  setupActor(still_actor_, still_mapper_, nullptr);
+  setupActor(moving_actor_, moving_mapper_, nullptr);
+  setStillPointCount(cloud.size());
   setLodPointCount(lod_points);
 }
 
-void ScanLayer::setLodPointCount(std::size_t points) {
-  const std::size_t k = std::clamp<std::size_t>(points, 1, std::max<std::size_t>(lod_order_.size(), 1));
-  if (k == lod_indices_.size() && lod_poly_) return;
-  // A prefix of a random order is a uniform random subset; sorted, it reads memory in order.
-  lod_indices_.assign(lod_order_.begin(), lod_order_.begin() + std::min(k, lod_order_.size()));
-  std::sort(lod_indices_.begin(), lod_indices_.end());
-  lod_poly_ = makeSubsetPointPolyData(scan().cloud, lod_indices_);
-  lod_mapper_->SetInputData(lod_poly_);
-  copyLodColors();
-  updateActors();
+namespace {
+
+std::size_t clampCount(std::size_t points, std::size_t size) {
+  return std::clamp<std::size_t>(points, 1, std::max<std::size_t>(size, 1));
 }
 
-void ScanLayer::copyLodColors() {
-  auto* full = vtkUnsignedCharArray::SafeDownCast(full_poly_->GetPointData()->GetScalars());
-  if (!full || !lod_poly_) return;
-  auto lod = makeColorArray(lod_indices_.size());
-  const auto* src = reinterpret_cast<const Rgb*>(full->GetPointer(0));
-  auto* dst = reinterpret_cast<Rgb*>(lod->GetPointer(0));
-  for (std::size_t i = 0; i < lod_indices_.size(); ++i) dst[i] = src[lod_indices_[i]];
-  lod_poly_->GetPointData()->SetScalars(lod);
-  lod_poly_->Modified();
+}  // namespace
+
+void ScanLayer::setLodPointCount(std::size_t points) {
+  setPrefix(moving_count_, moving_poly_, moving_mapper_, points);
+}
+
+void ScanLayer::setStillPointCount(std::size_t points) {
+  setPrefix(still_count_, still_poly_, still_mapper_, points);
+}
+
+void ScanLayer::setPrefix(std::size_t& count, vtkSmartPointer<vtkPolyData>& poly,
+                          vtkPolyDataMapper* mapper, std::size_t points) {
+  const std::size_t k = clampCount(points, points_.size());
+  if (k == count && poly) return;
+  count = k;
+  poly = points_.prefix(k);  // aliases the permuted arrays: O(1)
+  mapper->SetInputData(poly);
+  updateActors();
 }
 
 std::size_t ScanLayer::drawnPointCount() const {
   if (!shown_) return 0;
-  return usesLod() ? lod_indices_.size() : scan().cloud.size();
+  return std::min(usesMoving() ? moving_count_ : still_count_, points_.size());
 }
 
-bool ScanLayer::usesLod() const {
-  // A scan no larger than its subset has nothing to reduce: the full actor always shows.
-  return reduced_ && lod_indices_.size() < scan().cloud.size();
+bool ScanLayer::usesMoving() const {
+  // Equal sizes: both actors draw the same prefix; the still one is uploaded already.
+  return reduced_ && moving_count_ != still_count_;
 }
 
 ScanLayer::~ScanLayer() = default;
@@ -112,19 +110,18 @@ void ScanLayer::setStyle(const PointStyle& style, double z_min, double z_max) {
   coloring.z_min = z_min;
   coloring.z_max = z_max;
 
-  auto full = makeColorArray(cloud.size());
-  std::span<Rgb> colors{reinterpret_cast<Rgb*>(full->GetPointer(0)), cloud.size()};
+  std::vector<Rgb> colors(cloud.size());  // cloud order (transient: 3 bytes per point)
   if (style.mode == PointColorMode::Distance && distances_.size() == cloud.size()) {
     fillDistanceColors(distances_, distance_max_, colors);
   } else {
     if (style.mode == PointColorMode::Distance) coloring.style.mode = PointColorMode::Elevation;
     fillPointColors(cloud, coloring, colors);
   }
-  full_poly_->GetPointData()->SetScalars(full);
-  full_poly_->Modified();
-  copyLodColors();
-  full_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
-  lod_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
+  points_.setColors(colors);
+  touchColors(still_poly_);
+  touchColors(moving_poly_);
+  still_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
+  moving_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
 }
 
 void ScanLayer::setDistances(std::vector<float> distances, double max_distance) {
@@ -132,7 +129,7 @@ void ScanLayer::setDistances(std::vector<float> distances, double max_distance) 
   distance_max_ = max_distance > 0 ? max_distance : 1.0;
 }
 
-std::vector<vtkProp*> ScanLayer::props() const { return {full_actor_, lod_actor_}; }
+std::vector<vtkProp*> ScanLayer::props() const { return {still_actor_, moving_actor_}; }
 
 Bounds ScanLayer::bounds() const {
   return transformBounds(local_bounds_, localToWorld());
@@ -142,7 +139,9 @@ std::vector<PropertyRow> ScanLayer::describe() const {
   auto rows = Layer::describe();
   const PointCloud& cloud = scan().cloud;
   rows.emplace_back("Points", QString::number(cloud.size()));
-  rows.emplace_back("Level of detail", QString::number(lod_indices_.size()) + " points");
+  rows.emplace_back("Level of detail", QString("%1 points moving, %2 still")
+                                           .arg(moving_count_)
+                                           .arg(still_count_));
   QStringList fields;
   for (const auto& f : cloud.fieldNames()) fields << QString::fromStdString(f);
   rows.emplace_back("Attributes", fields.join(' '));
@@ -165,12 +164,12 @@ void ScanLayer::applyVisibility(bool effective) {
 }
 
 void ScanLayer::updateActors() {
-  const bool use_lod = usesLod();
-  full_actor_->SetVisibility(shown_ && !use_lod);
-  lod_actor_->SetVisibility(shown_ && use_lod);
+  const bool moving = usesMoving();
+  still_actor_->SetVisibility(shown_ && !moving);
+  moving_actor_->SetVisibility(shown_ && moving);
   const auto m = renderMatrix(origin_, localToWorld());
-  full_actor_->SetUserMatrix(m);
-  lod_actor_->SetUserMatrix(m);
+  still_actor_->SetUserMatrix(m);
+  moving_actor_->SetUserMatrix(m);
 }
 
 }  // namespace plumb::ui

@@ -1,8 +1,10 @@
 #pragma once
-// One scan of a dataset drawn as points: a full-resolution actor (positions shared with the
-// scan, no copy) and a level-of-detail actor (random subset) shown while the camera moves.
-// The subset size follows the view's adaptive budget (LodBudget): the scan keeps a random
-// order of up to kMaxLodPoints of its points, and any subset size is a prefix of that order.
+// One scan of a dataset drawn as points by two actors: a "moving" subset shown while the camera
+// moves and a "still" subset shown otherwise (the whole scan by default: full detail). Their
+// sizes follow the view's two adaptive budgets (LodController). The scan's points are stored
+// once in a random order (PermutedPoints), so a subset is a prefix of that order: changing a
+// size makes a new poly data aliasing the prefix (no copy, sort or gather), and switching
+// between moving and still only toggles the actors' visibility.
 #include <Eigen/Core>
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
@@ -14,6 +16,7 @@
 #include "model/dataset.hpp"
 #include "ui/layers/layer.hpp"
 #include "ui/layers/point_coloring.hpp"
+#include "ui/layers/point_geometry.hpp"
 
 class vtkActor;
 class vtkPolyData;
@@ -23,21 +26,27 @@ namespace plumb::ui {
 
 class ScanLayer : public Layer {
  public:
-  /// Largest subset kept for level of detail (bounds the memory of the random order).
-  static constexpr std::size_t kMaxLodPoints = 5'000'000;
-
-  /// `data` must hold scan `scan_index`; `lod_points` is the subset size for level of detail.
+  /// `data` must hold scan `scan_index`; `lod_points` is the moving subset's size. The still
+  /// subset starts as the whole scan.
   ScanLayer(std::shared_ptr<const Dataset> data, std::size_t scan_index,
             const Eigen::Vector3d& origin, std::size_t lod_points);
   ~ScanLayer() override;
 
   const Scan& scan() const { return data_->scans[scan_index_]; }
   std::size_t scanIndex() const { return scan_index_; }
-  std::size_t lodPointCount() const { return lod_indices_.size(); }
-  /// Changes the subset size (clamped to [1, min(size, kMaxLodPoints)]); rebuilds the subset.
+  /// Size of the moving subset (drawn while the camera moves).
+  std::size_t lodPointCount() const { return moving_count_; }
+  /// Changes the moving subset's size (clamped to [1, size]).
   void setLodPointCount(std::size_t points);
-  /// Points drawn now (full cloud or subset, 0 when hidden).
+  /// Size of the still subset (the scan's size: full detail).
+  std::size_t stillPointCount() const { return still_count_; }
+  /// Changes the still subset's size (clamped to [1, size]; >= size: full detail).
+  void setStillPointCount(std::size_t points);
+  /// Points drawn now (moving or still subset, 0 when hidden).
   std::size_t drawnPointCount() const;
+  /// Cloud index of vertex `vertex_id` of either actor's poly data (they are prefixes of one
+  /// random order): what a picked vertex id means.
+  std::size_t originalIndex(std::size_t vertex_id) const { return points_.originalIndex(vertex_id); }
 
   /// Dataset frame -> world (a registration result; identity by default).
   void setDatasetTransform(const RigidTransform& t);
@@ -59,21 +68,24 @@ class ScanLayer : public Layer {
 
  private:
   void updateActors();
-  bool usesLod() const;
-  void copyLodColors();
+  bool usesMoving() const;
+  /// Points `count`/`poly` of one actor at the prefix of `points` points (clamped).
+  void setPrefix(std::size_t& count, vtkSmartPointer<vtkPolyData>& poly,
+                 vtkPolyDataMapper* mapper, std::size_t points);
   std::shared_ptr<const Dataset> data_;
   std::size_t scan_index_;
   Eigen::Vector3d origin_;
   RigidTransform dataset_transform_;
-  std::vector<std::uint32_t> lod_order_;    ///< random order of a random subset
-  std::vector<std::uint32_t> lod_indices_;  ///< the current subset, sorted (memory order)
+  PermutedPoints points_;  ///< the scan's points in random order (positions, colours)
   Bounds local_bounds_;  ///< of the scan's local (offset-relative) positions
-  vtkSmartPointer<vtkPolyData> full_poly_;
-  vtkSmartPointer<vtkPolyData> lod_poly_;
-  vtkNew<vtkPolyDataMapper> full_mapper_;
-  vtkNew<vtkPolyDataMapper> lod_mapper_;
-  vtkNew<vtkActor> full_actor_;
-  vtkNew<vtkActor> lod_actor_;
+  std::size_t still_count_ = 0;
+  std::size_t moving_count_ = 0;
+  vtkSmartPointer<vtkPolyData> still_poly_;   ///< prefix [0, still_count_)
+  vtkSmartPointer<vtkPolyData> moving_poly_;  ///< prefix [0, moving_count_)
+  vtkNew<vtkPolyDataMapper> still_mapper_;
+  vtkNew<vtkPolyDataMapper> moving_mapper_;
+  vtkNew<vtkActor> still_actor_;
+  vtkNew<vtkActor> moving_actor_;
   std::vector<float> distances_;
   double distance_max_ = 1.0;
   bool reduced_ = false;

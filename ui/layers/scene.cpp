@@ -74,7 +74,7 @@ Layer& Scene::adopt(std::unique_ptr<Layer> layer, Layer* parent) {
   }
   addProps(*added);
   applyLodBudget();
-  added->setReducedDetail(reduced_);
+  added->setReducedDetail(moving_);
   emit layersChanged();
   emit renderNeeded();
   return *added;
@@ -135,14 +135,32 @@ void Scene::renderBounds(const Bounds& world, double out[6]) const {
   toRenderBounds(world, origin(), out);
 }
 
-void Scene::setReducedDetail(bool reduced) {
-  reduced_ = reduced;
-  for (auto& l : layers_) forEachLayer(*l, [reduced](Layer& x) { x.setReducedDetail(reduced); });
+void Scene::setMovingDetail(bool moving) {
+  moving_ = moving;
+  for (auto& l : layers_) forEachLayer(*l, [moving](Layer& x) { x.setReducedDetail(moving); });
+}
+
+bool Scene::reducedDetail() const {
+  return moving_ || (still_budget_ != kFullDetail && still_budget_ < scanPointCount());
 }
 
 void Scene::setLodBudget(std::size_t points) {
   lod_budget_ = points;
   applyLodBudget();
+}
+
+void Scene::setStillBudget(std::size_t points) {
+  still_budget_ = points;
+  applyLodBudget();
+}
+
+std::size_t Scene::scanPointCount() const {
+  std::size_t n = 0;
+  for (const auto& l : layers_)
+    forEachLayer(*l, [&n](Layer& x) {
+      if (x.kind() == LayerKind::Scan) n += static_cast<ScanLayer&>(x).scan().cloud.size();
+    });
+  return n;
 }
 
 void Scene::applyLodBudget() {
@@ -155,9 +173,16 @@ void Scene::applyLodBudget() {
       total += scans.back()->scan().cloud.size();
     });
   if (total == 0) return;
-  const double share = static_cast<double>(lod_budget_) / static_cast<double>(total);
-  for (ScanLayer* s : scans)
-    s->setLodPointCount(static_cast<std::size_t>(share * static_cast<double>(s->scan().cloud.size())));
+  const auto share = [total](std::size_t budget, std::size_t n) {
+    if (budget >= total) return n;
+    return static_cast<std::size_t>(static_cast<double>(budget) / static_cast<double>(total) *
+                                    static_cast<double>(n));
+  };
+  for (ScanLayer* s : scans) {
+    const std::size_t n = s->scan().cloud.size();
+    s->setLodPointCount(share(lod_budget_, n));
+    s->setStillPointCount(share(still_budget_, n));
+  }
 }
 
 std::size_t Scene::drawnPointCount() const {

@@ -53,13 +53,21 @@ class Scene : public QObject {
   /// VTK bounds in render coordinates of a world box.
   void renderBounds(const Bounds& world, double out[6]) const;
 
-  /// Level of detail on/off for every layer.
-  void setReducedDetail(bool reduced);
-  bool reducedDetail() const { return reduced_; }
+  /// Moving detail on/off for every layer: the moving subsets (camera moving) or the still
+  /// subsets (full detail unless a still budget is set). Switching only toggles visibility.
+  void setMovingDetail(bool moving);
+  bool movingDetail() const { return moving_; }
+  /// Fewer points drawn than the scans hold: moving, or still with a still budget below them.
+  bool reducedDetail() const;
   /// Points drawn per moving frame by the whole scene, split among the scans by size
   /// (LodBudget chooses it from measured frame times). Applies to layers added later too.
   void setLodBudget(std::size_t points);
   std::size_t lodBudget() const { return lod_budget_; }
+  /// Points drawn per still frame by the whole scene, split among the scans by size;
+  /// kFullDetail (the default): every point.
+  static constexpr std::size_t kFullDetail = static_cast<std::size_t>(-1);
+  void setStillBudget(std::size_t points);
+  std::size_t stillBudget() const { return still_budget_; }
   /// Points the visible scans draw now (subsets while reduced, full clouds otherwise).
   std::size_t drawnPointCount() const;
   /// Picks a feature at display position (x, y), VTK convention (y up, device pixels).
@@ -86,8 +94,10 @@ class Scene : public QObject {
   std::vector<std::unique_ptr<Layer>> layers_;
   std::optional<Eigen::Vector3d> origin_;
   void applyLodBudget();
-  bool reduced_ = false;
+  std::size_t scanPointCount() const;
+  bool moving_ = false;
   std::size_t lod_budget_;
+  std::size_t still_budget_ = kFullDetail;
 };
 
 }  // namespace plumb::ui

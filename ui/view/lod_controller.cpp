@@ -77,8 +77,8 @@ void LodController::startMoving() {
   refine_pending_ = false;
   moving_ = true;
   moving_frames_ = 0;
-  scene_.setLodBudget(budget_.points());
-  if (!scene_.reducedDetail()) scene_.setReducedDetail(true);
+  scene_.setLodBudget(budget_.points());  // unchanged budget: nothing to do
+  scene_.setMovingDetail(true);            // toggles the scans' actors only
   skip_frames_ = 1;
 }
 
@@ -114,12 +114,11 @@ std::size_t LodController::totalPointCount() const {
 
 void LodController::applyStill() {
   const std::size_t total = totalPointCount();
-  if (force_full_ || still_.points() >= total) {
-    scene_.setReducedDetail(false);
-  } else {
-    scene_.setLodBudget(still_.points());
-    scene_.setReducedDetail(true);
-  }
+  // The still subsets are kept while moving: back to still only toggles actors, unless the
+  // still budget changed (then each scan makes a new prefix poly data, no copy).
+  scene_.setStillBudget(force_full_ || still_.points() >= total ? Scene::kFullDetail
+                                                                : still_.points());
+  scene_.setMovingDetail(false);
   updateDetailText();
 }
 
@@ -136,7 +135,7 @@ void LodController::onFrame(double ms) {
     return;
   }
   updateDetailText();
-  if (!scene_.reducedDetail()) return;
+  if (!scene_.movingDetail()) return;
   ++moving_frames_;
   if (skip_frames_ > 0) {
     --skip_frames_;
@@ -164,7 +163,7 @@ void LodController::onStillFrame(double ms) {
     if (scene_.drawnPointCount() > drawn) {
       view_.requestRender();
     } else {
-      refine_pending_ = false;  // capped (largest subset kept per scan): nothing more to draw
+      refine_pending_ = false;  // nothing more to draw
     }
   });
 }

@@ -8,6 +8,9 @@
 //                  still budget (target LodController::kStillTargetMs) is learned from them;
 //                  larger subsets follow in later frames while a frame was well under target
 //   forced full  : "Full detail when still" on: the still frame draws every point
+//   switch       : UI-thread time of the switches moving <-> still (LodController::startMoving
+//                  and showStill: subset changes, before any frame), and the first frame after
+//                  each switch against the next frame (the difference is the upload)
 //   peer VTK     : plain vtkPolyDataMapper with default settings on the same points and colours
 //                  (vtkPoints + one vertex cell per point + RGB uchar point scalars)
 //   peer gauss   : vtkPointGaussianMapper with scale factor 0 (plain points drawn without a
@@ -168,9 +171,14 @@ StillRun stopCamera(plumb::ui::VtkViewWidget& view, plumb::ui::LodController& lo
   return run;
 }
 
-std::string listMs(const std::vector<double>& ms) {
+/// "a+b+c" with `decimals` digits after the point.
+std::string listMs(const std::vector<double>& ms, int decimals = 0) {
   std::string out;
-  for (double m : ms) out += (out.empty() ? "" : "+") + std::to_string(static_cast<long>(m + 0.5));
+  char buf[32];
+  for (double m : ms) {
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, m);
+    out += (out.empty() ? "" : "+") + std::string(buf);
+  }
   return out.empty() ? "-" : out;
 }
 
@@ -180,6 +188,18 @@ std::vector<std::size_t> parseSizes(const char* s) {
   std::string item;
   while (std::getline(in, item, ',')) out.push_back(std::stoull(item));
   return out;
+}
+
+/// Resident memory of this process, MB (VmRSS).
+double residentMb() {
+  FILE* f = std::fopen("/proc/self/status", "r");
+  if (!f) return 0;
+  char line[256];
+  double kb = 0;
+  while (std::fgets(line, sizeof line, f))
+    if (std::sscanf(line, "VmRSS: %lf kB", &kb) == 1) break;
+  std::fclose(f);
+  return kb / 1024.0;
 }
 
 std::string glRenderer(plumb::ui::VtkViewWidget& view) {
@@ -229,22 +249,29 @@ int main(int argc, char** argv) {
     auto data = std::make_shared<const plumb::Dataset>(syntheticBuilding(n));
     Timing full, lod, peer, gauss;
     std::vector<StillRun> stills;
+    std::vector<double> to_moving_ms, moving_first_ms, moving_next_ms;
     StillRun forced;
     double back_to_full = 0;
+    const double rss_data = residentMb();
+    double rss_layer = 0, add_ms = 0;
     std::size_t budget_points = 0;
     {
       plumb::ui::Scene scene(view.renderer());
+      QElapsedTimer adding;
+      adding.start();
       auto& layer = scene.addDataset(data);
+      add_ms = static_cast<double>(adding.nsecsElapsed()) / 1e6;
       plumb::ui::PointStyle style = layer.style();
       style.point_size = point_size;
       layer.setStyle(style);
       plumb::ui::resetCamera(view.renderer());
       full = measure(view, 15, seconds);
+      rss_layer = residentMb();
 
       // Moving: the budget adapts from the frame times, as LodController does.
       plumb::ui::LodBudget budget(budget_params);
       scene.setLodBudget(budget.points());
-      scene.setReducedDetail(true);
+      scene.setMovingDetail(true);
       orbitFrame(view);  // switch frame (subset upload), not measured
       for (int frame = 0; frame < 30; ++frame) {
         if (budget.addFrame(scene.drawnPointCount(), orbitFrame(view))) {
@@ -254,7 +281,7 @@ int main(int argc, char** argv) {
       }
       budget_points = scene.drawnPointCount();
       lod = measure(view, 15, seconds);
-      scene.setReducedDetail(false);
+      scene.setMovingDetail(false);
       back_to_full = orbitFrame(view);
 
       // The application's controller: move (a few frames), stop, still frames; three times,
@@ -262,8 +289,13 @@ int main(int argc, char** argv) {
       plumb::ui::LodController controller(view, scene);
       for (int stop = 0; stop < 4; ++stop) {
         if (stop == 3) controller.setFullDetailWhenStill(true);
+        QElapsedTimer switching;
+        switching.start();
         controller.startMoving();
-        for (int frame = 0; frame < 6; ++frame) orbitFrame(view);
+        to_moving_ms.push_back(static_cast<double>(switching.nsecsElapsed()) / 1e6);
+        moving_first_ms.push_back(orbitFrame(view));
+        moving_next_ms.push_back(orbitFrame(view));
+        for (int frame = 0; frame < 4; ++frame) orbitFrame(view);
         (stop == 3 ? forced : stills.emplace_back()) = stopCamera(view, controller, scene);
       }
     }
@@ -287,6 +319,14 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < stills.size(); ++i)
       std::printf("  %10s | still, stop %zu: frames %s ms, drawn %zu of %zu points (switch %.0f ms)\n",
                   "", i + 1, listMs(stills[i].ms).c_str(), stills[i].drawn, n, stills[i].switch_ms);
+    std::printf("  %10s | memory: %.0f MB resident with the cloud, +%.0f MB with its layer after "
+                "a full frame; adding the layer %.0f ms\n", "", rss_data, rss_layer - rss_data, add_ms);
+    std::vector<double> to_still_ms;
+    for (const auto& s : stills) to_still_ms.push_back(s.switch_ms);
+    std::printf("  %10s | switch to moving: %s ms UI (first moving frame %s ms, next %s ms); "
+                "to still: %s ms UI\n",
+                "", listMs(to_moving_ms, 1).c_str(), listMs(moving_first_ms).c_str(),
+                listMs(moving_next_ms).c_str(), listMs(to_still_ms, 1).c_str());
     std::printf("  %10s | still, forced full detail: frames %s ms, drawn %zu of %zu points\n", "",
                 listMs(forced.ms).c_str(), forced.drawn, n);
     std::fflush(stdout);

@@ -10,6 +10,9 @@
 #include <QTest>
 #include <QTreeWidget>
 
+#include <vtkActor.h>
+#include <vtkMapper.h>
+#include <vtkPolyData.h>
 #include <vtkProp.h>
 
 #include <fstream>
@@ -163,6 +166,43 @@ class GuiAppTest : public QObject {
     QVERIFY(!props[0]->GetVisibility() && props[1]->GetVisibility());
     scan->setReducedDetail(false);
     QVERIFY(props[0]->GetVisibility() && !props[1]->GetVisibility());
+    QCOMPARE(scan->drawnPointCount(), std::size_t{200000});
+
+    // A still subset: both subsets are prefixes of one random order of the points, vertex i
+    // of either actor is cloud point originalIndex(i) (distinct points, spread over the cloud).
+    scan->setStillPointCount(50000);
+    QCOMPARE(scan->drawnPointCount(), std::size_t{50000});
+    auto input = [&props](std::size_t i) {
+      return vtkPolyData::SafeDownCast(static_cast<vtkActor*>(props[i])->GetMapper()->GetInput());
+    };
+    vtkPolyData* still = input(0);
+    vtkPolyData* moving = input(1);
+    QVERIFY(still && moving);
+    QCOMPARE(still->GetNumberOfPoints(), vtkIdType{50000});
+    QCOMPARE(still->GetNumberOfVerts(), vtkIdType{1});
+    QCOMPARE(moving->GetNumberOfPoints(), vtkIdType{10000});
+    const PointCloud& source = data->scans[0].cloud;
+    std::vector<bool> seen(source.size(), false);
+    std::size_t upper_half = 0;
+    for (vtkIdType i = 0; i < still->GetNumberOfPoints(); ++i) {
+      const std::size_t j = scan->originalIndex(static_cast<std::size_t>(i));
+      QVERIFY(j < source.size() && !seen[j]);
+      seen[j] = true;
+      upper_half += j >= source.size() / 2;
+      double p[3];
+      (i < 10000 ? moving : still)->GetPoint(i, p);
+      QCOMPARE(p[0], static_cast<double>(source.positions[j].x()));
+      QCOMPARE(p[1], static_cast<double>(source.positions[j].y()));
+    }
+    QVERIFY2(upper_half > 24000 && upper_half < 26000, qPrintable(QString::number(upper_half)));
+    // Moving <-> still toggles the actors and keeps both subsets (no rebuild).
+    scan->setReducedDetail(true);
+    QVERIFY(!props[0]->GetVisibility() && props[1]->GetVisibility());
+    QCOMPARE(scan->drawnPointCount(), std::size_t{10000});
+    scan->setReducedDetail(false);
+    QVERIFY(input(0) == still && input(1) == moving);
+    scan->setStillPointCount(200000);  // full detail again
+    QCOMPARE(scan->drawnPointCount(), std::size_t{200000});
     (void)app;
   }
 
