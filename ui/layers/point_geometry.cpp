@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
-#include <random>
 #include <stdexcept>
 
 namespace plumb::ui {
@@ -19,32 +18,73 @@ namespace plumb::ui {
 static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float), "positions must be packed xyz");
 static_assert(sizeof(Rgba) == 4, "colours must be packed rgba");
 
+namespace {
+
+/// SplitMix64 finaliser: a well-mixed 64-bit value of a counter (fast, stateless).
+std::uint64_t mix(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+/// Uniform in [0, range) from the high 32 bits of h (multiply-shift; bias < range / 2^32).
+std::size_t bounded(std::uint64_t h, std::size_t range) {
+  return static_cast<std::size_t>(((h >> 32) * static_cast<std::uint64_t>(range)) >> 32);
+}
+
+/// out[j] = source(order[j]) for the random order of n points and `seed`, without a global
+/// shuffle or gather (a cache miss per point: ~0.9 s for 20 M points with std::mt19937): each
+/// point draws a random bucket (a hash of its index), points are scattered by bucket in
+/// streaming passes, then each bucket (a few thousand points, cache resident) is shuffled
+/// (Fisher-Yates). A random bucket and a uniform shuffle within buckets make a uniform random
+/// permutation. The draws depend on n and seed only: every call with the same n and seed
+/// applies the same order (~0.25 s for 20 M points).
+template <class T, class Source>
+void permuteInto(std::size_t n, std::uint32_t seed, Source&& source, T* out) {
+  const std::size_t buckets = std::clamp<std::size_t>(n / 4096, 1, 1024);
+  const std::uint64_t key = mix(seed);
+  auto bucketOf = [&](std::size_t i) { return bounded(mix(key ^ (std::uint64_t{i} << 1)), buckets); };
+  std::vector<std::size_t> next(buckets + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) ++next[bucketOf(i) + 1];
+  for (std::size_t b = 0; b < buckets; ++b) next[b + 1] += next[b];
+  const std::vector<std::size_t> start = next;  // bucket b: [start[b], start[b + 1])
+  for (std::size_t i = 0; i < n; ++i) out[next[bucketOf(i)]++] = source(i);
+  std::uint64_t counter = mix(key + 1);
+  for (std::size_t b = 0; b < buckets; ++b)
+    for (std::size_t j = start[b + 1]; j > start[b] + 1; --j)
+      std::swap(out[j - 1], out[start[b] + bounded(mix(counter++), j - start[b])]);
+}
+
+}  // namespace
+
 std::vector<std::uint32_t> randomOrder(std::size_t n, std::uint32_t seed) {
   std::vector<std::uint32_t> order(n);
-  std::iota(order.begin(), order.end(), 0u);
-  std::shuffle(order.begin(), order.end(), std::mt19937(seed));
+  permuteInto(n, seed, [](std::size_t i) { return static_cast<std::uint32_t>(i); }, order.data());
   return order;
 }
 
-PermutedPoints::PermutedPoints(const PointCloud& cloud, std::uint32_t seed) {
+PermutedPoints::PermutedPoints(const PointCloud& cloud, std::uint32_t seed) : seed_(seed) {
   const std::size_t n = cloud.size();
   // Vertex ids are 32-bit (connectivity and original indices).
   if (n > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
     throw std::length_error("point cloud too large to draw (more than 2^31 - 1 points)");
-  order_ = randomOrder(n, seed);
   positions_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) positions_[i] = cloud.positions[order_[i]];
+  permuteInto(n, seed_, [&cloud](std::size_t i) { return cloud.positions[i]; }, positions_.data());
   colors_.assign(n, Rgba{255, 255, 255, 255});
   iota_.resize(n);
   std::iota(iota_.begin(), iota_.end(), 0);
 }
 
 void PermutedPoints::setColors(std::span<const Rgb> cloud_order) {
-  const std::size_t n = std::min(cloud_order.size(), size());
-  for (std::size_t i = 0; i < n; ++i) {
-    const Rgb& c = cloud_order[order_[i]];
-    colors_[i] = {c[0], c[1], c[2], 255};
-  }
+  if (cloud_order.size() != size()) return;
+  permuteInto(
+      size(), seed_,
+      [cloud_order](std::size_t i) {
+        const Rgb& c = cloud_order[i];
+        return Rgba{c[0], c[1], c[2], 255};
+      },
+      colors_.data());
 }
 
 vtkSmartPointer<vtkPolyData> PermutedPoints::prefix(std::size_t k) const {

@@ -20,18 +20,24 @@ namespace plumb::ui {
 
 using Rgba = std::array<std::uint8_t, 4>;
 
+/// A uniformly random permutation of [0, n) for `seed`: element i of the result is the index
+/// drawn i-th. Same order as PermutedPoints of n points with that seed.
+std::vector<std::uint32_t> randomOrder(std::size_t n, std::uint32_t seed);
+
 /// A cloud's points in a random order. Memory per point: 12 B positions + 4 B colour (RGBA:
 /// VTK's mapper uses 4-component uchar scalars as they are, 3-component ones it copies to RGBA
-/// per mapper) + 4 B original index + 4 B connectivity = 24 B (20 M points: 480 MB).
+/// per mapper) + 4 B shared connectivity = 20 B (20 M points: 400 MB). The order itself is not
+/// stored: it is replayed from the seed (randomOrder) whenever cloud-order data comes in.
 class PermutedPoints {
  public:
   PermutedPoints() = default;
-  /// Permutes `cloud` with a random order chosen for `seed` (deterministic).
+  /// Permutes `cloud` with the random order of `seed` (deterministic).
   PermutedPoints(const PointCloud& cloud, std::uint32_t seed);
 
-  std::size_t size() const { return order_.size(); }
-  /// Cloud index of vertex `i` (vertex ids of any prefix poly data map back through this).
-  std::uint32_t originalIndex(std::size_t i) const { return order_[i]; }
+  std::size_t size() const { return positions_.size(); }
+  /// Cloud index of each vertex (vertex ids of any prefix poly data map back through this);
+  /// computed on demand, O(size).
+  std::vector<std::uint32_t> originalIndices() const { return randomOrder(size(), seed_); }
   /// Colours in cloud order -> the permuted colour buffer (opaque). Aliasing poly data must be
   /// marked modified by the caller (touchColors).
   void setColors(std::span<const Rgb> cloud_order);
@@ -40,7 +46,7 @@ class PermutedPoints {
   vtkSmartPointer<vtkPolyData> prefix(std::size_t k) const;
 
  private:
-  std::vector<std::uint32_t> order_;
+  std::uint32_t seed_ = 0;
   std::vector<Eigen::Vector3f> positions_;
   std::vector<Rgba> colors_;
   std::vector<std::int32_t> iota_;
@@ -48,8 +54,7 @@ class PermutedPoints {
 
 /// Tells VTK that the colours a prefix poly data aliases changed (re-upload on next render).
 void touchColors(vtkPolyData* poly);
-/// A random permutation of [0, n) for `seed`.
-std::vector<std::uint32_t> randomOrder(std::size_t n, std::uint32_t seed);
+
 /// An RGB colour array of n tuples named "colors".
 vtkSmartPointer<vtkUnsignedCharArray> makeColorArray(std::size_t n);
 

@@ -44,9 +44,9 @@ class ScanLayer : public Layer {
   void setStillPointCount(std::size_t points);
   /// Points drawn now (moving or still subset, 0 when hidden).
   std::size_t drawnPointCount() const;
-  /// Cloud index of vertex `vertex_id` of either actor's poly data (they are prefixes of one
-  /// random order): what a picked vertex id means.
-  std::size_t originalIndex(std::size_t vertex_id) const { return points_.originalIndex(vertex_id); }
+  /// Cloud index of each vertex of either actor's poly data (both are prefixes of one random
+  /// order): what a picked vertex id means. Computed on demand, O(points).
+  std::vector<std::uint32_t> originalIndices() const { return points_.originalIndices(); }
 
   /// Dataset frame -> world (a registration result; identity by default).
   void setDatasetTransform(const RigidTransform& t);

@@ -253,7 +253,7 @@ int main(int argc, char** argv) {
     StillRun forced;
     double back_to_full = 0;
     const double rss_data = residentMb();
-    double rss_layer = 0, add_ms = 0;
+    double rss_layer = 0, add_ms = 0, style_ms = 0;
     std::size_t budget_points = 0;
     {
       plumb::ui::Scene scene(view.renderer());
@@ -263,7 +263,10 @@ int main(int argc, char** argv) {
       add_ms = static_cast<double>(adding.nsecsElapsed()) / 1e6;
       plumb::ui::PointStyle style = layer.style();
       style.point_size = point_size;
+      style.mode = plumb::ui::PointColorMode::Elevation;  // a colour change: every point
+      adding.restart();
       layer.setStyle(style);
+      style_ms = static_cast<double>(adding.nsecsElapsed()) / 1e6;
       plumb::ui::resetCamera(view.renderer());
       full = measure(view, 15, seconds);
       rss_layer = residentMb();
@@ -320,7 +323,8 @@ int main(int argc, char** argv) {
       std::printf("  %10s | still, stop %zu: frames %s ms, drawn %zu of %zu points (switch %.0f ms)\n",
                   "", i + 1, listMs(stills[i].ms).c_str(), stills[i].drawn, n, stills[i].switch_ms);
     std::printf("  %10s | memory: %.0f MB resident with the cloud, +%.0f MB with its layer after "
-                "a full frame; adding the layer %.0f ms\n", "", rss_data, rss_layer - rss_data, add_ms);
+                "a full frame; adding the layer %.0f ms, a colour mode change %.0f ms\n", "", rss_data,
+                rss_layer - rss_data, add_ms, style_ms);
     std::vector<double> to_still_ms;
     for (const auto& s : stills) to_still_ms.push_back(s.switch_ms);
     std::printf("  %10s | switch to moving: %s ms UI (first moving frame %s ms, next %s ms); "

@@ -12,7 +12,9 @@
 
 #include <vtkActor.h>
 #include <vtkMapper.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkProp.h>
 
 #include <fstream>
@@ -23,6 +25,7 @@
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/feature_layer.hpp"
 #include "ui/layers/model_layer.hpp"
+#include "ui/layers/point_coloring.hpp"
 #include "ui/layers/scan_layer.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/main_window.hpp"
@@ -169,7 +172,7 @@ class GuiAppTest : public QObject {
     QCOMPARE(scan->drawnPointCount(), std::size_t{200000});
 
     // A still subset: both subsets are prefixes of one random order of the points, vertex i
-    // of either actor is cloud point originalIndex(i) (distinct points, spread over the cloud).
+    // of either actor is cloud point originalIndices()[i] (distinct, spread over the cloud).
     scan->setStillPointCount(50000);
     QCOMPARE(scan->drawnPointCount(), std::size_t{50000});
     auto input = [&props](std::size_t i) {
@@ -184,8 +187,10 @@ class GuiAppTest : public QObject {
     const PointCloud& source = data->scans[0].cloud;
     std::vector<bool> seen(source.size(), false);
     std::size_t upper_half = 0;
+    const std::vector<std::uint32_t> original = scan->originalIndices();
+    QCOMPARE(original.size(), source.size());
     for (vtkIdType i = 0; i < still->GetNumberOfPoints(); ++i) {
-      const std::size_t j = scan->originalIndex(static_cast<std::size_t>(i));
+      const std::size_t j = original[static_cast<std::size_t>(i)];
       QVERIFY(j < source.size() && !seen[j]);
       seen[j] = true;
       upper_half += j >= source.size() / 2;
@@ -195,6 +200,20 @@ class GuiAppTest : public QObject {
       QCOMPARE(p[1], static_cast<double>(source.positions[j].y()));
     }
     QVERIFY2(upper_half > 24000 && upper_half < 26000, qPrintable(QString::number(upper_half)));
+    // Colours (cloud order in) follow the same order: vertex i has point original[i]'s colour.
+    std::vector<float> distances(source.size());
+    for (std::size_t i = 0; i < distances.size(); ++i) distances[i] = float(i % 1000) / 1000.0f;
+    std::vector<Rgb> expected(source.size());
+    fillDistanceColors(distances, 1.0, expected);
+    scan->setDistances(distances, 1.0);
+    PointStyle by_distance;
+    by_distance.mode = PointColorMode::Distance;
+    scan->setStyle(by_distance, 0.0, 1.0);
+    auto* colors = vtkUnsignedCharArray::SafeDownCast(still->GetPointData()->GetScalars());
+    QVERIFY(colors && colors->GetNumberOfComponents() == 4);
+    for (vtkIdType i = 0; i < still->GetNumberOfPoints(); ++i)
+      for (int c = 0; c < 3; ++c)
+        QCOMPARE(colors->GetValue(4 * i + c), expected[original[static_cast<std::size_t>(i)]][c]);
     // Moving <-> still toggles the actors and keeps both subsets (no rebuild).
     scan->setReducedDetail(true);
     QVERIFY(!props[0]->GetVisibility() && props[1]->GetVisibility());
