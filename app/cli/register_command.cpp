@@ -1,8 +1,11 @@
 // plumb-cli register SOURCE TARGET [--method auto|planes|openings|segments|icp] [--no-refine]
 //   [-o REGISTERED.{e57,ply,las}] [--transform T.json] [--report REPORT.json] [--seed N]
-//   [--params PARAMS.json] [--print-params]
+//   [--params PARAMS.json] [--print-params] [--source-trajectory FILE] [--target-trajectory FILE]
 // Registers SOURCE onto TARGET (scans or models; a PLY/OBJ with faces or an IFC is a model).
 // The inputs are built with makeRegistrationInput, exactly like the desktop app.
+// --source-trajectory / --target-trajectory: a mobile scan without per-point sensor origins
+// (LAS, E57 from other tools) gets them from the vehicle trajectory ("t x y z" per line, in
+// that dataset's frame) interpolated at each point's timestamp; the openings method needs them.
 // Parameters: the defaults, then --params (the JSON of pipelineParamsToJson, any subset of
 // its keys), then the flags given on the command line (--method, --no-refine, --seed), in
 // that order; `--print-params` writes the resulting set as JSON to stdout and exits, so
@@ -25,6 +28,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "io/io.hpp"
+#include "model/trajectory.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/registration_input.hpp"
 
@@ -33,6 +37,7 @@ namespace {
 
 struct RegisterOptions {
   std::string source, target, method, output, transform, report, params;
+  std::string source_trajectory, target_trajectory;
   bool no_refine = false;
   bool print_params = false;
   std::optional<std::uint64_t> seed;
@@ -86,12 +91,17 @@ struct Side {
   RegistrationInput input;
 };
 
-void load(Side& s, const std::string& path) {
+void load(Side& s, const std::string& path, const std::string& trajectory, const char* option) {
   s.data = readFile(path);
-  if (const auto* d = std::get_if<Dataset>(&s.data))
+  if (!trajectory.empty() && !std::holds_alternative<Dataset>(s.data))
+    throw InputError(std::string(option) + ": " + path + " is a model, not a scan: a trajectory only "
+                     "applies to a mobile scan");
+  if (auto* d = std::get_if<Dataset>(&s.data)) {
+    if (!trajectory.empty()) setSensorOriginsFromTrajectory(*d, readTrajectory(trajectory), trajectory);
     s.input = makeRegistrationInput(*d, RigidTransform());
-  else
+  } else {
     s.input = makeRegistrationInput(std::get<BimModel>(s.data), RigidTransform());
+  }
 }
 
 int run(const RegisterOptions& o) {
@@ -103,8 +113,8 @@ int run(const RegisterOptions& o) {
   if (o.source.empty() || o.target.empty())
     throw InputError("register: SOURCE and TARGET are required (or --print-params)");
   Side src, tgt;
-  load(src, o.source);
-  load(tgt, o.target);
+  load(src, o.source, o.source_trajectory, "--source-trajectory");
+  load(tgt, o.target, o.target_trajectory, "--target-trajectory");
   // Progress on a terminal only (logs stay clean).
   const bool tty = isatty(2);
   Progress progress([tty](double f, std::string_view stage) {
@@ -161,6 +171,12 @@ void addRegisterCommand(CLI::App& app, Action& action) {
   cmd->add_option("--params", opts->params,
                   "Registration parameters (JSON as written by --print-params; any subset of "
                   "its keys); --method, --no-refine and --seed override it")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--source-trajectory", opts->source_trajectory,
+                  "Sensor trajectory of a mobile SOURCE scan without sensor origins (t x y z per line)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--target-trajectory", opts->target_trajectory,
+                  "Sensor trajectory of a mobile TARGET scan without sensor origins (t x y z per line)")
       ->check(CLI::ExistingFile);
   cmd->add_flag("--print-params", opts->print_params,
                 "Write the parameters (defaults, --params, flags) as JSON to stdout and exit");

@@ -9,12 +9,16 @@
 //   ground_truth.json          planes, openings, sharp edges (generated buildings only)
 //   truth.json                 per dataset and per scan: the transform mapping the perturbed
 //                              data back to the model frame ({"matrix": ...} format)
+//   trajectory.txt             the MMS trajectory ("t x y z" per line) in the outdoor dataset
+//                              frame (the model frame unless --perturb-mms), for
+//                              `register --target-trajectory` on files without sensor origins
 // Scanner parameters: --tls-<key> / --mms-<key> for every TlsParams / MmsParams field.
 // Demo pair: plumb-cli simulate --demo -o DIR   (house, a station per room, MMS loop).
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -162,6 +166,23 @@ int run(const Args& a) {
     truth["datasets"].push_back({{"name", d.name}, {"file", file}, {"scans", names}, {"points", points},
                                  {"transform", transform}});
     std::cout << file << ": " << d.data.scans.size() << " scan(s), " << points << " points\n";
+  }
+  if (survey.mms_trajectory) {
+    const Trajectory& traj = *survey.mms_trajectory;
+    RigidTransform model_to_outdoor;
+    for (const auto& d : survey.datasets)
+      if (d.name == "outdoor") model_to_outdoor = d.truth.inverse();
+    writeFileAtomically(out / "trajectory.txt", [&](std::ostream& o) {
+      o.precision(std::numeric_limits<double>::max_digits10);
+      o << "# t x y z: MMS sensor trajectory (s, m), outdoor dataset frame\n";
+      for (std::size_t i = 0; i < traj.times.size(); ++i) {
+        const Eigen::Vector3d p = model_to_outdoor.apply(traj.positions[i]);
+        o << traj.times[i] << " " << p.x() << " " << p.y() << " " << p.z() << "\n";
+      }
+    });
+    truth["trajectory"] = {{"file", "trajectory.txt"}, {"dataset", "outdoor"}, {"samples", traj.times.size()},
+                           {"description", "MMS sensor positions 't x y z' in the outdoor dataset frame"}};
+    std::cout << "trajectory.txt: " << traj.times.size() << " samples, " << traj.duration() << " s\n";
   }
   writeModel(out / "model.ply", model);
   writeModel(out / "model.obj", model);

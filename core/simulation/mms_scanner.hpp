@@ -12,24 +12,15 @@
 #include <Eigen/Core>
 
 #include <cstdint>
-#include <filesystem>
 #include <vector>
 
 #include "common/params.hpp"
 #include "common/progress.hpp"
 #include "model/dataset.hpp"
+#include "model/trajectory.hpp"
 #include "simulation/scan_scene.hpp"
 
 namespace plumb {
-
-/// A timed polyline; the vehicle heading follows the polyline direction.
-struct Trajectory {
-  std::vector<double> times;               ///< s, strictly increasing
-  std::vector<Eigen::Vector3d> positions;  ///< sensor positions, model frame
-  double duration() const { return times.empty() ? 0.0 : times.back() - times.front(); }
-  /// Position and unit horizontal heading at time t (clamped to the ends).
-  void sample(double t, Eigen::Vector3d& position, Eigen::Vector3d& heading) const;
-};
 
 struct MmsParams {
   double speed = 3.0;              ///< m/s, 0.1..40 (used for automatic trajectories)
@@ -50,9 +41,6 @@ struct MmsParams {
 /// params.sensor_height, driven at params.speed starting at time `t0`.
 Trajectory streetTrajectory(const std::vector<Eigen::Vector3d>& outline, const MmsParams& params,
                             double t0 = 0.0);
-/// Reads a trajectory text file: one "t x y z" per line (whitespace or comma separated,
-/// '#' comments). Throws FileError naming the file and the line.
-Trajectory readTrajectory(const std::filesystem::path& path);
 
 /// Simulates the profiler along the whole trajectory. Scan name "mms".
 Scan simulateMms(const ScanScene& scene, const Trajectory& trajectory, const MmsParams& params,

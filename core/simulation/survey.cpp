@@ -48,6 +48,7 @@ SimulatedSurvey simulateSurvey(const BimModel& model, const std::vector<bool>& g
                         ? perturbDataset(outdoor.data, randomPerturbation(r.perturb_yaw_deg, r.perturb_shift_m, r.seed + 2000))
                         : RigidTransform();
     survey.datasets.push_back(std::move(outdoor));
+    survey.mms_trajectory = traj;
   }
   return survey;
 }

@@ -37,6 +37,9 @@ struct SimulatedDataset {
 
 struct SimulatedSurvey {
   std::vector<SimulatedDataset> datasets;
+  /// The trajectory the MMS drove (model frame; request.trajectory or the automatic street
+  /// loop), when it ran.
+  std::optional<Trajectory> mms_trajectory;
 };
 
 /// Scans `model` (glass flags per triangle, may be empty). `outline` is the building outline

@@ -15,32 +15,18 @@
 #include <regex>
 
 #include "cli_runner.hpp"
+#include "demo_truth.hpp"
 #include "support/test_support.hpp"
 
 namespace fs = std::filesystem;
 using plumb::test::CliResult;
+using plumb::test::indoorOutdoorError;
 using plumb::test::plumbCli;
-using plumb::test::readAll;
+using plumb::test::readJson;
+using plumb::test::transformOf;
 using plumb::test::scratchDir;
 
 namespace {
-
-nlohmann::json readJson(const fs::path& p) { return nlohmann::json::parse(readAll(p)); }
-
-Eigen::Isometry3d transformOf(const nlohmann::json& matrix) {
-  Eigen::Matrix4d m;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) m(r, c) = matrix.at(r).at(c).get<double>();
-  return Eigen::Isometry3d(m);
-}
-
-/// truth.json: the transform mapping dataset `name` back to the model frame.
-Eigen::Isometry3d truthOf(const nlohmann::json& truth, const std::string& name) {
-  for (const auto& d : truth.at("datasets"))
-    if (d.at("name") == name) return transformOf(d.at("transform").at("matrix"));
-  ADD_FAILURE() << "truth.json has no dataset '" << name << "'";
-  return Eigen::Isometry3d::Identity();
-}
 
 double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -68,29 +54,17 @@ TEST(CliIndoorOutdoor, DemoIndoorRegistersOntoOutdoor) {
   ASSERT_EQ(reg.exit_code, 0) << reg.err;
   std::printf("simulate %.1f s, register %.1f s\n", t_sim, t_reg);
 
-  // Expected indoor -> outdoor: indoor -> model, then model -> outdoor.
-  const nlohmann::json truth = readJson(dir / "demo" / "truth.json");
-  const Eigen::Isometry3d expected = truthOf(truth, "outdoor").inverse() * truthOf(truth, "indoor");
+  // Against truth.json: rotation, and translation at the building's outline corners.
   const Eigen::Isometry3d T = transformOf(readJson(dir / "T.json").at("matrix"));
-  const double rot_deg =
-      Eigen::AngleAxisd(T.linear() * expected.linear().transpose()).angle() * 180.0 / M_PI;
-
-  // Translation error at the building's outline corners (ground and eaves), in the indoor
-  // frame: the worst place of the whole building, not only its centre.
-  const nlohmann::json gt = readJson(dir / "demo" / "ground_truth.json");
-  const Eigen::Isometry3d model_to_indoor = truthOf(truth, "indoor").inverse();
-  double trans_m = 0.0;
-  for (const auto& v : gt.at("footprint"))
-    for (double z : {0.0, 3.0}) {
-      const Eigen::Vector3d p = model_to_indoor * Eigen::Vector3d(v.at(0).get<double>(), v.at(1).get<double>(), z);
-      trans_m = std::max(trans_m, (T * p - expected * p).norm());
-    }
-  std::printf("rotation error %.4f deg, translation error %.4f m (worst outline corner)\n", rot_deg, trans_m);
-  EXPECT_LT(rot_deg, 0.1);
-  EXPECT_LT(trans_m, 0.02);
-  ASSERT_FALSE(gt.at("footprint").empty());
+  const auto err = indoorOutdoorError(dir / "demo", T);
+  std::printf("rotation error %.4f deg, translation error %.4f m (worst outline corner)\n", err.rotation_deg,
+              err.translation_m);
+  EXPECT_LT(err.rotation_deg, 0.1);
+  EXPECT_LT(err.translation_m, 0.02);
+  ASSERT_GT(err.corners, 0u);
 
   // The report: openings method with the wall thickness measured (not assumed).
+  const nlohmann::json gt = readJson(dir / "demo" / "ground_truth.json");
   const nlohmann::json report = readJson(dir / "R.json");
   EXPECT_TRUE(report.at("success").get<bool>());
   EXPECT_EQ(report.at("method"), "openings");
