@@ -3,9 +3,11 @@
 #include <QFileInfo>
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "ui/layers/feature_layer.hpp"
 #include "ui/layers/scan_layer.hpp"
+#include "ui/tasks/task_manager.hpp"
 
 namespace plumb::ui {
 
@@ -20,18 +22,27 @@ QString datasetName(const Dataset& d) {
 
 DatasetLayer::DatasetLayer(std::shared_ptr<const Dataset> data, const Eigen::Vector3d& origin,
                            std::size_t lod_budget)
+    : DatasetLayer(data, origin, prepareDataset(data), lod_budget) {}
+
+DatasetLayer::DatasetLayer(std::shared_ptr<const Dataset> data, const Eigen::Vector3d& origin,
+                           PreparedDataset prepared, std::size_t lod_budget)
     : Layer(LayerKind::Dataset, datasetName(*data)), data_(std::move(data)) {
+  if (prepared.scans.size() != data_->scans.size())
+    throw std::invalid_argument("prepared display data does not match the dataset");
   const std::size_t total = std::max<std::size_t>(1, data_->pointCount());
   for (std::size_t i = 0; i < data_->scans.size(); ++i) {
     const std::size_t n = data_->scans[i].cloud.size();
     const std::size_t lod = static_cast<std::size_t>(
         static_cast<double>(lod_budget) * static_cast<double>(n) / static_cast<double>(total));
-    addChild(std::make_unique<ScanLayer>(data_, i, origin, std::min(n, std::max<std::size_t>(lod, 1))));
+    addChild(std::make_unique<ScanLayer>(data_, i, origin, std::min(n, std::max<std::size_t>(lod, 1)),
+                                         std::move(prepared.scans[i])));
   }
-  if (std::none_of(data_->scans.begin(), data_->scans.end(),
-                   [](const Scan& s) { return s.cloud.hasColors(); }))
-    style_.mode = PointColorMode::Elevation;
-  setStyle(style_);
+  style_ = prepared.style;  // the prepared colours are this style's
+  for (ScanLayer* s : scans()) s->setPointSize(style_.point_size);
+}
+
+DatasetLayer::~DatasetLayer() {
+  if (coloring_task_) coloring_task_->cancel();
 }
 
 std::vector<ScanLayer*> DatasetLayer::scans() const {
@@ -43,8 +54,52 @@ std::vector<ScanLayer*> DatasetLayer::scans() const {
 
 void DatasetLayer::setStyle(const PointStyle& style) {
   style_ = style;
+  ++style_generation_;
+  coloring_pending_ = false;
+  if (coloring_task_) coloring_task_->cancel();
   const Bounds b = bounds();
   for (ScanLayer* s : scans()) s->setStyle(style_, b.min.z(), b.max.z());
+}
+
+Task* DatasetLayer::requestStyle(const PointStyle& style, TaskManager& tasks,
+                                 std::function<void()> applied) {
+  style_ = style;
+  const std::uint64_t generation = ++style_generation_;
+  coloring_pending_ = true;
+  if (coloring_task_) coloring_task_->cancel();
+  const Bounds b = bounds();
+  std::vector<ScanColorJob> jobs;
+  for (ScanLayer* s : scans()) {
+    s->setPointSize(style_.point_size);
+    jobs.push_back(s->colorJob(style_, b.min.z(), b.max.z()));
+  }
+  std::weak_ptr<char> alive = alive_;
+  coloring_task_ = tasks.run(
+      QObject::tr("Colouring %1").arg(name()),
+      [this, jobs = std::move(jobs), generation, alive,
+       applied = std::move(applied)](Progress& progress) -> Task::Apply {
+        std::size_t total = 0, done = 0;
+        for (const auto& job : jobs) total += job.data->scans[job.scan_index].cloud.size();
+        auto colors = std::make_shared<std::vector<std::vector<Rgba>>>();
+        for (const auto& job : jobs) {
+          const std::size_t n = job.data->scans[job.scan_index].cloud.size();
+          const double scale = 1.0 / static_cast<double>(std::max<std::size_t>(total, 1));
+          Progress sub = progress.sub(static_cast<double>(done) * scale,
+                                      static_cast<double>(done + n) * scale);
+          colors->push_back(job.compute(&sub));
+          done += n;
+        }
+        // On the UI thread: only if the layer still exists and no newer style came since.
+        return [this, colors, generation, alive, applied] {
+          if (alive.expired() || generation != style_generation_) return;
+          const auto list = scans();
+          for (std::size_t i = 0; i < list.size() && i < colors->size(); ++i)
+            list[i]->applyColors(std::move((*colors)[i]));
+          coloring_pending_ = false;
+          if (applied) applied();
+        };
+      });
+  return coloring_task_;
 }
 
 void DatasetLayer::setDistances(std::vector<std::vector<float>> per_scan, double max_distance) {

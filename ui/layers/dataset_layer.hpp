@@ -1,6 +1,10 @@
 #pragma once
 // A loaded point dataset (one file): its scans are child ScanLayers. The dataset carries the
 // registration transform (dataset frame -> world) and the point style of all its scans.
+#include <QPointer>
+
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -8,25 +12,43 @@
 #include "model/dataset.hpp"
 #include "ui/layers/layer.hpp"
 #include "ui/layers/point_style.hpp"
+#include "ui/layers/prepared_dataset.hpp"
 
 namespace plumb::ui {
 
 class ScanLayer;
+class Task;
+class TaskManager;
 
 class DatasetLayer : public Layer {
  public:
   /// Points drawn per dataset while the camera moves (split among scans by size).
   static constexpr std::size_t kLodPointBudget = 1'500'000;
 
+  /// Builds the display data on this thread (prepareDataset): for small data and tests.
   DatasetLayer(std::shared_ptr<const Dataset> data, const Eigen::Vector3d& origin,
                std::size_t lod_budget = kLodPointBudget);
+  /// Wraps display data prepared off the UI thread (prepareDataset of `data`).
+  DatasetLayer(std::shared_ptr<const Dataset> data, const Eigen::Vector3d& origin,
+               PreparedDataset prepared, std::size_t lod_budget = kLodPointBudget);
+  ~DatasetLayer() override;
 
   const Dataset& dataset() const { return *data_; }
   std::shared_ptr<const Dataset> sharedDataset() const { return data_; }
   std::vector<ScanLayer*> scans() const;
 
+  /// The style last set or requested (the colours may still be computing: coloringPending).
   const PointStyle& style() const { return style_; }
+  /// Recolours every scan now, on this thread. Supersedes a pending requestStyle.
   void setStyle(const PointStyle& style);
+  /// Recolours in a background task of `tasks`: the point size and style() change now, the old
+  /// colours stay shown until the new ones are swapped in on the UI thread, then `applied`
+  /// runs (e.g. to render). A newer request (or setStyle) supersedes an older one: the older
+  /// task is cancelled and its result never shown. Returns the task.
+  Task* requestStyle(const PointStyle& style, TaskManager& tasks,
+                     std::function<void()> applied = {});
+  /// A requested style's colours are not shown yet.
+  bool coloringPending() const { return coloring_pending_; }
   /// Names of the scalar fields present in any scan.
   std::vector<std::string> scalarFieldNames() const;
 
@@ -51,6 +73,10 @@ class DatasetLayer : public Layer {
   RigidTransform transform_;
   bool shows_transform_ = true;
   bool has_distances_ = false;
+  std::uint64_t style_generation_ = 0;  ///< bumped by every setStyle / requestStyle
+  bool coloring_pending_ = false;
+  QPointer<Task> coloring_task_;
+  std::shared_ptr<char> alive_ = std::make_shared<char>();  ///< expires with this layer
 };
 
 }  // namespace plumb::ui

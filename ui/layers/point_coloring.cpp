@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace plumb::ui {
 
 PointColorMode effectiveMode(const PointCloud& cloud, const PointStyle& style) {
@@ -23,21 +26,32 @@ PointColorMode effectiveMode(const PointCloud& cloud, const PointStyle& style) {
 
 namespace {
 
+/// out[i] = color(i) for every i, in parallel (each element on its own: deterministic).
+template <class F>
+void fillEach(std::span<Rgb> out, const F& color) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), std::size_t{1} << 14),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) out[i] = color(i);
+                    });
+}
+
 void fillFromValues(std::span<const float> values, double lo, double hi, RampKind ramp,
                     std::span<Rgb> out) {
   if (!(hi > lo)) std::tie(lo, hi) = robustRange(values);
   const double scale = 1.0 / (hi - lo);
-  for (std::size_t i = 0; i < out.size(); ++i)
-    out[i] = rampColor(ramp, (static_cast<double>(values[i]) - lo) * scale);
+  fillEach(out, [&](std::size_t i) {
+    return rampColor(ramp, (static_cast<double>(values[i]) - lo) * scale);
+  });
 }
 
 }  // namespace
 
 void fillDistanceColors(std::span<const float> distances, double max_distance, std::span<Rgb> out) {
   const double scale = max_distance > 0 ? 1.0 / max_distance : 1.0;
-  for (std::size_t i = 0; i < out.size(); ++i)
-    out[i] = std::isfinite(distances[i]) ? rampColor(RampKind::Distance, distances[i] * scale)
-                                         : Rgb{190, 190, 190};
+  fillEach(out, [&](std::size_t i) {
+    return std::isfinite(distances[i]) ? rampColor(RampKind::Distance, distances[i] * scale)
+                                       : Rgb{190, 190, 190};
+  });
 }
 
 void fillPointColors(const PointCloud& cloud, const PointColoring& c, std::span<Rgb> out) {
@@ -61,10 +75,10 @@ void fillPointColors(const PointCloud& cloud, const PointColoring& c, std::span<
   const double z0 = c.elevation_row.head<3>().dot(cloud.offset) + c.elevation_row[3];
   const Eigen::Vector3f row = c.elevation_row.head<3>().cast<float>();
   const double scale = c.z_max > c.z_min ? 1.0 / (c.z_max - c.z_min) : 1.0;
-  for (std::size_t i = 0; i < out.size(); ++i) {
+  fillEach(out, [&](std::size_t i) {
     const double z = z0 + static_cast<double>(row.dot(cloud.positions[i]));
-    out[i] = rampColor(RampKind::Viridis, (z - c.z_min) * scale);
-  }
+    return rampColor(RampKind::Viridis, (z - c.z_min) * scale);
+  });
 }
 
 }  // namespace plumb::ui

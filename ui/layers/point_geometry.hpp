@@ -31,16 +31,22 @@ std::vector<std::uint32_t> randomOrder(std::size_t n, std::uint32_t seed);
 class PermutedPoints {
  public:
   PermutedPoints() = default;
-  /// Permutes `cloud` with the random order of `seed` (deterministic).
+  /// Permutes `cloud` with the random order of `seed` (deterministic; thread safe: build it off
+  /// the UI thread, only prefix() makes VTK objects). Colours start white.
   PermutedPoints(const PointCloud& cloud, std::uint32_t seed);
 
   std::size_t size() const { return positions_.size(); }
   /// Cloud index of each vertex (vertex ids of any prefix poly data map back through this);
   /// computed on demand, O(size).
   std::vector<std::uint32_t> originalIndices() const { return randomOrder(size(), seed_); }
-  /// Colours in cloud order -> the permuted colour buffer (opaque). Aliasing poly data must be
-  /// marked modified by the caller (touchColors).
-  void setColors(std::span<const Rgb> cloud_order);
+  /// Replaces the colour buffer by `permuted` (this object's order: see permuteColors); false
+  /// (nothing changed) when its size differs. Poly data aliasing the old buffer must be
+  /// re-bound with bindColors before the next render.
+  bool setColors(std::vector<Rgba> permuted);
+  /// Points the colour array of `poly` (a prefix of this object) at the current colour buffer
+  /// and marks it modified (the mapper re-uploads the colours only).
+  void bindColors(vtkPolyData* poly) const;
+  std::uint32_t seed() const { return seed_; }
   /// Poly data of the first k points (clamped to size()): arrays alias this object's buffers,
   /// which must outlive it. One poly-vertex cell over its k points.
   vtkSmartPointer<vtkPolyData> prefix(std::size_t k) const;
@@ -52,8 +58,9 @@ class PermutedPoints {
   std::vector<std::int32_t> iota_;
 };
 
-/// Tells VTK that the colours a prefix poly data aliases changed (re-upload on next render).
-void touchColors(vtkPolyData* poly);
+/// Colours in cloud order -> opaque RGBA in the random order of `seed` (that of a
+/// PermutedPoints of as many points with that seed). Thread safe; parallel (TBB).
+std::vector<Rgba> permuteColors(std::span<const Rgb> cloud_order, std::uint32_t seed);
 
 /// An RGB colour array of n tuples named "colors".
 vtkSmartPointer<vtkUnsignedCharArray> makeColorArray(std::size_t n);

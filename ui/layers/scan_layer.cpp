@@ -37,15 +37,15 @@ void setupActor(vtkActor* actor, vtkPolyDataMapper* mapper, vtkPolyData* poly) {
 }  // namespace
 
 ScanLayer::ScanLayer(std::shared_ptr<const Dataset> data, std::size_t scan_index,
-                     const Eigen::Vector3d& origin, std::size_t lod_points)
+                     const Eigen::Vector3d& origin, std::size_t lod_points,
+                     PreparedScan prepared)
     : Layer(LayerKind::Scan, QString::fromStdString(data->scans.at(scan_index).name)),
       data_(std::move(data)),
       scan_index_(scan_index),
-      origin_(origin) {
+      origin_(origin),
+      points_(std::move(prepared.points)),
+      local_bounds_(prepared.local_bounds) {
   const PointCloud& cloud = scan().cloud;
-  for (const auto& p : cloud.positions)
-    if (p.allFinite()) local_bounds_.extend(p.cast<double>());
-  points_ = PermutedPoints(cloud, static_cast<std::uint32_t>(scan_index_));
   setupActor(still_actor_, still_mapper_, nullptr);
   setupActor(moving_actor_, moving_mapper_, nullptr);
   setStillPointCount(cloud.size());
@@ -100,33 +100,34 @@ void ScanLayer::setDatasetTransform(const RigidTransform& t) {
 }
 
 void ScanLayer::setStyle(const PointStyle& style, double z_min, double z_max) {
-  const PointCloud& cloud = scan().cloud;
-  PointColoring coloring;
-  coloring.style = style;
-  coloring.scan_index = scan_index_;
-  // Elevation row acts on (offset + local): world z of the scan-frame point.
-  const Eigen::Matrix4d to_world = dataset_transform_.matrix() * scan().pose.matrix();
-  coloring.elevation_row = to_world.row(2).transpose();
-  coloring.z_min = z_min;
-  coloring.z_max = z_max;
+  applyColors(colorJob(style, z_min, z_max).compute());
+  setPointSize(style.point_size);
+}
 
-  std::vector<Rgb> colors(cloud.size());  // cloud order (transient: 3 bytes per point)
-  if (style.mode == PointColorMode::Distance && distances_.size() == cloud.size()) {
-    fillDistanceColors(distances_, distance_max_, colors);
-  } else {
-    if (style.mode == PointColorMode::Distance) coloring.style.mode = PointColorMode::Elevation;
-    fillPointColors(cloud, coloring, colors);
-  }
-  points_.setColors(colors);
-  touchColors(still_poly_);
-  touchColors(moving_poly_);
-  still_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
-  moving_actor_->GetProperty()->SetPointSize(static_cast<float>(style.point_size));
+ScanColorJob ScanLayer::colorJob(const PointStyle& style, double z_min, double z_max) const {
+  return makeScanColorJob(data_, scan_index_, dataset_transform_, style, z_min, z_max,
+                          distances_, distance_max_);
+}
+
+void ScanLayer::applyColors(std::vector<Rgba> permuted) {
+  if (!points_.setColors(std::move(permuted))) return;
+  points_.bindColors(still_poly_);
+  points_.bindColors(moving_poly_);
+}
+
+void ScanLayer::setPointSize(double pixels) {
+  still_actor_->GetProperty()->SetPointSize(static_cast<float>(pixels));
+  moving_actor_->GetProperty()->SetPointSize(static_cast<float>(pixels));
 }
 
 void ScanLayer::setDistances(std::vector<float> distances, double max_distance) {
-  distances_ = std::move(distances);
+  distances_ = std::make_shared<const std::vector<float>>(std::move(distances));
   distance_max_ = max_distance > 0 ? max_distance : 1.0;
+}
+
+const std::vector<float>& ScanLayer::distances() const {
+  static const std::vector<float> none;
+  return distances_ ? *distances_ : none;
 }
 
 std::vector<vtkProp*> ScanLayer::props() const { return {still_actor_, moving_actor_}; }

@@ -17,6 +17,8 @@
 #include "ui/layers/layer.hpp"
 #include "ui/layers/point_coloring.hpp"
 #include "ui/layers/point_geometry.hpp"
+#include "ui/layers/prepared_dataset.hpp"
+#include "ui/layers/scan_colors.hpp"
 
 class vtkActor;
 class vtkPolyData;
@@ -27,9 +29,10 @@ namespace plumb::ui {
 class ScanLayer : public Layer {
  public:
   /// `data` must hold scan `scan_index`; `lod_points` is the moving subset's size. The still
-  /// subset starts as the whole scan.
+  /// subset starts as the whole scan. `prepared` holds the scan's points in their random order
+  /// (built off the UI thread, see prepareDataset): the layer's VTK arrays wrap its buffers.
   ScanLayer(std::shared_ptr<const Dataset> data, std::size_t scan_index,
-            const Eigen::Vector3d& origin, std::size_t lod_points);
+            const Eigen::Vector3d& origin, std::size_t lod_points, PreparedScan prepared);
   ~ScanLayer() override;
 
   const Scan& scan() const { return data_->scans[scan_index_]; }
@@ -50,11 +53,18 @@ class ScanLayer : public Layer {
 
   /// Dataset frame -> world (a registration result; identity by default).
   void setDatasetTransform(const RigidTransform& t);
-  /// Recolours both representations. z range is world elevation for the Elevation mode.
+  /// Recolours both representations now (on this thread: colorJob + applyColors). z range is
+  /// world elevation for the Elevation mode.
   void setStyle(const PointStyle& style, double z_min, double z_max);
+  /// What setStyle computes, as a thread-safe job (for a background task).
+  ScanColorJob colorJob(const PointStyle& style, double z_min, double z_max) const;
+  /// Shows colours computed by colorJob (random order; ignored when the size differs): swaps
+  /// the buffer and re-points both actors' colour arrays at it (only colours re-upload).
+  void applyColors(std::vector<Rgba> permuted);
+  void setPointSize(double pixels);
   /// Per-point distances (Distance colour mode), ramp over [0, max_distance]; NaN drawn grey.
   void setDistances(std::vector<float> distances, double max_distance);
-  const std::vector<float>& distances() const { return distances_; }
+  const std::vector<float>& distances() const;
   /// Scan points -> world.
   Eigen::Matrix4d localToWorld() const;
 
@@ -86,7 +96,7 @@ class ScanLayer : public Layer {
   vtkNew<vtkPolyDataMapper> moving_mapper_;
   vtkNew<vtkActor> still_actor_;
   vtkNew<vtkActor> moving_actor_;
-  std::vector<float> distances_;
+  std::shared_ptr<const std::vector<float>> distances_;  ///< shared with colour jobs
   double distance_max_ = 1.0;
   bool reduced_ = false;
   bool shown_ = true;

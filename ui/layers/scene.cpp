@@ -42,9 +42,23 @@ void Scene::ensureOrigin(const Bounds& b) {
 }
 
 DatasetLayer& Scene::addDataset(std::shared_ptr<const Dataset> data) {
-  ensureOrigin(data->bounds());
-  return static_cast<DatasetLayer&>(
-      adopt(std::make_unique<DatasetLayer>(std::move(data), origin()), nullptr));
+  PreparedDataset prepared = prepareDataset(data);
+  return addDataset(std::move(data), std::move(prepared));
+}
+
+DatasetLayer& Scene::addDataset(std::shared_ptr<const Dataset> data, PreparedDataset prepared) {
+  ensureOrigin(prepared.bounds);
+  return static_cast<DatasetLayer&>(adopt(
+      std::make_unique<DatasetLayer>(std::move(data), origin(), std::move(prepared)), nullptr));
+}
+
+void Scene::requestStyle(DatasetLayer& layer, const PointStyle& style) {
+  if (tasks_) {
+    layer.requestStyle(style, *tasks_, [this] { emit renderNeeded(); });
+  } else {
+    layer.setStyle(style);
+  }
+  emit renderNeeded();  // point size now; the colours when they are in
 }
 
 ModelLayer& Scene::addModel(std::shared_ptr<const BimModel> model) {

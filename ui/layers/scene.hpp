@@ -14,6 +14,8 @@
 #include "model/dataset.hpp"
 #include "model/feature_set.hpp"
 #include "ui/layers/layer.hpp"
+#include "ui/layers/point_style.hpp"
+#include "ui/layers/prepared_dataset.hpp"
 
 class vtkRenderer;
 
@@ -22,6 +24,7 @@ namespace plumb::ui {
 class DatasetLayer;
 class ModelLayer;
 class FeatureLayer;
+class TaskManager;
 
 /// What a click in the view hit.
 struct PickResult {
@@ -39,7 +42,17 @@ class Scene : public QObject {
   /// World position of render (0,0,0); fixed by the first layer added.
   Eigen::Vector3d origin() const { return origin_.value_or(Eigen::Vector3d::Zero()); }
 
+  /// Adds a dataset, building its display data on this thread (small data, tests).
   DatasetLayer& addDataset(std::shared_ptr<const Dataset> data);
+  /// Adds a dataset whose display data was prepared off the UI thread (prepareDataset):
+  /// only the VTK objects wrapping it are made here.
+  DatasetLayer& addDataset(std::shared_ptr<const Dataset> data, PreparedDataset prepared);
+  /// Background tasks for recolouring (requestStyle); null: recolour on the UI thread.
+  void setTaskManager(TaskManager* tasks) { tasks_ = tasks; }
+  TaskManager* taskManager() const { return tasks_; }
+  /// Changes a dataset's style: in a background task of taskManager() when set (the view
+  /// renders when the new colours are in), else now. Emits renderNeeded.
+  void requestStyle(DatasetLayer& layer, const PointStyle& style);
   ModelLayer& addModel(std::shared_ptr<const BimModel> model);
   /// Adds features as a child of `parent` (a dataset or model layer) or at the root.
   FeatureLayer& addFeatures(QString name, std::shared_ptr<const FeatureSet> features,
@@ -98,6 +111,7 @@ class Scene : public QObject {
   bool moving_ = false;
   std::size_t lod_budget_;
   std::size_t still_budget_ = kFullDetail;
+  TaskManager* tasks_ = nullptr;
 };
 
 }  // namespace plumb::ui

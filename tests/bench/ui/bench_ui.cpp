@@ -8,6 +8,13 @@
 //                  still budget (target LodController::kStillTargetMs) is learned from them;
 //                  larger subsets follow in later frames while a frame was well under target
 //   forced full  : "Full detail when still" on: the still frame draws every point
+//   add/colour   : adding the layer and a colour mode change. "all on the UI thread": the
+//                  synchronous calls (Scene::addDataset(data), DatasetLayer::setStyle). As the
+//                  application does them: the display data prepared in a background task
+//                  (prepareDataset, timed alone), then only the VTK wrapping on the UI thread;
+//                  the colours computed in a TaskManager task (DatasetLayer::requestStyle), the
+//                  UI thread's event loop timed by a 5 ms QTimer meanwhile (longest gap
+//                  between its ticks = longest UI freeze)
 //   switch       : UI-thread time of the switches moving <-> still (LodController::startMoving
 //                  and showStill: subset changes, before any frame), and the first frame after
 //                  each switch against the next frame (the difference is the upload)
@@ -46,7 +53,11 @@
 
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/point_style.hpp"
+#include "ui/layers/prepared_dataset.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/tasks/add_dataset.hpp"
+#include "ui/tasks/stall_meter.hpp"
+#include "ui/tasks/task_manager.hpp"
 #include "ui/view/lod_budget.hpp"
 #include "ui/view/lod_controller.hpp"
 #include "ui/view/standard_view.hpp"
@@ -212,6 +223,69 @@ std::string glRenderer(plumb::ui::VtkViewWidget& view) {
   return out;
 }
 
+/// Longest freeze of the UI thread (5 ms timer) while `busy()`, the event loop running.
+template <class Busy>
+double longestStallMs(const Busy& busy) {
+  plumb::ui::StallMeter meter(5);
+  while (busy()) QApplication::processEvents(QEventLoop::WaitForMoreEvents, 5);
+  return meter.longestMs();
+}
+
+double msSince(const QElapsedTimer& t) { return static_cast<double>(t.nsecsElapsed()) / 1e6; }
+
+/// Adding and recolouring a layer: all on the UI thread vs as the application does it.
+struct AddTimes {
+  double sync_add = 0, sync_style = 0;        ///< all on the UI thread
+  double prepare = 0, wrap = 0;               ///< background preparation, UI-thread wrapping
+  double bg_add_total = 0, bg_add_stall = 0;  ///< addDatasetInBackground
+  double bg_style_total = 0, bg_style_request = 0, bg_style_stall = 0;  ///< requestStyle
+};
+
+AddTimes measureAdding(vtkRenderer* renderer, const std::shared_ptr<const plumb::Dataset>& data) {
+  AddTimes t;
+  plumb::ui::PointStyle elevation;
+  elevation.mode = plumb::ui::PointColorMode::Elevation;
+  {
+    plumb::ui::Scene scene(renderer);
+    QElapsedTimer clock;
+    clock.start();
+    auto& layer = scene.addDataset(data);
+    t.sync_add = msSince(clock);
+    clock.restart();
+    layer.setStyle(elevation);
+    t.sync_style = msSince(clock);
+  }
+  {
+    plumb::ui::Scene scene(renderer);
+    QElapsedTimer clock;
+    clock.start();
+    plumb::ui::PreparedDataset prepared = plumb::ui::prepareDataset(data);
+    t.prepare = msSince(clock);
+    clock.restart();
+    scene.addDataset(data, std::move(prepared));
+    t.wrap = msSince(clock);
+  }
+  {
+    plumb::ui::Scene scene(renderer);
+    plumb::ui::TaskManager tasks;
+    scene.setTaskManager(&tasks);
+    plumb::ui::DatasetLayer* layer = nullptr;
+    QElapsedTimer clock;
+    clock.start();
+    plumb::ui::addDatasetInBackground(tasks, scene, data,
+                                      [&layer](plumb::ui::DatasetLayer& l) { layer = &l; });
+    t.bg_add_stall = longestStallMs([&] { return tasks.runningCount() > 0; });
+    t.bg_add_total = msSince(clock);
+    if (!layer) return t;
+    clock.restart();
+    scene.requestStyle(*layer, elevation);
+    t.bg_style_request = msSince(clock);
+    t.bg_style_stall = longestStallMs([&] { return layer->coloringPending(); });
+    t.bg_style_total = msSince(clock);
+  }
+  return t;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -325,6 +399,16 @@ int main(int argc, char** argv) {
     std::printf("  %10s | memory: %.0f MB resident with the cloud, +%.0f MB with its layer after "
                 "a full frame; adding the layer %.0f ms, a colour mode change %.0f ms\n", "", rss_data,
                 rss_layer - rss_data, add_ms, style_ms);
+    {
+      const AddTimes a = measureAdding(view.renderer(), data);
+      std::printf("  %10s | add layer: all on the UI thread %.0f ms; background prepare %.0f ms + "
+                  "UI-thread wrap %.1f ms; addDatasetInBackground total %.0f ms, longest UI "
+                  "stall %.1f ms\n", "", a.sync_add, a.prepare, a.wrap, a.bg_add_total,
+                  a.bg_add_stall);
+      std::printf("  %10s | colour mode: all on the UI thread %.0f ms; requestStyle total %.0f ms, "
+                  "UI thread %.1f ms to request, longest UI stall %.1f ms\n", "", a.sync_style,
+                  a.bg_style_total, a.bg_style_request, a.bg_style_stall);
+    }
     std::vector<double> to_still_ms;
     for (const auto& s : stills) to_still_ms.push_back(s.switch_ms);
     std::printf("  %10s | switch to moving: %s ms UI (first moving frame %s ms, next %s ms); "
