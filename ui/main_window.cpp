@@ -45,6 +45,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setCentralWidget(view);
   auto* scene = new Scene(view->renderer(), this);
   auto* tasks = new TaskManager(this);
+  scene->setTaskManager(tasks);  // recolouring runs as a background task
   auto* log = new LogPanel(this);
   auto* tree = new LayerTreePanel(*scene, this);
   auto* properties = new PropertiesPanel(*scene, this);

@@ -65,8 +65,8 @@ void PointStyleEditor::apply() {
   s.mode = static_cast<PointColorMode>(mode_->currentIndex());
   s.scalar_field = field_->currentText().toStdString();
   s.point_size = size_->value();
-  layer_->setStyle(s);
-  scene_.layerChanged(layer_);
+  // Point size at once; colours computed in a background task (the old ones stay meanwhile).
+  scene_.requestStyle(*layer_, s);
 }
 
 }  // namespace plumb::ui

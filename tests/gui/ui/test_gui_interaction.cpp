@@ -7,6 +7,7 @@
 // reported in the status bar) unless View > Full detail when still is on.
 // Screenshots are saved under <build>/test-artifacts/gui_interaction/.
 #include <QApplication>
+#include <QComboBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QLabel>
@@ -34,6 +35,7 @@
 #include "ui/layers/layer_transform.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/main_window.hpp"
+#include "ui/panels/layer_tree_panel.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/panels/properties_panel.hpp"
 #include "ui/registration/manual_align_panel.hpp"
@@ -200,6 +202,30 @@ class GuiInteractionTest : public QObject {
     entry->trigger();
     QVERIFY(idle.wait(30000));
     QCOMPARE(app.scene.layers().size(), std::size_t{2});
+  }
+
+  void colourModeFromThePropertiesPanelRecoloursInTheBackground() {
+    AppContext& app = window_->context();
+    const auto dir = test::scratchDir("gui_interaction_style");
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    window_->openFiles({q(writeGridPly(dir / "red_style.ply", 61, 255, 0, 0))});
+    QVERIFY(idle.wait(30000));
+    auto* layer = static_cast<DatasetLayer*>(app.scene.layers().at(0).get());
+    applyStandardView(app.view.renderer(), StandardView::Top);
+    QVERIFY(test::countColor(grabView(app.view), QColor(255, 0, 0)) > 500);
+    // Select the layer in the tree: the properties panel shows its point style editor.
+    app.layers.setCurrentLayer(layer);
+    auto* mode = app.properties.findChild<QComboBox*>("colorMode");
+    QVERIFY(mode);
+    QVERIFY(mode->isVisibleTo(&app.properties));
+    mode->setCurrentIndex(static_cast<int>(PointColorMode::Elevation));
+    QCOMPARE(layer->style().mode, PointColorMode::Elevation);
+    QTRY_VERIFY_WITH_TIMEOUT(!layer->coloringPending(), 30000);
+    // A flat grid in elevation colours: one ramp colour, no red left.
+    QCOMPARE(test::countColor(grabView(app.view), QColor(255, 0, 0)), 0);
+    mode->setCurrentIndex(static_cast<int>(PointColorMode::Rgb));
+    QTRY_VERIFY_WITH_TIMEOUT(!layer->coloringPending(), 30000);
+    QVERIFY(test::countColor(grabView(app.view), QColor(255, 0, 0)) > 500);
   }
 
   void savesAndOpensProjectsAndScreenshotsThroughTheMenu() {
