@@ -36,7 +36,8 @@ deps() {
 }
 
 build() {
-  cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  # The desktop app and its GUI tests are part of every build (a cached OFF must not drop them).
+  cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPLUMB_BUILD_UI=ON
   cmake --build "$BUILD" -j "$JOBS"
 }
 
