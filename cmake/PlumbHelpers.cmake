@@ -13,10 +13,10 @@ function(plumb_core_module name)
   set_property(GLOBAL APPEND PROPERTY PLUMB_CORE_MODULES plumb_${name})
 endfunction()
 
-# plumb_add_test(NAME SOURCES files... LIBS targets... [LABELS labels...] [TIMEOUT s])
+# plumb_add_test(NAME SOURCES files... LIBS targets... [LABELS labels...] [TIMEOUT s] [RUNS_CLI])
 # A GoogleTest executable registered with CTest, one CTest test per gtest case.
 function(plumb_add_test name)
-  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "RUNS_CLI" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 300)
   endif()
@@ -26,6 +26,11 @@ function(plumb_add_test name)
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main plumb_test_support)
   target_compile_options(${name} PRIVATE -Wall -Wextra)
+  if(ARG_RUNS_CLI)
+    # End-to-end tests of the real executable (tests/support/cli_runner.hpp).
+    target_compile_definitions(${name} PRIVATE PLUMB_CLI_PATH="$<TARGET_FILE:plumb-cli>")
+    add_dependencies(${name} plumb-cli)
+  endif()
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
     PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT ${ARG_TIMEOUT}
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})

@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <regex>
 
-#include "cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "demo_truth.hpp"
 #include "support/test_support.hpp"
 

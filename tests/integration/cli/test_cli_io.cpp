@@ -2,48 +2,32 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
-#include <sys/wait.h>
+#include <algorithm>
 
+#include "support/cli_runner.hpp"
 #include "support/test_support.hpp"
 
 namespace fs = std::filesystem;
+using plumb::test::CliResult;
+using plumb::test::plumbCli;
 using plumb::test::readAll;
 using plumb::test::scratchDir;
 using plumb::test::sharedData;
+using plumb::test::shellQuote;
 using plumb::test::writeAll;
 
 namespace {
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string quote(const std::string& s) { return "'" + s + "'"; }
-
-CliRun cli(const std::string& args, const fs::path& dir) {
-  const fs::path err = dir / "stderr.txt";
-  const std::string cmd = std::string(PLUMB_CLI_PATH) + " " + args + " 2>" + quote(err.string());
-  CliRun r;
-  FILE* p = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf;
-  while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = readAll(err);
-  return r;
-}
-
 std::size_t lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
 }  // namespace
 
 TEST(CliInfo, TextBlocksPerFile) {
   const auto dir = scratchDir("cli_info");
-  const CliRun r = cli(quote(sharedData("pcd/room_scan1.pcd")) + " " + quote(sharedData("ifc/duplex.ifc")), dir);
-  EXPECT_NE(r.code, 0) << "usage without subcommand must fail";  // CLI11 usage error code
-  const CliRun i = cli("info " + quote(sharedData("pcd/room_scan1.pcd")) + " " + quote(sharedData("ifc/duplex.ifc")), dir);
-  ASSERT_EQ(i.code, 0) << i.err;
+  const CliResult r = plumbCli(dir, shellQuote(sharedData("pcd/room_scan1.pcd")) + " " +
+                                        shellQuote(sharedData("ifc/duplex.ifc")));
+  EXPECT_NE(r.exit_code, 0) << "usage without subcommand must fail";  // CLI11 usage error code
+  const CliResult i = plumbCli(dir, "info " + shellQuote(sharedData("pcd/room_scan1.pcd")) + " " +
+                                        shellQuote(sharedData("ifc/duplex.ifc")));
+  ASSERT_EQ(i.exit_code, 0) << i.err;
   EXPECT_NE(i.out.find("room_scan1.pcd\n  format:    pcd\n  scans:     1\n  points:    112586\n"), std::string::npos) << i.out;
   EXPECT_NE(i.out.find("    IfcWall: 57\n"), std::string::npos) << i.out;
   EXPECT_NE(i.out.find("  bounds:    min -13.7998 -6.4928 -1.3517"), std::string::npos) << i.out;
@@ -53,10 +37,10 @@ TEST(CliInfo, TextBlocksPerFile) {
 TEST(CliInfo, JsonAndPartialFailure) {
   const auto dir = scratchDir("cli_info_json");
   writeAll(dir / "empty.ply", "");
-  const CliRun r = cli("info --json " + quote(sharedData("pcd/capture0001.pcd")) + " " + quote((dir / "empty.ply").string()) +
-                        " " + quote(sharedData("ifc/tested_sample_project.ifc")),
-                    dir);
-  EXPECT_EQ(r.code, 1);  // one file failed
+  const CliResult r = plumbCli(dir, "info --json " + shellQuote(sharedData("pcd/capture0001.pcd")) +
+                                        " " + shellQuote((dir / "empty.ply").string()) + " " +
+                                        shellQuote(sharedData("ifc/tested_sample_project.ifc")));
+  EXPECT_EQ(r.exit_code, 1);  // one file failed
   EXPECT_EQ(lines(r.err), 1u) << r.err;
   EXPECT_NE(r.err.find("empty.ply: file is empty"), std::string::npos) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -74,12 +58,12 @@ TEST(CliConvert, PcdToPlyWithTransform) {
   const auto dir = scratchDir("cli_convert");
   writeAll(dir / "t.json", R"({"matrix": [[1,0,0,100],[0,1,0,-50],[0,0,1,2],[0,0,0,1]]})");
   const auto out = dir / "room.ply";
-  CliRun r = cli("convert " + quote(sharedData("pcd/room_scan1.pcd")) + " " + quote(out.string()) + " --transform " +
-                  quote((dir / "t.json").string()),
-              dir);
-  ASSERT_EQ(r.code, 0) << r.err;
-  r = cli("info --json " + quote(out.string()), dir);
-  ASSERT_EQ(r.code, 0) << r.err;
+  CliResult r = plumbCli(dir, "convert " + shellQuote(sharedData("pcd/room_scan1.pcd")) + " " +
+                                  shellQuote(out.string()) + " --transform " +
+                                  shellQuote((dir / "t.json").string()));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = plumbCli(dir, "info --json " + shellQuote(out.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out)[0];
   EXPECT_EQ(j["points"], 112586);
   EXPECT_NEAR(j["bounds"]["min"][0].get<double>(), -13.7998 + 100, 1e-3);
@@ -92,21 +76,23 @@ TEST(CliConvert, FailureNeverDestroysExistingOutput) {
   const auto out = dir / "out.ply";
   writeAll(out, "precious");
   writeAll(dir / "bad.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 5\nHEIGHT 1\nPOINTS 5\nDATA binary\nxx");
-  CliRun r = cli("convert " + quote((dir / "bad.pcd").string()) + " " + quote(out.string()), dir);
-  EXPECT_NE(r.code, 0);
+  CliResult r = plumbCli(
+      dir, "convert " + shellQuote((dir / "bad.pcd").string()) + " " + shellQuote(out.string()));
+  EXPECT_NE(r.exit_code, 0);
   EXPECT_EQ(lines(r.err), 1u) << r.err;
   EXPECT_NE(r.err.find("bad.pcd: truncated data: expected 5 points"), std::string::npos) << r.err;
   EXPECT_EQ(readAll(out), "precious");
   writeAll(dir / "t.json", R"({"matrix": [[2,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]})");  // not rigid
-  r = cli("convert " + quote(sharedData("pcd/room_scan1.pcd")) + " " + quote(out.string()) + " --transform " +
-              quote((dir / "t.json").string()),
-          dir);
-  EXPECT_NE(r.code, 0);
+  r = plumbCli(dir, "convert " + shellQuote(sharedData("pcd/room_scan1.pcd")) + " " +
+                        shellQuote(out.string()) + " --transform " +
+                        shellQuote((dir / "t.json").string()));
+  EXPECT_NE(r.exit_code, 0);
   EXPECT_EQ(readAll(out), "precious");
   const auto obj = dir / "out.obj";
   writeAll(obj, "precious");
-  r = cli("convert " + quote(sharedData("pcd/room_scan1.pcd")) + " " + quote(obj.string()), dir);
-  EXPECT_NE(r.code, 0);
+  r = plumbCli(dir, "convert " + shellQuote(sharedData("pcd/room_scan1.pcd")) + " " +
+                        shellQuote(obj.string()));
+  EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("out.obj: cannot write a point cloud as OBJ"), std::string::npos) << r.err;
   EXPECT_EQ(readAll(obj), "precious");
   for (const auto& e : fs::directory_iterator(dir))  // no temporary files left
@@ -115,20 +101,23 @@ TEST(CliConvert, FailureNeverDestroysExistingOutput) {
 
 TEST(CliConvert, SplitScansAndModels) {
   const auto dir = scratchDir("cli_convert_split");
-  CliRun r = cli("convert --split " + quote(sharedData("e57/A_B.e57")) + " " + quote((dir / "s.ply").string()), dir);
-  ASSERT_EQ(r.code, 0) << r.err;
+  CliResult r = plumbCli(dir, "convert --split " + shellQuote(sharedData("e57/A_B.e57")) + " " +
+                                  shellQuote((dir / "s.ply").string()));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir / "s_0_B2_-_Cloud.ply"));
   EXPECT_TRUE(fs::exists(dir / "s_1_A4_-_Cloud.ply"));
-  r = cli("info --json " + quote((dir / "s_1_A4_-_Cloud.ply").string()), dir);
+  r = plumbCli(dir, "info --json " + shellQuote((dir / "s_1_A4_-_Cloud.ply").string()));
   EXPECT_EQ(nlohmann::json::parse(r.out)[0]["points"], 4);
-  r = cli("convert " + quote(sharedData("ifc/duplex.ifc")) + " " + quote((dir / "duplex.ply").string()), dir);
-  ASSERT_EQ(r.code, 0) << r.err;
-  r = cli("info --json " + quote((dir / "duplex.ply").string()), dir);
+  r = plumbCli(dir, "convert " + shellQuote(sharedData("ifc/duplex.ifc")) + " " +
+                        shellQuote((dir / "duplex.ply").string()));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = plumbCli(dir, "info --json " + shellQuote((dir / "duplex.ply").string()));
   const auto j = nlohmann::json::parse(r.out)[0];
   EXPECT_EQ(j["element_types"]["IfcWall"], 57);
   EXPECT_EQ(j["element_types"]["IfcDoor"], 14);
-  r = cli("convert " + quote(sharedData("ifc/AC20-FZK-Haus.ifc")) + " " + quote((dir / "fzk.ply").string()), dir);
-  EXPECT_EQ(r.code, 1);
+  r = plumbCli(dir, "convert " + shellQuote(sharedData("ifc/AC20-FZK-Haus.ifc")) + " " +
+                        shellQuote((dir / "fzk.ply").string()));
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(lines(r.err), 1u);
   EXPECT_NE(r.err.find("AC20-FZK-Haus.ifc"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir / "fzk.ply"));

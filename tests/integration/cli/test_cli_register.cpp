@@ -6,12 +6,11 @@
 
 #include <Eigen/Geometry>
 
-#include <cstdlib>
 #include <random>
 #include <sstream>
-#include <sys/wait.h>
 
-#include "cli_runner.hpp"
+#include "demo_truth.hpp"
+#include "support/cli_runner.hpp"
 #include "support/test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -19,16 +18,10 @@ using plumb::test::CliResult;
 using plumb::test::plumbCli;
 using plumb::test::readAll;
 using plumb::test::scratchDir;
+using plumb::test::transformOf;
 using plumb::test::writeAll;
 
 namespace {
-
-Eigen::Matrix4d matrixOf(const nlohmann::json& j) {
-  Eigen::Matrix4d m;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) m(r, c) = j.at(r).at(c).get<double>();
-  return m;
-}
 
 /// Axis-aligned closed box room (floor, ceiling, 4 walls) sampled every 5 cm with 2 mm noise,
 /// shifted by `shift`: symmetric under a half turn, so no registration can pick one answer.
@@ -81,12 +74,13 @@ TEST(CliRegister, SimulatedScanToModelMatchesTruth) {
   ASSERT_EQ(sim.exit_code, 0) << sim.err;
   const auto truth = nlohmann::json::parse(readAll(dir / "sim/truth.json"));
   ASSERT_EQ(truth.at("datasets").at(0).at("file"), "indoor.e57");
-  const Eigen::Matrix4d expected = matrixOf(truth["datasets"][0]["transform"]["matrix"]);
+  const Eigen::Matrix4d expected = transformOf(truth["datasets"][0]["transform"]["matrix"]).matrix();
 
   const CliResult r = plumbCli(dir, "register sim/indoor.e57 sim/model.ply --seed 3 --transform T.json "
                               "--report R.json -o registered.e57");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const Eigen::Matrix4d got = matrixOf(nlohmann::json::parse(readAll(dir / "T.json"))["matrix"]);
+  const Eigen::Matrix4d got =
+      transformOf(nlohmann::json::parse(readAll(dir / "T.json"))["matrix"]).matrix();
   const Eigen::Matrix3d dR = got.topLeftCorner<3, 3>().transpose() * expected.topLeftCorner<3, 3>();
   EXPECT_LT(Eigen::AngleAxisd(dR).angle() * 180.0 / M_PI, 0.05);
   // Error at the scanned rooms (the model frame's ground floor lies within ~15 m of the origin).
@@ -102,7 +96,7 @@ TEST(CliRegister, SimulatedScanToModelMatchesTruth) {
   EXPECT_NE(report.at("verdict").get<std::string>().find("succeeded"), std::string::npos);
   EXPECT_LT(report.at("points").at("rms_m").get<double>(), 0.01);
   EXPECT_GT(report.at("points").at("overlap_ratio").get<double>(), 0.5);
-  EXPECT_TRUE((matrixOf(report.at("transform")) - got).cwiseAbs().maxCoeff() < 1e-9);
+  EXPECT_TRUE((transformOf(report.at("transform")).matrix() - got).cwiseAbs().maxCoeff() < 1e-9);
   EXPECT_NE(r.out.find("method: segments, status: success"), std::string::npos) << r.out;
   // The registered dataset is written and readable: same 4 scans.
   const CliResult info = plumbCli(dir, "info registered.e57");

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "cli_runner.hpp"
+#include "support/cli_runner.hpp"
 #include "demo_truth.hpp"
 #include "support/test_support.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
-// Runs the real plumb-cli (PLUMB_CLI_PATH, defined per test target) in a directory, with its
-// stdout and stderr captured: shared by the plumb-cli end-to-end tests.
+// Runs the real plumb-cli (PLUMB_CLI_PATH, defined by plumb_add_test(... RUNS_CLI)) in a
+// directory, with its stdout and stderr captured: shared by the plumb-cli end-to-end tests.
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -14,6 +14,9 @@ struct CliResult {
   int exit_code = -1;
   std::string out, err;
 };
+
+/// `s` as one shell word (single-quoted; paths here hold no single quote).
+inline std::string shellQuote(const std::string& s) { return "'" + s + "'"; }
 
 /// Runs `plumb-cli ARGS` in `dir` (stdout and stderr captured to files there).
 inline CliResult plumbCli(const std::filesystem::path& dir, const std::string& args) {
