@@ -177,15 +177,13 @@ const PointCloud* refinementTarget(const RegistrationSide& target, const Pipelin
 /// starts below half the measured thickness.
 void limitToWallThickness(const GlobalRegistrationResult& g, RefineParams& rp,
                           std::vector<std::string>& log) {
-  if (g.method != "openings") return;
-  for (const auto& [name, value] : g.figures) {
-    if (name != "wall thickness (m)" || !(value > 0.0)) continue;
-    const double start = std::max(rp.final_distance, std::min(rp.start_distance, 0.5 * value));
-    if (start < rp.start_distance) {
-      log.push_back("refinement: first correspondence distance " + std::to_string(start) +
-                    " m (half the wall thickness: indoor faces must not snap onto the façades)");
-      rp.start_distance = start;
-    }
+  if (!g.wall_thickness || !(*g.wall_thickness > 0.0)) return;
+  const double start =
+      std::max(rp.final_distance, std::min(rp.start_distance, 0.5 * *g.wall_thickness));
+  if (start < rp.start_distance) {
+    log.push_back("refinement: first correspondence distance " + std::to_string(start) +
+                  " m (half the wall thickness: indoor faces must not snap onto the façades)");
+    rp.start_distance = start;
   }
 }
 

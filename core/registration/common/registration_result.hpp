@@ -41,6 +41,9 @@ struct GlobalRegistrationResult {
   std::size_t target_features = 0;
   std::size_t inlier_features = 0;  ///< source features matched under the chosen transform
   double feature_rms = 0.0;         ///< m, RMS residual on matched features
+  /// m, openings method: the façade wall thickness between the indoor faces and the outdoor
+  /// façade faces (measured, or assumed: see figures); the refinement must not bridge it.
+  std::optional<double> wall_thickness;
   /// Method-specific figures for the report, e.g. {"wall thickness (m)", 0.31}.
   std::vector<std::pair<std::string, double>> figures;
 

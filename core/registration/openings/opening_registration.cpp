@@ -235,6 +235,7 @@ GlobalRegistrationResult registerOpenings(const FeatureSet& source, const Featur
     }
   }
   const double thickness = median(fin.thickness);
+  r.wall_thickness = thickness;
   r.figures.push_back({"wall thickness (m)", thickness});
   r.figures.push_back({"wall thickness measured", measured ? 1.0 : 0.0});
   r.figures.push_back({"matched openings", double(fin.matched_openings)});
