@@ -19,7 +19,9 @@ TEST(PipelineParamsJson, RoundTripsEveryGroup) {
   forEachParamGroup(p, [&](const char* key, const char*, const auto&, const auto&) {
     EXPECT_TRUE(j.contains(key)) << key;
     // Every step runs with the top-level seed, so the JSON shows that one in each group.
-    if (j[key].contains("seed")) EXPECT_EQ(j[key]["seed"], 42) << key;
+    if (j[key].contains("seed")) {
+      EXPECT_EQ(j[key]["seed"], 42) << key;
+    }
     ++groups;
   });
   EXPECT_EQ(groups, 9);

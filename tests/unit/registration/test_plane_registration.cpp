@@ -46,11 +46,12 @@ TEST(PlaneRegistration, PartialOverlapIndoorIndoor) {
     const auto r = registerPlanes(source.planes, target.planes, {});
     const bool good = RigidTransform::rotationErrorDeg(r.transform, pose) < 0.1 &&
                       RigidTransform::translationError(r.transform, pose) < 0.02;
-    if (r.ok())
+    if (r.ok()) {
       EXPECT_TRUE(good) << run << ": " << r.message << " rot err "
                         << RigidTransform::rotationErrorDeg(r.transform, pose) << " trans err "
                         << RigidTransform::translationError(r.transform, pose) << " truth score "
                         << planeSimilarity(source.planes, target.planes, pose, {});
+    }
     ok += r.ok() && good;
   }
   EXPECT_GE(ok, 9);
