@@ -40,6 +40,13 @@ struct TimeCheck {
   std::size_t points = 0, outside = 0;
   double min = std::numeric_limits<double>::infinity();
   double max = -std::numeric_limits<double>::infinity();
+  TimeCheck& operator+=(const TimeCheck& o) {
+    points += o.points;
+    outside += o.outside;
+    min = std::min(min, o.min);
+    max = std::max(max, o.max);
+    return *this;
+  }
 };
 
 TimeCheck checkTimes(const std::vector<double>& times, double t0, double t1, double tolerance) {
@@ -57,13 +64,7 @@ TimeCheck checkTimes(const std::vector<double>& times, double t0, double t1, dou
         }
         return c;
       },
-      [](TimeCheck a, const TimeCheck& b) {
-        a.points += b.points;
-        a.outside += b.outside;
-        a.min = std::min(a.min, b.min);
-        a.max = std::max(a.max, b.max);
-        return a;
-      });
+      [](TimeCheck a, const TimeCheck& b) { return a += b; });
 }
 
 }  // namespace
@@ -82,22 +83,17 @@ void Trajectory::sample(double t, Eigen::Vector3d& pos, Eigen::Vector3d& heading
   if (times.size() < 2) return;
   const std::size_t i = segmentAt(times, t);
   // Heading of the first segment with horizontal motion at or before i (else after).
-  for (std::size_t k = i + 1; k-- > 0;) {
+  auto horizontal = [this, &heading](std::size_t k) {
     Eigen::Vector3d d = positions[k + 1] - positions[k];
     d.z() = 0;
-    if (d.norm() > 1e-9) {
-      heading = d.normalized();
-      return;
-    }
-  }
-  for (std::size_t k = i + 1; k + 1 < positions.size(); ++k) {
-    Eigen::Vector3d d = positions[k + 1] - positions[k];
-    d.z() = 0;
-    if (d.norm() > 1e-9) {
-      heading = d.normalized();
-      return;
-    }
-  }
+    if (d.norm() <= 1e-9) return false;
+    heading = d.normalized();
+    return true;
+  };
+  for (std::size_t k = i + 1; k-- > 0;)
+    if (horizontal(k)) return;
+  for (std::size_t k = i + 1; k + 1 < positions.size(); ++k)
+    if (horizontal(k)) return;
 }
 
 Trajectory readTrajectory(const std::filesystem::path& path) {
@@ -144,11 +140,7 @@ void setSensorOriginsFromTrajectory(Dataset& d, const Trajectory& t,
     if (!s.cloud.hasTimestamps())
       throw InputError(datasetName(d) + ": scan '" + s.name + "' has no per-point timestamps: "
                        "its sensor origins cannot come from the trajectory " + trajectory_file.string());
-    const TimeCheck c = checkTimes(s.cloud.timestamps, t0, t1, kTolerance);
-    all.points += c.points;
-    all.outside += c.outside;
-    all.min = std::min(all.min, c.min);
-    all.max = std::max(all.max, c.max);
+    all += checkTimes(s.cloud.timestamps, t0, t1, kTolerance);
   }
   if (all.outside > 0)
     throw FileError(trajectory_file,
