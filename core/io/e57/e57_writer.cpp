@@ -34,6 +34,27 @@ FieldSpec floatSpec(const char* name, bool single) {
   return f;
 }
 
+/// A ScaledInteger raw value: v in units of the quantum q, rounded.
+std::int64_t toRaw(double v, double q) { return static_cast<std::int64_t>(std::floor(v / q + 0.5)); }
+
+/// Axis `a` of a float vector column stored relative to `offset` (positions, sensor origins),
+/// written as a ScaledInteger of quantum `q` over raw [lo, hi]; non-finite values as `fill`.
+OutField scaledAxisField(const char* name, const std::vector<Eigen::Vector3f>& column,
+                         const Eigen::Vector3d& offset, int a, double q, std::int64_t lo,
+                         std::int64_t hi, std::int64_t fill) {
+  OutField f;
+  f.spec = integerSpec(name, lo, hi);
+  f.spec.type = FieldType::ScaledInteger;
+  f.spec.scale = q;
+  f.integers = [&column, offset, a, q, fill](std::size_t begin, std::size_t count, std::int64_t* out) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const float v = column[begin + i][a];
+      out[i] = std::isfinite(v) ? toRaw(offset[a] + v, q) : fill;
+    }
+  };
+  return f;
+}
+
 template <class V, class Get>
 std::pair<std::int64_t, std::int64_t> rangeOf(const V& v, Get get) {
   std::int64_t lo = std::numeric_limits<std::int64_t>::max(), hi = std::numeric_limits<std::int64_t>::lowest();
@@ -79,20 +100,9 @@ std::vector<OutField> describeScan(const PointCloud& cloud, const E57WriteOption
         }
       };
     } else {
-      auto toRaw = [q](double v) { return static_cast<std::int64_t>(std::floor(v / q + 0.5)); };
-      const std::int64_t lo = b.empty() ? 0 : toRaw(b.min[a]);
-      const std::int64_t hi = b.empty() ? 0 : toRaw(b.max[a]);
-      f.spec.name = names[a];
-      f.spec.type = FieldType::ScaledInteger;
-      f.spec.minimum = lo;
-      f.spec.maximum = std::max(hi, lo + 1);
-      f.spec.scale = q;
-      f.integers = [&cloud, offset, a, lo, toRaw](std::size_t begin, std::size_t count, std::int64_t* out) {
-        for (std::size_t i = 0; i < count; ++i) {
-          const float p = cloud.positions[begin + i][a];
-          out[i] = std::isfinite(p) ? toRaw(offset[a] + p) : lo;
-        }
-      };
+      const std::int64_t lo = b.empty() ? 0 : toRaw(b.min[a], q);
+      const std::int64_t hi = b.empty() ? 0 : toRaw(b.max[a], q);
+      f = scaledAxisField(names[a], cloud.positions, offset, a, q, lo, hi, lo);
     }
     fields.push_back(std::move(f));
   }
@@ -185,22 +195,12 @@ std::vector<OutField> describeScan(const PointCloud& cloud, const E57WriteOption
     // 2023 §III-A, which needs it; a trajectory is smooth, so it packs small).
     const char* names_o[3] = {"plumb:sensorOriginX", "plumb:sensorOriginY", "plumb:sensorOriginZ"};
     constexpr double qo = 1e-3;
-    auto toRaw = [](double v) { return static_cast<std::int64_t>(std::floor(v / qo + 0.5)); };
     for (int a = 0; a < 3; ++a) {
       const auto r = rangeOf(cloud.sensor_origins, [&](const Eigen::Vector3f& o) {
-        return std::isfinite(o[a]) ? toRaw(offset[a] + o[a]) : 0;
+        return std::isfinite(o[a]) ? toRaw(offset[a] + o[a], qo) : 0;
       });
-      OutField f;
-      f.spec = integerSpec(names_o[a], r.first, r.second);
-      f.spec.type = FieldType::ScaledInteger;
-      f.spec.scale = qo;
-      f.integers = [&cloud, offset, a, toRaw](std::size_t begin, std::size_t count, std::int64_t* out) {
-        for (std::size_t i = 0; i < count; ++i) {
-          const float o = cloud.sensor_origins[begin + i][a];
-          out[i] = std::isfinite(o) ? toRaw(offset[a] + o) : 0;
-        }
-      };
-      fields.push_back(std::move(f));
+      fields.push_back(
+          scaledAxisField(names_o[a], cloud.sensor_origins, offset, a, qo, r.first, r.second, 0));
     }
   }
   for (const auto& f : fields) w.prototype.push_back(f.spec);
