@@ -17,9 +17,9 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkProp.h>
 
-#include <fstream>
 
 #include "gui/feature_fixtures.hpp"
+#include "gui/grid_ply.hpp"
 #include "gui/image_checks.hpp"
 #include "support/test_support.hpp"
 #include "ui/layers/dataset_layer.hpp"
@@ -44,21 +44,9 @@ using namespace plumb::ui;
 using plumb::test::countColor;
 using plumb::test::countHue;
 using plumb::test::countNonBackground;
+using plumb::test::writeGridPly;
 
 namespace {
-
-/// An ASCII PLY of a 20 m x 20 m grid of red points in the plane z = 0 (test input).
-std::filesystem::path writeRedGridPly(const std::filesystem::path& dir) {
-  const auto path = dir / "red_grid.ply";
-  std::ofstream out(path);
-  const int n = 101;
-  out << "ply\nformat ascii 1.0\nelement vertex " << n * n
-      << "\nproperty float x\nproperty float y\nproperty float z\n"
-         "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) out << i * 0.2 << " " << j * 0.2 << " 0 255 0 0\n";
-  return path;
-}
 
 enum class Method { Auto, Planes, Icp };
 struct DemoParams {
@@ -129,7 +117,8 @@ class GuiAppTest : public QObject {
     AppContext& app = window_->context();
     const auto dir = test::scratchDir("gui_app_rgb");
     QSignalSpy idle(&app.tasks, &TaskManager::idle);
-    window_->openFiles({QString::fromStdString(writeRedGridPly(dir).string())});
+    window_->openFiles(
+        {QString::fromStdString(writeGridPly(dir / "red_grid.ply", 101, 255, 0, 0).string())});
     QVERIFY(idle.wait(30000));
     QCOMPARE(app.log.errorCount(), 0);
     QCOMPARE(app.scene.layers().size(), std::size_t{1});

@@ -24,9 +24,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 
 #include "gui/feature_fixtures.hpp"
+#include "gui/grid_ply.hpp"
 #include "gui/image_checks.hpp"
 #include "support/test_support.hpp"
 #include "ui/actions/file_dialogs.hpp"
@@ -50,19 +50,9 @@
 
 using namespace plumb;
 using namespace plumb::ui;
+using plumb::test::writeGridPly;
 
 namespace {
-
-/// An ASCII PLY of `n` x `n` points on a 0.2 m grid in the plane z = 0, one RGB colour.
-std::filesystem::path writeGridPly(const std::filesystem::path& path, int n, int r, int g, int b) {
-  std::ofstream out(path);
-  out << "ply\nformat ascii 1.0\nelement vertex " << n * n
-      << "\nproperty float x\nproperty float y\nproperty float z\n"
-         "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) out << i * 0.2 << " " << j * 0.2 << " 0 " << r << " " << g << " " << b << "\n";
-  return path;
-}
 
 QString q(const std::filesystem::path& p) { return QString::fromStdString(p.string()); }
 
