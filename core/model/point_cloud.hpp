@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "model/column.hpp"
 #include "model/rigid_transform.hpp"
 
 namespace plumb {
@@ -54,8 +55,8 @@ class PointCloud {
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();  ///< world = offset + positions[i]
   std::vector<Eigen::Vector3f> positions;             ///< local coordinates, metres
   std::vector<Eigen::Vector3f> normals;               ///< unit normals
-  std::vector<Rgb8> colors;                           ///< 8-bit RGB
-  std::vector<float> intensity;                       ///< as stored by the source (no rescale)
+  Column<Rgb8> colors;                                ///< 8-bit RGB
+  Column<float> intensity;                            ///< as stored by the source (no rescale)
   std::vector<std::uint8_t> return_index;             ///< 1-based like LAS (0 = unknown)
   std::vector<std::uint8_t> return_count;
   std::vector<double> timestamps;                     ///< seconds (GPS time or scan time)

@@ -31,7 +31,7 @@ TEST(Text, CsvHeaderNamesColumnsInAnyOrder) {
   ASSERT_EQ(c.size(), 2u);
   EXPECT_EQ(c.world(0), Eigen::Vector3d(1.5, 2.5, 3.5));
   EXPECT_EQ(c.colors[0], (Rgb8{255, 128, 0}));
-  EXPECT_EQ(c.intensity, (std::vector<float>{5, 6}));
+  EXPECT_EQ(c.intensity, (Column<float>{5, 6}));
   EXPECT_EQ(c.normals[1], Eigen::Vector3f(1, 0, 0));
   ASSERT_NE(c.findScalarField("temperature"), nullptr);
   EXPECT_FLOAT_EQ(c.findScalarField("temperature")->values[0], 21.5f);
@@ -43,7 +43,7 @@ TEST(Text, PtsWithCountLinesAndGuessedColumns) {
   test::writeAll(dir / "a.pts", "2\n1 2 3 -200 10 20 30\n4 5 6 150 40 50 60\n1\n7 8 9 0 70 80 90\n");
   const PointCloud c = readCloud(dir / "a.pts");
   ASSERT_EQ(c.size(), 3u);
-  EXPECT_EQ(c.intensity, (std::vector<float>{-200, 150, 0}));
+  EXPECT_EQ(c.intensity, (Column<float>{-200, 150, 0}));
   EXPECT_EQ(c.colors[2], (Rgb8{70, 80, 90}));
 }
 
@@ -57,7 +57,7 @@ TEST(Text, SemicolonWithDecimalCommaAndTabs) {
   test::writeAll(dir / "b.xyz", "# scanner export\n1\t2\t3\t0.5\n\n4 \t5\t6\t0.25\n");
   c = readCloud(dir / "b.xyz");
   ASSERT_EQ(c.size(), 2u);
-  EXPECT_EQ(c.intensity, (std::vector<float>{0.5f, 0.25f}));
+  EXPECT_EQ(c.intensity, (Column<float>{0.5f, 0.25f}));
 }
 
 TEST(Text, SixColumnsAreColoursOrNormals) {
