@@ -264,7 +264,7 @@ void planCopies(const std::vector<Slot>& slots, const Columns& c, bool sw, std::
 
 /// Reads [offset, offset+size) of a file with pread into `buffer` (reused between windows of
 /// one thread, so no memory is mapped or faulted per window).
-const char* readWindow(int fd, std::uint64_t offset, std::size_t size, std::vector<char>& buffer,
+const char* readWindow(int fd, std::uint64_t offset, std::size_t size, Column<char>& buffer,
                        const std::filesystem::path& path) {
   if (buffer.size() < size) buffer.resize(size);
   std::size_t got = 0;
@@ -627,7 +627,7 @@ class Reader {
     std::vector<Slot> rest;
     planCopies(slots, c, sw, copies, rest);
     const std::size_t per_window = std::max<std::size_t>(1, kWindowBytes / stride);
-    tbb::enumerable_thread_specific<std::vector<char>> buffers;  // one 4 MiB buffer per thread
+    tbb::enumerable_thread_specific<Column<char>> buffers;  // one window buffer per thread (not zeroed)
     const std::size_t windows = (n + per_window - 1) / per_window;
     std::atomic<std::size_t> done{0};
     const int fd = in_.fd();
