@@ -22,6 +22,7 @@
 
 #include "common/error.hpp"
 #include "io/ply/block_reader.hpp"
+#include "io/ply/record_copy.hpp"
 #include "io/ply/ply_values.hpp"
 
 namespace plumb {
@@ -191,46 +192,9 @@ void putValue(const Slot& s, const Columns& c, std::size_t i, double v) {
   }
 }
 
-/// A column whose file layout equals its memory layout: one memcpy per record.
-struct Copy {
-  std::size_t src = 0;  ///< offset in the record
-  char* dst = nullptr;  ///< column base (record 0)
-  std::size_t bytes = 0;
-  // B bytes per record, moved as one W-byte load/store (W >= B, a register width) for all
-  // records but the last of the block: the W - B extra bytes read come from the next record
-  // (inside the block) and the extra bytes written land on the next value, which the next
-  // iteration overwrites. The last record is copied exactly, so nothing is written past this
-  // block's part of the column (other threads write the neighbouring blocks).
-  template <std::size_t B, std::size_t W>
-  void copy(const char* p, std::size_t k, std::size_t stride, std::size_t base) const {
-    static_assert(W >= B && W - B <= B);
-    char* d = dst + base * B;
-    p += src;
-    if (k == 0) return;
-    if (stride >= W - B) {
-      for (std::size_t i = 0; i + 1 < k; ++i) {
-        char v[W];
-        std::memcpy(v, p + i * stride, W);
-        std::memcpy(d + i * B, v, W);
-      }
-    } else {
-      for (std::size_t i = 0; i + 1 < k; ++i) std::memcpy(d + i * B, p + i * stride, B);
-    }
-    std::memcpy(d + (k - 1) * B, p + (k - 1) * stride, B);
-  }
-  void run(const char* p, std::size_t k, std::size_t stride, std::size_t base) const {
-    switch (bytes) {
-      case 3: copy<3, 4>(p, k, stride, base); break;
-      case 4: copy<4, 4>(p, k, stride, base); break;
-      case 12: copy<12, 16>(p, k, stride, base); break;
-      default: break;
-    }
-  }
-};
-
 /// Splits slots into plain copies (no byte swap, same type, consecutive components, zero
 /// offset) and the rest (converted value by value).
-void planCopies(const std::vector<Slot>& slots, const Columns& c, bool sw, std::vector<Copy>& copies,
+void planCopies(const std::vector<Slot>& slots, const Columns& c, bool sw, std::vector<ply::FieldCopy>& copies,
                 std::vector<Slot>& rest) {
   std::vector<bool> used(slots.size(), false);
   if (!sw) {
@@ -618,14 +582,16 @@ class Reader {
 
   /// Binary vertex records of fixed size: the file is read in 1 MiB windows (never all at once,
   /// so peak memory is the columns plus one window per thread), windows are processed in
-  /// parallel, and each window is converted in L2-sized chunks, one column at a time (plain
-  /// memcpy where the file layout equals the column layout). pread into a reused buffer measured
-  /// faster than mapping each window with MAP_POPULATE.
+  /// parallel, and each window is converted in L2-sized chunks: fields whose file layout equals
+  /// the column layout are copied by a RecordCopier (one pass per record for common layouts),
+  /// the others converted one column at a time. pread into a reused buffer measured faster than
+  /// mapping each window with MAP_POPULATE, and as fast as mapping the whole file once.
   void readFixedRecords(std::uint64_t start, std::size_t n, std::size_t stride, bool sw,
                         const std::vector<Slot>& slots, const Columns& c) {
-    std::vector<Copy> copies;
+    std::vector<ply::FieldCopy> copies;
     std::vector<Slot> rest;
     planCopies(slots, c, sw, copies, rest);
+    const ply::RecordCopier copier(stride, std::move(copies));
     const std::size_t per_window = std::max<std::size_t>(1, kWindowBytes / stride);
     tbb::enumerable_thread_specific<Column<char>> buffers;  // one window buffer per thread (not zeroed)
     const std::size_t windows = (n + per_window - 1) / per_window;
@@ -641,7 +607,7 @@ class Reader {
       for (std::size_t i = i0; i < i1; i += kChunk) {
         const std::size_t m = std::min(kChunk, i1 - i);
         const char* p = window + (i - i0) * stride;
-        for (const Copy& cp : copies) cp.run(p, m, stride, i);
+        copier.run(p, m, i);
         if (sw) extractBlock<true>(p, m, stride, rest, c, i);
         else extractBlock<false>(p, m, stride, rest, c, i);
       }
