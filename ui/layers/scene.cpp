@@ -187,10 +187,11 @@ void Scene::applyLodBudget() {
       total += scans.back()->scan().cloud.size();
     });
   if (total == 0) return;
+  // Each scan's share of a budget, rounded down, in exact integer arithmetic (in doubles,
+  // budget / total * n came out one point short for a single scan, e.g. 114,539 of 114,540).
   const auto share = [total](std::size_t budget, std::size_t n) {
     if (budget >= total) return n;
-    return static_cast<std::size_t>(static_cast<double>(budget) / static_cast<double>(total) *
-                                    static_cast<double>(n));
+    return static_cast<std::size_t>(static_cast<unsigned __int128>(budget) * n / total);
   };
   for (ScanLayer* s : scans) {
     const std::size_t n = s->scan().cloud.size();
