@@ -9,6 +9,8 @@
 //     of reads 2..4 in one process);
 //   - the floor of any reader that returns its data in new memory: memset of the attribute
 //     bytes into fresh pages (4 KiB pages, and transparent huge pages), in a fresh process;
+//   - the start of the thread pool in a fresh process (TBB initialisation until both threads
+//     run), a cost of the first read only;
 //   - PCL pcl::PLYReader (once) and Plumb writePly.
 // Peak memory of a read = VmHWM growth of the child over its RSS before reading, compared
 // with the cloud's attribute bytes. Targets (issue 2): read >= 50% of cat's speed (i.e. at
@@ -20,10 +22,14 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <pcl/io/ply_io.h>
 #include <pcl/point_types.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -119,6 +125,23 @@ int childMemset(std::size_t bytes, bool huge) {
   return 0;
 }
 
+// Thread-pool start in a fresh process: the time from the first tbb::parallel_for until both
+// threads work in it (TBB's runtime initialisation plus the worker thread's start), which the
+// first read of a fresh process pays and later reads do not.
+int childPool() {
+  const int threads = std::min(2, tbb::this_task_arena::max_concurrency());
+  std::atomic<int> arrived{0};
+  std::atomic<double> both{0};
+  const double t0 = now(), c0 = cpuSelf();
+  tbb::parallel_for(0, threads, [&](int) {
+    if (++arrived == threads) both = now() - t0;
+    while (arrived < threads && now() - t0 < 0.1) {
+    }
+  }, tbb::simple_partitioner());
+  std::printf("%.9f %.9f 0 %.9f 0\n", both.load(), both.load(), cpuSelf() - c0);
+  return 0;
+}
+
 // Runs this executable with `args` and parses "first steady peak" from its output.
 struct ChildResult {
   double first = 0, steady = 0, peak = 0, cpu = 0, faults = 0;
@@ -136,6 +159,7 @@ ChildResult runChild(const std::string& args) {
 
 int main(int argc, char** argv) {
   if (argc >= 4 && std::strcmp(argv[1], "--child-read") == 0) return childRead(argv[2], std::atoi(argv[3]));
+  if (argc >= 2 && std::strcmp(argv[1], "--child-pool") == 0) return childPool();
   if (argc >= 4 && std::strcmp(argv[1], "--child-memset") == 0)
     return childMemset(std::stoul(argv[2]), std::strcmp(argv[3], "huge") == 0);
 
@@ -192,7 +216,7 @@ int main(int argc, char** argv) {
     void add(double w, double c) {
       if (w < wall) wall = w, cpu = c;
     }
-  } cat_t, raw_t, first_t, steady_t, ms4k_t, msthp_t;
+  } cat_t, raw_t, first_t, steady_t, ms4k_t, msthp_t, pool_t;
   double peak = 0, first_faults = 0, steady_faults = 0;
   for (int r = 0; r < rounds; ++r) {
     t0 = now();
@@ -215,6 +239,8 @@ int main(int argc, char** argv) {
     ms4k_t.add(m4k.first, m4k.cpu);
     const ChildResult mthp = runChild("--child-memset " + std::to_string(attr) + " huge");
     msthp_t.add(mthp.first, mthp.cpu);
+    const ChildResult pool = runChild("--child-pool");
+    pool_t.add(pool.first, pool.cpu);
   }
 
   double t_pcl = 0;
@@ -239,6 +265,8 @@ int main(int argc, char** argv) {
   row("plumb readPly, steady state (reads 2..4)", steady_t.wall, steady_t.cpu);
   row("floor: memset attribute bytes, fresh 4K pages", ms4k_t.wall, ms4k_t.cpu);
   row("floor: memset attribute bytes, fresh THP", msthp_t.wall, msthp_t.cpu);
+  std::printf("%-46s %9.2f %9s %9s %9.2f\n", "thread pool start (fresh process, both threads)", pool_t.wall * 1e3, "", "",
+              pool_t.cpu * 1e3);
   if (with_pcl) row("pcl::PLYReader XYZRGB (1 run)", t_pcl, 0);
   row("plumb writePly (1 run)", t_write, 0);
   std::printf("plumb read speed = %.0f%% (first) / %.0f%% (steady) of cat's (target >= 50%%); peak = %.2fx attributes (target <= 1.30)\n",
