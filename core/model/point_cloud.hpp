@@ -53,8 +53,8 @@ class PointCloud {
  public:
   // --- attributes (public: algorithms read and fill them directly) -------------------------
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();  ///< world = offset + positions[i]
-  std::vector<Eigen::Vector3f> positions;             ///< local coordinates, metres
-  std::vector<Eigen::Vector3f> normals;               ///< unit normals
+  Column<Eigen::Vector3f> positions;                  ///< local coordinates, metres
+  Column<Eigen::Vector3f> normals;                    ///< unit normals
   Column<Rgb8> colors;                                ///< 8-bit RGB
   Column<float> intensity;                            ///< as stored by the source (no rescale)
   std::vector<std::uint8_t> return_index;             ///< 1-based like LAS (0 = unknown)
@@ -63,7 +63,7 @@ class PointCloud {
   std::vector<std::int32_t> row;                      ///< scan grid row (organized scans)
   std::vector<std::int32_t> column;                   ///< scan grid column
   std::vector<std::uint8_t> classification;           ///< ASPRS class codes
-  std::vector<Eigen::Vector3f> sensor_origins;        ///< per-point sensor position, local frame
+  Column<Eigen::Vector3f> sensor_origins;             ///< per-point sensor position, local frame
   std::vector<std::uint16_t> scan_id;                 ///< index of the scan a point came from
   std::vector<ScalarField> scalar_fields;             ///< custom float attributes
 

@@ -13,7 +13,7 @@ namespace plumb::ui {
 namespace {
 
 /// Bounds of the finite positions (min/max: the same for any split, so deterministic).
-Bounds finiteBounds(const std::vector<Eigen::Vector3f>& positions) {
+Bounds finiteBounds(const Column<Eigen::Vector3f>& positions) {
   return tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, positions.size(), std::size_t{1} << 16), Bounds{},
       [&positions](const tbb::blocked_range<std::size_t>& r, Bounds b) {

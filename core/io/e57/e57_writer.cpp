@@ -39,7 +39,7 @@ std::int64_t toRaw(double v, double q) { return static_cast<std::int64_t>(std::f
 
 /// Axis `a` of a float vector column stored relative to `offset` (positions, sensor origins),
 /// written as a ScaledInteger of quantum `q` over raw [lo, hi]; non-finite values as `fill`.
-OutField scaledAxisField(const char* name, const std::vector<Eigen::Vector3f>& column,
+OutField scaledAxisField(const char* name, const Column<Eigen::Vector3f>& column,
                          const Eigen::Vector3d& offset, int a, double q, std::int64_t lo,
                          std::int64_t hi, std::int64_t fill) {
   OutField f;

@@ -472,16 +472,14 @@ class Reader {
       return s.target == Target::Position && s.type == Type::Float64;
     });
 
-    // Reserve every column, then mark them for huge pages (see adviseHugePages).
-    std::vector<ColumnStorage> storage{reserveColumn(cloud.positions, n)};
-    if (has_normals) storage.push_back(reserveColumn(cloud.normals, n));
-    if (has_colors) storage.push_back(reserveColumn(cloud.colors, n));
-    if (ii >= 0) storage.push_back(reserveColumn(cloud.intensity, n));
+    // Reserve the std::vector columns, then mark them for huge pages (see adviseHugePages);
+    // Column<T> maps its large blocks 2 MiB-aligned for huge pages itself.
+    std::vector<ColumnStorage> storage;
     for (auto& f : cloud.scalar_fields) storage.push_back(reserveColumn(f.values, n));
     for (auto& v : extra_values) storage.push_back(reserveColumn(v, n));
     adviseHugePages(storage);
-    // Size the columns. Positions, normals (Eigen vectors), colours and intensity (Column<T>)
-    // are left uninitialised by resize, so the threads that convert the records into them touch
+    // Size the columns. Positions, normals, colours and intensity (Column<T>) are left
+    // uninitialised by resize, so the threads that convert the records into them touch
     // them first, window by window: the kernel's zeroing is spread evenly over the threads and
     // each huge page is still in cache when the converted values overwrite its zeros (zeroing
     // colours and intensity in a pass of their own first cost 70 MB of extra memory traffic and
@@ -750,7 +748,7 @@ BimModel plyToModel(PlyData&& ply, const std::filesystem::path& path) {
   const PointCloud& v = ply.vertices;
   m.mesh.vertices.resize(v.size());
   for (std::size_t i = 0; i < v.size(); ++i) m.mesh.vertices[i] = v.world(i);
-  if (v.hasNormals()) m.mesh.vertex_normals = v.normals;
+  if (v.hasNormals()) m.mesh.vertex_normals.assign(v.normals.begin(), v.normals.end());
   if (v.hasColors()) m.mesh.vertex_colors.assign(v.colors.begin(), v.colors.end());
   m.mesh.triangles = std::move(ply.triangles);
   if (ply.elements.empty()) {
