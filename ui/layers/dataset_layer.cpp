@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "ui/layers/feature_layer.hpp"
 #include "ui/layers/scan_layer.hpp"
@@ -54,6 +55,7 @@ std::vector<ScanLayer*> DatasetLayer::scans() const {
 
 void DatasetLayer::setStyle(const PointStyle& style) {
   style_ = style;
+  colours_stale_ = false;
   ++style_generation_;
   coloring_pending_ = false;
   if (coloring_task_) coloring_task_->cancel();
@@ -64,6 +66,7 @@ void DatasetLayer::setStyle(const PointStyle& style) {
 Task* DatasetLayer::requestStyle(const PointStyle& style, TaskManager& tasks,
                                  std::function<void()> applied) {
   style_ = style;
+  colours_stale_ = false;
   const std::uint64_t generation = ++style_generation_;
   coloring_pending_ = true;
   if (coloring_task_) coloring_task_->cancel();
@@ -109,8 +112,10 @@ void DatasetLayer::setDistances(std::vector<std::vector<float>> per_scan, double
                           max_distance);
   has_distances_ = !per_scan.empty();
   if (has_distances_) style_.mode = PointColorMode::Distance;
-  setStyle(style_);
+  colours_stale_ = true;
 }
+
+bool DatasetLayer::takeStaleColours() { return std::exchange(colours_stale_, false); }
 
 std::vector<std::string> DatasetLayer::scalarFieldNames() const {
   std::vector<std::string> names;
@@ -135,7 +140,7 @@ void DatasetLayer::applyTransform() {
   for (ScanLayer* s : scans()) s->setDatasetTransform(shown);
   for (const auto& c : children())
     if (c->kind() == LayerKind::Features) static_cast<FeatureLayer*>(c.get())->setTransform(shown);
-  if (style_.mode == PointColorMode::Elevation) setStyle(style_);
+  if (style_.mode == PointColorMode::Elevation) colours_stale_ = true;  // z changed
 }
 
 std::vector<PropertyRow> DatasetLayer::describe() const {

@@ -53,16 +53,22 @@ class DatasetLayer : public Layer {
   std::vector<std::string> scalarFieldNames() const;
 
   /// The registration transform applied to the whole dataset, and whether it is shown
-  /// (before/after toggle).
+  /// (before/after toggle). Elevation colours follow in the background once the scene is told
+  /// (Scene::layerChanged).
   const RigidTransform& transform() const { return transform_; }
   void setTransform(const RigidTransform& t);
   bool showsTransform() const { return shows_transform_; }
   void setShowsTransform(bool show);
 
   /// Distance to the registration target per point of each scan (NaN: no match), drawn by the
-  /// Distance colour mode on a ramp over [0, max_distance]; switches the style to it.
+  /// Distance colour mode on a ramp over [0, max_distance]; switches the style to it. The
+  /// colours follow in the background once the scene is told (Scene::layerChanged).
   void setDistances(std::vector<std::vector<float>> per_scan, double max_distance);
   bool hasDistances() const { return has_distances_; }
+
+  /// True once when the colours no longer match the style (new distances, or a transform
+  /// change under Elevation colours); Scene::layerChanged then recolours in the background.
+  bool takeStaleColours();
 
   std::vector<PropertyRow> describe() const override;
 
@@ -73,6 +79,7 @@ class DatasetLayer : public Layer {
   RigidTransform transform_;
   bool shows_transform_ = true;
   bool has_distances_ = false;
+  bool colours_stale_ = false;
   std::uint64_t style_generation_ = 0;  ///< bumped by every setStyle / requestStyle
   bool coloring_pending_ = false;
   QPointer<Task> coloring_task_;

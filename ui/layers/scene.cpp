@@ -235,6 +235,13 @@ std::optional<PickResult> Scene::pick(int x, int y) {
   return std::nullopt;
 }
 
-void Scene::layerChanged(Layer*) { emit renderNeeded(); }
+void Scene::layerChanged(Layer* layer) {
+  // New distances, or a transform under Elevation colours: recolour off the UI thread.
+  if (layer && layer->kind() == LayerKind::Dataset) {
+    auto& dataset = static_cast<DatasetLayer&>(*layer);
+    if (dataset.takeStaleColours()) requestStyle(dataset, dataset.style());
+  }
+  emit renderNeeded();
+}
 
 }  // namespace plumb::ui

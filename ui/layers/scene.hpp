@@ -86,7 +86,8 @@ class Scene : public QObject {
   /// Picks a feature at display position (x, y), VTK convention (y up, device pixels).
   std::optional<PickResult> pick(int x, int y);
 
-  /// Call after changing a layer's style, visibility or transform.
+  /// Call after changing a layer's style, visibility, transform or distances: renders, and
+  /// recolours a dataset in the background when its colours went stale.
   void layerChanged(Layer* layer);
 
  signals:

@@ -159,6 +159,10 @@ class GuiRegistrationTest : public QObject {
     QTest::mouseClick(panel.findChild<QPushButton*>("colourByDistance"), Qt::LeftButton);
     QVERIFY(distances.wait(kTaskTimeoutMs));
     QVERIFY(distances.at(0).at(0).toBool());
+    // The distance colours are computed in the background too; the old ones stay meanwhile.
+    auto* indoor = static_cast<DatasetLayer*>(indoor_);
+    QCOMPARE(indoor->style().mode, PointColorMode::Distance);
+    QTRY_VERIFY_WITH_TIMEOUT(!indoor->coloringPending(), kTaskTimeoutMs);
     const auto d = panel.lastDistances();
     QVERIFY(d && d->all.matched > d->all.distances.size() / 2);
     // Registered on its model: the median distance is at the noise level (2 mm sigma TLS).
