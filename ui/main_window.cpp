@@ -10,6 +10,7 @@
 #include <QStatusBar>
 #include <QUndoStack>
 
+#include "ui/actions/attach_trajectory_reaction.hpp"
 #include "ui/actions/export_cloud_reaction.hpp"
 #include "ui/actions/full_detail_reaction.hpp"
 #include "ui/actions/open_file_reaction.hpp"
@@ -116,6 +117,7 @@ void MainWindow::createMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   new OpenFileReaction(file->addAction(tr("&Open..."), QKeySequence::Open), app);
   new RecentFilesReaction(file->addMenu(tr("Recent files")), app);
+  new AttachTrajectoryReaction(file->addAction(tr("Attach t&rajectory...")), app);
   file->addSeparator();
   new OpenProjectReaction(file->addAction(tr("Open &project...")), app);
   new SaveProjectReaction(file->addAction(tr("Save project..."), QKeySequence::Save), app);

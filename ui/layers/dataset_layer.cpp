@@ -115,6 +115,14 @@ void DatasetLayer::setDistances(std::vector<std::vector<float>> per_scan, double
   colours_stale_ = true;
 }
 
+void DatasetLayer::attachTrajectory(std::shared_ptr<const Dataset> with_origins, const QString& path) {
+  if (!with_origins || with_origins->scans.size() != data_->scans.size())
+    throw std::invalid_argument("replacement dataset does not hold the same scans");
+  for (ScanLayer* s : scans()) s->replaceData(with_origins);
+  data_ = std::move(with_origins);
+  trajectory_ = path;
+}
+
 bool DatasetLayer::takeStaleColours() { return std::exchange(colours_stale_, false); }
 
 std::vector<std::string> DatasetLayer::scalarFieldNames() const {
@@ -149,6 +157,7 @@ std::vector<PropertyRow> DatasetLayer::describe() const {
   rows.emplace_back("Format", QString::fromStdString(data_->format));
   rows.emplace_back("Scans", QString::number(data_->scans.size()));
   rows.emplace_back("Points", QString::number(data_->pointCount()));
+  if (!trajectory_.isEmpty()) rows.emplace_back("Trajectory", trajectory_);
   if (!data_->coordinate_system.empty())
     rows.emplace_back("Coordinate system",
                       QString::fromStdString(data_->coordinate_system).left(80));

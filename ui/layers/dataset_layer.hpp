@@ -66,6 +66,13 @@ class DatasetLayer : public Layer {
   void setDistances(std::vector<std::vector<float>> per_scan, double max_distance);
   bool hasDistances() const { return has_distances_; }
 
+  /// Swaps in `with_origins`, the same points with per-point sensor origins interpolated from
+  /// the trajectory file `path` (startAttachTrajectory): feature detection, registration and
+  /// export use them from now on. Throws std::invalid_argument if the points differ.
+  void attachTrajectory(std::shared_ptr<const Dataset> with_origins, const QString& path);
+  /// The trajectory file attached (empty: none).
+  const QString& trajectoryPath() const { return trajectory_; }
+
   /// True once when the colours no longer match the style (new distances, or a transform
   /// change under Elevation colours); Scene::layerChanged then recolours in the background.
   bool takeStaleColours();
@@ -80,6 +87,7 @@ class DatasetLayer : public Layer {
   bool shows_transform_ = true;
   bool has_distances_ = false;
   bool colours_stale_ = false;
+  QString trajectory_;
   std::uint64_t style_generation_ = 0;  ///< bumped by every setStyle / requestStyle
   bool coloring_pending_ = false;
   QPointer<Task> coloring_task_;

@@ -1,5 +1,7 @@
 #include "ui/layers/scan_layer.hpp"
 
+#include <stdexcept>
+
 #include <QStringList>
 
 #include <vtkActor.h>
@@ -92,6 +94,13 @@ ScanLayer::~ScanLayer() = default;
 
 Eigen::Matrix4d ScanLayer::localToWorld() const {
   return dataset_transform_.matrix() * scan().pose.matrix() * offsetMatrix(scan().cloud.offset);
+}
+
+void ScanLayer::replaceData(std::shared_ptr<const Dataset> data) {
+  if (!data || data->scans.size() <= scan_index_ ||
+      data->scans[scan_index_].cloud.size() != data_->scans[scan_index_].cloud.size())
+    throw std::invalid_argument("replacement dataset does not hold the same points");
+  data_ = std::move(data);
 }
 
 void ScanLayer::setDatasetTransform(const RigidTransform& t) {

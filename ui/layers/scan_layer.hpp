@@ -53,6 +53,9 @@ class ScanLayer : public Layer {
 
   /// Dataset frame -> world (a registration result; identity by default).
   void setDatasetTransform(const RigidTransform& t);
+  /// Swaps in a dataset holding the same points (e.g. with sensor origins added): the display
+  /// data stays. Throws std::invalid_argument if this scan's point count differs.
+  void replaceData(std::shared_ptr<const Dataset> data);
   /// Recolours both representations now (on this thread: colorJob + applyColors). z range is
   /// world elevation for the Elevation mode.
   void setStyle(const PointStyle& style, double z_min, double z_max);

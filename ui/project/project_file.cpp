@@ -14,7 +14,9 @@
 #include "common/error.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "ui/app_context.hpp"
+#include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
+#include "ui/tasks/attach_trajectory.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/registration/registration_panel.hpp"
@@ -42,6 +44,12 @@ void saveProject(const AppContext& app, const QString& path) {
     e["file"] = (rel.startsWith("..") ? QFileInfo(file).absoluteFilePath() : rel).toStdString();
     e["visible"] = l->visible();
     e["transform"] = json::parse(transformToJson(layerTransform(*l)));
+    if (l->kind() == LayerKind::Dataset) {
+      const QString trajectory = static_cast<const DatasetLayer&>(*l).trajectoryPath();
+      const QString trel = dir.relativeFilePath(trajectory);
+      if (!trajectory.isEmpty())
+        e["trajectory"] = (trel.startsWith("..") ? QFileInfo(trajectory).absoluteFilePath() : trel).toStdString();
+    }
     if (app.registration && l.get() == app.registration->sourceLayer()) source = int(layers.size());
     if (app.registration && l.get() == app.registration->targetLayer()) target = int(layers.size());
     layers.push_back(e);
@@ -62,6 +70,7 @@ struct Entry {
   QString file;
   RigidTransform transform;
   bool visible = true;
+  QString trajectory;  ///< attached to a mobile scan (empty: none)
 };
 
 json readJson(const QString& path) {
@@ -98,6 +107,10 @@ void openProject(AppContext& app, const QString& path, ProjectDone done) {
     Entry entry;
     entry.file = dir.absoluteFilePath(QString::fromStdString(e.at("file").get<std::string>()));
     entry.visible = e.value("visible", true);
+    if (e.contains("trajectory")) {
+      if (!e.at("trajectory").is_string()) throw FileError(file, where + ".trajectory must be a string");
+      entry.trajectory = dir.absoluteFilePath(QString::fromStdString(e.at("trajectory").get<std::string>()));
+    }
     if (e.contains("transform")) {
       try {
         entry.transform = transformFromJson(e.at("transform").dump(), file);
@@ -143,21 +156,27 @@ void openProject(AppContext& app, const QString& path, ProjectDone done) {
     finish();
     return;
   }
+  // Done when every file is loaded and every trajectory attached (each counts in remaining).
+  auto step = [remaining, all_ok, finish](bool ok) {
+    *all_ok = *all_ok && ok;
+    if (--*remaining == 0) finish();
+  };
   loadFiles(
       app, files,
-      [&app, entries, layers](Layer& layer, const QString& p) {
+      [&app, entries, layers, remaining, step](Layer& layer, const QString& p) {
         for (std::size_t i = 0; i < entries->size(); ++i)
           if ((*entries)[i].file == p && !(*layers)[i]) {
             (*layers)[i] = &layer;
             setLayerTransform(app.scene, layer, (*entries)[i].transform);
             layer.setVisible((*entries)[i].visible);
+            if (!(*entries)[i].trajectory.isEmpty() && layer.kind() == LayerKind::Dataset) {
+              ++*remaining;
+              startAttachTrajectory(app, static_cast<DatasetLayer&>(layer), (*entries)[i].trajectory, step);
+            }
             break;
           }
       },
-      [remaining, all_ok, finish](const QString&, bool ok) {
-        *all_ok = *all_ok && ok;
-        if (--*remaining == 0) finish();
-      });
+      [step](const QString&, bool ok) { step(ok); });
 }
 
 }  // namespace plumb::ui

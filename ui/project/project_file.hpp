@@ -3,7 +3,8 @@
 // file when below it), transforms and visibility, and the registration setup (source, target,
 // every parameter through the core's param groups). Example:
 //   {"plumb-project": 1,
-//    "layers": [{"file": "indoor.e57", "visible": true, "transform": {"matrix": [[...]]}}, ...],
+//    "layers": [{"file": "indoor.e57", "visible": true, "transform": {"matrix": [[...]]}},
+//               {"file": "mms.las", "trajectory": "mms_trajectory.txt", ...}, ...],
 //    "registration": {"source": 0, "target": 1, "params": {"method": "auto", ...}}}
 #include <QString>
 

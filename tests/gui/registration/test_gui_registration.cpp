@@ -19,6 +19,7 @@
 #include "simulation/presets.hpp"
 #include "simulation/survey.hpp"
 #include "gui/image_checks.hpp"
+#include "gui/open_window.hpp"
 #include "support/test_support.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/feature_layer.hpp"
@@ -85,15 +86,9 @@ class GuiRegistrationTest : public QObject {
   void initTestCase() { demo(); }
 
   void init() {
-    window_ = std::make_unique<MainWindow>();
-    window_->resize(1400, 900);
-    window_->show();
-    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    test::openWindowWithFiles(window_, {q(demo().indoor), q(demo().model)});
+    if (QTest::currentTestFailed()) return;
     AppContext& app = window_->context();
-    QSignalSpy idle(&app.tasks, &TaskManager::idle);
-    window_->openFiles({q(demo().indoor), q(demo().model)});
-    QVERIFY(idle.wait(60000));
-    QVERIFY2(app.log.errorCount() == 0, qPrintable(app.log.toPlainText()));
     indoor_ = findLayerBySource(app.scene, q(demo().indoor));
     model_ = findLayerBySource(app.scene, q(demo().model));
     QVERIFY(indoor_ && model_);

@@ -28,6 +28,7 @@
 #include "gui/feature_fixtures.hpp"
 #include "gui/grid_ply.hpp"
 #include "gui/image_checks.hpp"
+#include "gui/menu_actions.hpp"
 #include "support/test_support.hpp"
 #include "ui/actions/file_dialogs.hpp"
 #include "ui/actions/recent_files.hpp"
@@ -50,23 +51,14 @@
 
 using namespace plumb;
 using namespace plumb::ui;
+using plumb::test::menuAction;
+using plumb::test::plainLabel;
 using plumb::test::writeGridPly;
 
 namespace {
 
 QString q(const std::filesystem::path& p) { return QString::fromStdString(p.string()); }
 
-QString plain(QString text) { return text.remove('&'); }
-
-/// The action `text` of the menu-bar menu `menu` (labels without their '&' shortcuts).
-QAction* menuAction(QMainWindow& window, const QString& menu, const QString& text) {
-  for (QAction* top : window.menuBar()->actions()) {
-    if (plain(top->text()) != menu || !top->menu()) continue;
-    for (QAction* a : top->menu()->actions())
-      if (plain(a->text()) == text) return a;
-  }
-  return nullptr;
-}
 
 /// Widget (logical) position of a world point as the view draws it now.
 QPoint projectToView(AppContext& app, const Eigen::Vector3d& world) {
@@ -188,7 +180,7 @@ class GuiInteractionTest : public QObject {
     for (QAction* a : recent_menu->menu()->actions())
       if (a->toolTip() == path) entry = a;
     QVERIFY(entry);
-    QCOMPARE(plain(entry->text()), QString("1 dropped.ply"));
+    QCOMPARE(plainLabel(entry->text()), QString("1 dropped.ply"));
     entry->trigger();
     QVERIFY(idle.wait(30000));
     QCOMPARE(app.scene.layers().size(), std::size_t{2});
