@@ -73,6 +73,10 @@ class DatasetLayer : public Layer {
   /// The trajectory file attached (empty: none).
   const QString& trajectoryPath() const { return trajectory_; }
 
+  /// Expires when this layer is destroyed: background work that outlives the layer checks it
+  /// before touching the layer.
+  std::weak_ptr<const char> lifetime() const { return alive_; }
+
   /// True once when the colours no longer match the style (new distances, or a transform
   /// change under Elevation colours); Scene::layerChanged then recolours in the background.
   bool takeStaleColours();

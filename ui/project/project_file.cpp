@@ -31,6 +31,16 @@ bool looksLikeProject(const QString& path) {
          path.endsWith(".json", Qt::CaseInsensitive);
 }
 
+namespace {
+
+/// How the project names `file`: relative to the project's folder when below it, else absolute.
+std::string projectPath(const QDir& dir, const QString& file) {
+  const QString rel = dir.relativeFilePath(file);
+  return (rel.startsWith("..") ? QFileInfo(file).absoluteFilePath() : rel).toStdString();
+}
+
+}  // namespace
+
 void saveProject(const AppContext& app, const QString& path) {
   const QDir dir = QFileInfo(path).absoluteDir();
   json layers = json::array();
@@ -39,16 +49,13 @@ void saveProject(const AppContext& app, const QString& path) {
     if (!isRegistrable(l.get())) continue;
     const QString file = layerSource(*l);
     if (file.isEmpty()) continue;  // generated data has no file to reopen
-    const QString rel = dir.relativeFilePath(file);
     json e;
-    e["file"] = (rel.startsWith("..") ? QFileInfo(file).absoluteFilePath() : rel).toStdString();
+    e["file"] = projectPath(dir, file);
     e["visible"] = l->visible();
     e["transform"] = json::parse(transformToJson(layerTransform(*l)));
     if (l->kind() == LayerKind::Dataset) {
-      const QString trajectory = static_cast<const DatasetLayer&>(*l).trajectoryPath();
-      const QString trel = dir.relativeFilePath(trajectory);
-      if (!trajectory.isEmpty())
-        e["trajectory"] = (trel.startsWith("..") ? QFileInfo(trajectory).absoluteFilePath() : trel).toStdString();
+      const QString& trajectory = static_cast<const DatasetLayer&>(*l).trajectoryPath();
+      if (!trajectory.isEmpty()) e["trajectory"] = projectPath(dir, trajectory);
     }
     if (app.registration && l.get() == app.registration->sourceLayer()) source = int(layers.size());
     if (app.registration && l.get() == app.registration->targetLayer()) target = int(layers.size());

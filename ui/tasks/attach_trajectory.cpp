@@ -1,7 +1,6 @@
 #include "ui/tasks/attach_trajectory.hpp"
 
 #include <QObject>
-#include <QPointer>
 
 #include <memory>
 
@@ -19,16 +18,12 @@ Task* startAttachTrajectory(AppContext& app, DatasetLayer& layer, const QString&
                             std::function<void(bool ok)> done) {
   const std::shared_ptr<const Dataset> data = layer.sharedDataset();
   const std::string file = path.toStdString();
-  // The layer may be removed while the task runs: remember that, and never touch it then.
-  auto removed = std::make_shared<bool>(false);
+  // The layer may be removed while the task runs: never touch it then.
+  const std::weak_ptr<const char> alive = layer.lifetime();
   DatasetLayer* target = &layer;
-  auto watch = std::make_shared<QMetaObject::Connection>(QObject::connect(
-      &app.scene, &Scene::layerAboutToBeRemoved, &app.scene, [removed, target](Layer* l) {
-        if (l == target) *removed = true;
-      }));
   Task* task = app.tasks.run(
       QObject::tr("Attaching trajectory to %1").arg(layer.name()),
-      [&app, data, file, path, removed, target](Progress& progress) -> Task::Apply {
+      [&app, data, file, path, alive, target](Progress& progress) -> Task::Apply {
         reportProgress(&progress, 0.0, "reading the trajectory");
         const Trajectory trajectory = readTrajectory(file);
         checkCanceled(&progress);
@@ -36,8 +31,8 @@ Task* startAttachTrajectory(AppContext& app, DatasetLayer& layer, const QString&
         auto with_origins = std::make_shared<Dataset>(*data);
         setSensorOriginsFromTrajectory(*with_origins, trajectory, file);
         const std::size_t poses = trajectory.times.size();
-        return [&app, with_origins, path, removed, target, poses] {
-          if (*removed) return;
+        return [&app, with_origins, path, alive, target, poses] {
+          if (alive.expired()) return;
           target->attachTrajectory(with_origins, path);
           app.scene.layerChanged(target);
           app.log.info(QObject::tr("%1: sensor origins of %2 points from the trajectory %3 (%4 poses)")
@@ -47,10 +42,9 @@ Task* startAttachTrajectory(AppContext& app, DatasetLayer& layer, const QString&
                            .arg(poses));
         };
       });
-  QObject::connect(task, &Task::finished, &app.scene, [&app, watch, removed, done](bool ok, const QString& message) {
-    QObject::disconnect(*watch);
+  QObject::connect(task, &Task::finished, &app.scene, [&app, alive, done](bool ok, const QString& message) {
     if (!ok && message != QLatin1String("cancelled")) app.log.error(message);
-    if (done) done(ok && !*removed);
+    if (done) done(ok && !alive.expired());
   });
   return task;
 }
