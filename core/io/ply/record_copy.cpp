@@ -1,6 +1,5 @@
 #include "io/ply/record_copy.hpp"
 
-#include <array>
 #include <cstring>
 #include <utility>
 
@@ -13,8 +12,8 @@ constexpr std::size_t wideOf(std::size_t b) { return b == 12 ? 16 : b == 3 ? 4 :
 /// Value i of one field, moved as one W-byte load/store (W >= B). For every record but the
 /// block's last, the W - B extra bytes read come from the next record (inside the block: a
 /// record holding the field has stride >= B >= W - B) and the extra bytes written land on
-/// value i + 1 of the same column, which is written after this one. The last record is copied exactly, so
-/// nothing is written past this block's part of a column.
+/// value i + 1 of the same column, which is written after this one. The last record is copied
+/// exactly, so nothing is written past this block's part of a column.
 template <std::size_t B>
 inline void copyWide(const char* from, char* column, std::size_t i) {
   constexpr std::size_t W = wideOf(B);
@@ -36,7 +35,7 @@ void copyField(const char* p, std::size_t k, std::size_t stride, const FieldCopy
 template <std::size_t... B>
 void copyFused(const char* p, std::size_t k, std::size_t stride, const FieldCopy* f, std::size_t base) {
   if (k == 0) return;
-  return [&]<std::size_t... J>(std::index_sequence<J...>) {
+  [&]<std::size_t... J>(std::index_sequence<J...>) {
     const std::size_t src[] = {f[J].src...};
     char* const dst[] = {(f[J].dst + base * B)...};
     for (std::size_t i = 0; i + 1 < k; ++i) {
