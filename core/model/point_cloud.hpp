@@ -26,7 +26,7 @@ using Rgb8 = std::array<std::uint8_t, 3>;
 /// LAS extra bytes, deviation...). Kept through read/write when formats allow.
 struct ScalarField {
   std::string name;
-  std::vector<float> values;
+  Column<float> values;
 };
 
 /// Axis-aligned box in world coordinates.

@@ -54,7 +54,7 @@ PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, b
   if (layout_.gps_at >= 0) cloud.timestamps.resize(n);
   if (layout_.rgb_at >= 0) cloud.colors.resize(n);
   auto add = [&](const std::string& name) {
-    cloud.scalar_fields.push_back({name, std::vector<float>(n)});
+    cloud.scalar_fields.push_back({name, Column<float>(n, 0.0f)});
   };
   if (auxiliary_) {
     add("scan_angle");

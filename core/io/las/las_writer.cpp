@@ -60,7 +60,7 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
   const PointLayout layout = pointLayout(format);
 
   // Which scalar fields go where.
-  auto aux = [&](const char* name) -> const std::vector<float>* {
+  auto aux = [&](const char* name) -> const Column<float>* {
     const ScalarField* f = cloud.findScalarField(name);
     return f && f->values.size() == cloud.size() ? &f->values : nullptr;
   };

@@ -275,7 +275,7 @@ Dataset readPcd(const std::filesystem::path& path, Progress* progress) {
       skipped += (skipped.empty() ? "" : " ") + f.name;
       continue;
     }
-    ScalarField sf{f.name, std::vector<float>(n)};
+    ScalarField sf{f.name, Column<float>(n)};  // every value set below
     for (std::size_t i = 0; i < n; ++i) sf.values[i] = getFloat(data + i * step + f.offset, f.datatype);
     c.scalar_fields.push_back(std::move(sf));
   }

@@ -1,6 +1,5 @@
 #include "io/ply/ply_reader.hpp"
 
-#include <sys/mman.h>
 #include <unistd.h>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -32,53 +31,6 @@ using ply::BlockReader;
 using ply::Element;
 using ply::Encoding;
 using ply::Type;
-
-#ifndef MADV_COLLAPSE
-#define MADV_COLLAPSE 25  // Linux 6.1
-#endif
-
-/// Storage of a column reserved for n values: [begin, begin + bytes).
-struct ColumnStorage {
-  char* begin = nullptr;
-  std::size_t bytes = 0;
-};
-
-/// Reserves n values (no value is written yet).
-template <class V>
-ColumnStorage reserveColumn(V& v, std::size_t n) {
-  v.clear();
-  v.shrink_to_fit();
-  v.reserve(n);
-  return {reinterpret_cast<char*>(v.data()), n * sizeof(typename V::value_type)};
-}
-
-/// Marks the large reserved columns for transparent huge pages (when the kernel runs THP in
-/// "madvise" mode): 512x fewer page faults, and the kernel zeroes 2 MiB at a time. Called once
-/// all columns are reserved, so that their mappings (adjacent, created one after the other)
-/// still share one kernel area; each column is marked over the whole pages it touches, from
-/// malloc's header page to the page of its last value, so the marked columns merge back into
-/// one THP area in which huge pages may straddle two columns and only the outer ends fall back
-/// to 4 KiB pages (marking columns one by one, or only their inner pages, left every column's
-/// partial first and last 2 MiB in 4K pages: ~7 MB for 3 columns, at ~5x the cost per byte).
-/// A hint only, also harmless on heap memory.
-void adviseHugePages(const std::vector<ColumnStorage>& columns) {
-  constexpr std::uintptr_t kPage = 4096;
-  for (const auto& c : columns) {
-    if (c.bytes < (4u << 20)) continue;
-    const auto start = reinterpret_cast<std::uintptr_t>(c.begin) & ~(kPage - 1);
-    const auto end = (reinterpret_cast<std::uintptr_t>(c.begin) + c.bytes + kPage - 1) & ~(kPage - 1);
-    ::madvise(reinterpret_cast<void*>(start), end - start, MADV_HUGEPAGE);
-  }
-  // malloc wrote each column's header before the marking, so that 4 KiB page is mapped and its
-  // 2 MiB region (shared with the neighbouring column) would stay in 4K pages: collapse it into
-  // a huge page now (a 4 KiB copy; fails harmlessly at the outer end of the area, or before
-  // Linux 6.1).
-  for (const auto& c : columns) {
-    if (c.bytes < (4u << 20)) continue;
-    const auto region = reinterpret_cast<std::uintptr_t>(c.begin) & ~((std::uintptr_t{2} << 20) - 1);
-    ::madvise(reinterpret_cast<void*>(region), std::size_t{2} << 20, MADV_COLLAPSE);
-  }
-}
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -453,7 +405,7 @@ class Reader {
         slots[k].scalar = extra_names.size();
         extra_names.emplace_back(nm);
       }
-    std::vector<std::vector<double>> extra_values(extra_names.size());
+    std::vector<Column<double>> extra_values(extra_names.size());
     std::size_t offset = 0;
     std::size_t n_scalars = 0;
     for (std::size_t i = 0; i < slots.size(); ++i) {
@@ -472,28 +424,18 @@ class Reader {
       return s.target == Target::Position && s.type == Type::Float64;
     });
 
-    // Reserve the std::vector columns, then mark them for huge pages (see adviseHugePages);
-    // Column<T> maps its large blocks 2 MiB-aligned for huge pages itself.
-    std::vector<ColumnStorage> storage;
-    for (auto& f : cloud.scalar_fields) storage.push_back(reserveColumn(f.values, n));
-    for (auto& v : extra_values) storage.push_back(reserveColumn(v, n));
-    adviseHugePages(storage);
-    // Size the columns. Positions, normals, colours and intensity (Column<T>) are left
-    // uninitialised by resize, so the threads that convert the records into them touch
-    // them first, window by window: the kernel's zeroing is spread evenly over the threads and
-    // each huge page is still in cache when the converted values overwrite its zeros (zeroing
-    // colours and intensity in a pass of their own first cost 70 MB of extra memory traffic and
-    // 22% of the read time on 10M points). The other columns are std::vectors whose resize
-    // zeroes: one task per column, so each takes its own page faults on its own thread.
-    std::vector<std::function<void()>> resizes;
-    for (auto& f : cloud.scalar_fields) resizes.emplace_back([&f, n] { f.values.resize(n); });
-    for (auto& v : extra_values) resizes.emplace_back([&v, n] { v.resize(n); });
-    tbb::parallel_for(std::size_t{0}, resizes.size(), [&](std::size_t k) { resizes[k](); },
-                      tbb::simple_partitioner());
+    // Size the columns. Column<T> leaves the values uninitialised (every record writes every
+    // column) and maps large columns on huge pages, so the threads that convert the records
+    // touch them first, window by window: the kernel's zeroing is spread evenly over the
+    // threads and each huge page is still in cache when the converted values overwrite its
+    // zeros (zeroing colours and intensity in a pass of their own first cost 70 MB of extra
+    // memory traffic and 22% of the read time on 10M points).
     cloud.positions.resize(n);
     if (has_normals) cloud.normals.resize(n);
     if (has_colors) cloud.colors.resize(n);
     if (ii >= 0) cloud.intensity.resize(n);
+    for (auto& f : cloud.scalar_fields) f.values.resize(n);
+    for (auto& v : extra_values) v.resize(n);
     Columns c;
     c.pos = cloud.positions.empty() ? nullptr : cloud.positions[0].data();
     c.nrm = has_normals && n ? cloud.normals[0].data() : nullptr;
@@ -503,7 +445,7 @@ class Reader {
     for (auto& v : extra_values) c.extras.push_back(v.data());
     struct StoreExtras {  // on every exit path that returns normally
       std::vector<std::string>& names;
-      std::vector<std::vector<double>>& values;
+      std::vector<Column<double>>& values;
       PointCloud& cloud;
       void operator()() {
         for (std::size_t k = 0; k < names.size(); ++k) {
@@ -521,7 +463,7 @@ class Reader {
           else if (nm == "column") fill(cloud.column);
           else if (nm == "classification") fill(cloud.classification);
           else if (nm == "scan_id") fill(cloud.scan_id);
-          std::vector<double>().swap(values[k]);
+          Column<double>().swap(values[k]);
         }
       }
     } store_extras{extra_names, extra_values, cloud};

@@ -138,7 +138,7 @@ TEST(E57Files, CartesianInvalidStateSingle) {
   expectScan(d.scans[0], 1, V(-1, -2, -3), V(-1, -2, -3), {});
   const Dataset k = read("cartesian_invalid_state_single.e57", true);
   expectScan(k.scans[0], 2, V(-4, -5, -6), V(-1, -2, -3), {"direction_only"});
-  EXPECT_EQ(k.scans[0].cloud.findScalarField("direction_only")->values, (std::vector<float>{0, 1}));
+  EXPECT_EQ(k.scans[0].cloud.findScalarField("direction_only")->values, (Column<float>{0, 1}));
 }
 
 TEST(E57Files, EmptyNoData3D) {

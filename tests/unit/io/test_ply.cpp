@@ -103,7 +103,7 @@ TEST(Ply, HandWrittenAsciiWithCustomTypes) {
   EXPECT_EQ(d.vertices.colors[2], (Rgb8{2, 2, 2}));
   EXPECT_FLOAT_EQ(d.vertices.intensity[1], 1.5f);
   ASSERT_NE(d.vertices.findScalarField("label"), nullptr);
-  EXPECT_EQ(d.vertices.findScalarField("label")->values, (std::vector<float>{-4, 12, 3}));
+  EXPECT_EQ(d.vertices.findScalarField("label")->values, (Column<float>{-4, 12, 3}));
   EXPECT_EQ(d.header.comments.size(), 2u);
 }
 
