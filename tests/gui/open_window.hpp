@@ -1,7 +1,8 @@
 #pragma once
-// The start of most workflow GUI tests: a shown main window with some files opened the way
+// The start of the GUI tests: a shown main window, optionally with some files opened the way
 // File > Open does (MainWindow::openFiles: background loading tasks), loaded without errors.
 #include <QSignalSpy>
+#include <QSize>
 #include <QStringList>
 #include <QTest>
 
@@ -13,14 +14,21 @@
 
 namespace plumb::test {
 
-/// Makes `window` (1400 x 900), shows it and opens `files`; fails the current test (check
+/// Makes `window` of `size` and shows it; fails the current test (check
+/// QTest::currentTestFailed()) if the window is not exposed.
+inline void showMainWindow(std::unique_ptr<ui::MainWindow>& window, QSize size) {
+  window = std::make_unique<ui::MainWindow>();
+  window->resize(size);
+  window->show();
+  QVERIFY(QTest::qWaitForWindowExposed(window.get()));
+}
+
+/// showMainWindow (1400 x 900), then opens `files`; fails the current test (check
 /// QTest::currentTestFailed()) if the window is not exposed, loading takes over 60 s or logs an
 /// error.
 inline void openWindowWithFiles(std::unique_ptr<ui::MainWindow>& window, const QStringList& files) {
-  window = std::make_unique<ui::MainWindow>();
-  window->resize(1400, 900);
-  window->show();
-  QVERIFY(QTest::qWaitForWindowExposed(window.get()));
+  showMainWindow(window, QSize(1400, 900));
+  if (QTest::currentTestFailed()) return;
   ui::AppContext& app = window->context();
   QSignalSpy idle(&app.tasks, &ui::TaskManager::idle);
   window->openFiles(files);

@@ -21,6 +21,7 @@
 #include "gui/feature_fixtures.hpp"
 #include "gui/grid_ply.hpp"
 #include "gui/image_checks.hpp"
+#include "gui/open_window.hpp"
 #include "support/test_support.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/feature_layer.hpp"
@@ -74,10 +75,8 @@ class GuiAppTest : public QObject {
 
  private slots:
   void init() {
-    window_ = std::make_unique<MainWindow>();
-    window_->resize(1100, 800);
-    window_->show();
-    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    test::showMainWindow(window_, QSize(1100, 800));
+    if (QTest::currentTestFailed()) return;
   }
   void cleanup() { window_.reset(); }
 

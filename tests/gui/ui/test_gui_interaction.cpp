@@ -29,6 +29,7 @@
 #include "gui/grid_ply.hpp"
 #include "gui/image_checks.hpp"
 #include "gui/menu_actions.hpp"
+#include "gui/open_window.hpp"
 #include "support/test_support.hpp"
 #include "ui/actions/file_dialogs.hpp"
 #include "ui/actions/recent_files.hpp"
@@ -86,10 +87,8 @@ class GuiInteractionTest : public QObject {
 
  private slots:
   void init() {
-    window_ = std::make_unique<MainWindow>();
-    window_->resize(1100, 800);
-    window_->show();
-    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    test::showMainWindow(window_, QSize(1100, 800));
+    if (QTest::currentTestFailed()) return;
     window_->context().recent.clear();
     chosen_.clear();
     requests_.clear();
