@@ -126,7 +126,8 @@ class GuiTrajectoryTest : public QObject {
     for (const auto& r : outdoor_->describe()) row = row || (r.first == "Trajectory" && r.second == q(demo().trajectory));
     QVERIFY(row);
 
-    // The origins interpolated from the 50 Hz trajectory are where the simulated sensor was.
+    // The origins interpolated at each point's time are where the simulated sensor was (the
+    // trajectory is the polyline the simulator drove, so a wrong time mapping shows as metres).
     const std::vector<Eigen::Vector3d> got = worldOrigins(outdoor_->dataset());
     const std::vector<Eigen::Vector3d> truth = worldOrigins(demo().outdoor);
     QCOMPARE(got.size(), truth.size());
