@@ -12,6 +12,11 @@
 // are kept as they are (assumed Z-up). IFC length units are applied by assimp; FBX's
 // UnitScaleFactor (centimetres per unit) is applied here; other formats are taken as metres.
 //
+// Isolation: assimp runs in a helper process (plumb-import, next to plumb-cli/plumb), so a
+// damaged or hostile file cannot take Plumb down: a crash (SIGSEGV, SIGABRT, stack overflow),
+// the time limit or the memory limit become a FileError naming the file, what happened and what
+// to do. The model comes back over a pipe in double precision (io/mesh/model_stream.hpp).
+//
 // Errors: FileError naming the file and what assimp said. For an IFC that assimp cannot
 // parse, the message names the entity (#id and type) it failed on, the line of that entity,
 // the file's schema, and what the user can do (export as IFC2X3, or as glTF/OBJ).
@@ -23,7 +28,16 @@
 
 namespace plumb {
 
-BimModel readMesh(const std::filesystem::path& path, Progress* progress = nullptr);
+/// Limits of one model import (the helper process is killed when it exceeds them).
+struct ImportLimits {
+  double seconds = 120.0;              ///< wall clock
+  unsigned long long memory_mib = 0;   ///< address space; 0: 3/4 of the physical memory
+  /// Defaults, overridden by PLUMB_IMPORT_TIMEOUT (seconds) and PLUMB_IMPORT_MEMORY_MB.
+  static ImportLimits fromEnvironment();
+};
+
+BimModel readMesh(const std::filesystem::path& path, Progress* progress = nullptr,
+                  const ImportLimits& limits = ImportLimits::fromEnvironment());
 
 /// Writes OBJ (no material file; one group per element) or binary STL through assimp's
 /// exporter, chosen by extension. Atomic. Throws FileError for other extensions.

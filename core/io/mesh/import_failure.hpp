@@ -1,0 +1,23 @@
+#pragma once
+// A plumb-import run that produced no model, worded as a FileError: what happened (crash and
+// signal, time limit, memory limit), where an IFC file is probably damaged, what to do.
+#include <filesystem>
+
+#include "common/error.hpp"
+#include "io/mesh/import_process.hpp"
+
+namespace plumb::import_failure {
+
+struct Limits {
+  double seconds;
+  unsigned long long memory_mib;
+};
+
+[[noreturn]] void raise(const std::filesystem::path& file, const import_process::Outcome& outcome,
+                        const Limits& limits);
+
+/// For an IFC file: "entity #8962 (IFCEXTRUDEDAREASOLID) refers to #8961, which the file does not
+/// define" with its line, for the first such reference; "" and no line when there is none.
+std::string danglingReference(const std::filesystem::path& ifc, FileLocation& where);
+
+}  // namespace plumb::import_failure
