@@ -16,6 +16,8 @@
 // damaged or hostile file cannot take Plumb down: a crash (SIGSEGV, SIGABRT, stack overflow),
 // the time limit or the memory limit become a FileError naming the file, what happened and what
 // to do. The model comes back over a pipe in double precision (io/mesh/model_stream.hpp).
+// Georeferenced IFC: large site / world-system translations are taken out before assimp and
+// added back in double (io/mesh/ifc_georef.hpp says exactly what is supported).
 //
 // Errors: FileError naming the file and what assimp said. For an IFC that assimp cannot
 // parse, the message names the entity (#id and type) it failed on, the line of that entity,

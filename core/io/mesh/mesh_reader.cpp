@@ -1,10 +1,15 @@
 // readMesh: the assimp import, isolated in the plumb-import helper process (mesh_io.hpp).
+#include <stdlib.h>
 #include <unistd.h>
 
 #include <cstdlib>
+#include <fstream>
+#include <optional>
 #include <system_error>
 
 #include "common/error.hpp"
+#include "io/mesh/file_extension.hpp"
+#include "io/mesh/ifc_georef.hpp"
 #include "io/mesh/import_failure.hpp"
 #include "io/mesh/import_process.hpp"
 #include "io/mesh/mesh_io.hpp"
@@ -12,6 +17,38 @@
 
 namespace plumb {
 namespace {
+
+/// A temporary copy of an IFC file, removed with this object.
+class TempIfc {
+ public:
+  explicit TempIfc(const std::string& text) {
+    std::string name = (std::filesystem::temp_directory_path() / "plumb-import-XXXXXX.ifc").string();
+    const int fd = mkstemps(name.data(), 4);
+    if (fd < 0) throw std::system_error(errno, std::generic_category(), "cannot create " + name);
+    ::close(fd);
+    path_ = name;
+    std::ofstream out(path_, std::ios::binary);
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    if (!out.flush()) throw FileError(path_, "cannot write the temporary copy (disk full?)");
+  }
+  ~TempIfc() {
+    std::error_code ec;
+    std::filesystem::remove(path_, ec);
+  }
+  TempIfc(const TempIfc&) = delete;
+  TempIfc& operator=(const TempIfc&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+std::optional<ifc_georef::Shift> georefShift(const std::filesystem::path& path) {
+  if (lowerExtension(path) != ".ifc") return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return ifc_georef::plan(text);
+}
 
 unsigned long long defaultMemoryMib() {
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
@@ -60,9 +97,14 @@ BimModel readMesh(const std::filesystem::path& path, Progress* progress, const I
   reportProgress(progress, 0.0, "importing model");
   const auto helper = helperOrThrow(path);
   const import_failure::Limits used{limits.seconds, limits.memory_mib ? limits.memory_mib : defaultMemoryMib()};
-  const auto outcome = import_process::run(helper, path, used.seconds, used.memory_mib, progress);
+  const auto shift = georefShift(path);
+  std::optional<TempIfc> copy;
+  if (shift) copy.emplace(shift->text);
+  const auto outcome = import_process::run(helper, copy ? copy->path() : path, used.seconds, used.memory_mib, progress);
   BimModel model = interpret(path, outcome, used);
   model.source = path;
+  if (shift)
+    for (auto& v : model.mesh.vertices) v += shift->metres;
   reportProgress(progress, 1.0, "importing model");
   return model;
 }

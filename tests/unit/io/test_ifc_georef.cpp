@@ -1,0 +1,107 @@
+// Georeferenced IFC through single-precision assimp: the site / world-system translation is
+// taken out before the import and added back in double, so national coordinates (here
+// Lambert-93) keep the 0.1 mm the point clouds are held to.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "io/mesh/ifc_georef.hpp"
+#include "io/mesh/mesh_io.hpp"
+#include "support/test_support.hpp"
+
+using namespace plumb;
+
+namespace {
+
+/// `ifc` (shared data) with line `from` replaced by `to` plus the extra entity line `added`.
+std::filesystem::path edited(const std::string& ifc, const std::string& from, const std::string& to,
+                             const std::string& added, const std::string& name) {
+  std::ifstream in(test::sharedData(ifc));
+  std::ostringstream out;
+  std::string line;
+  bool found = false;
+  while (std::getline(in, line)) {
+    if (line == from) {
+      out << to << '\n' << added << '\n';
+      found = true;
+    } else {
+      out << line << '\n';
+    }
+  }
+  EXPECT_TRUE(found) << from;
+  const auto path = test::scratchDir("ifc_georef") / name;
+  test::writeAll(path, out.str());
+  return path;
+}
+
+/// Largest distance between the vertices of `moved` and those of `original` + `shift`.
+double largestDeviation(const BimModel& original, const BimModel& moved, const Eigen::Vector3d& shift) {
+  EXPECT_EQ(moved.mesh.vertices.size(), original.mesh.vertices.size());
+  EXPECT_EQ(moved.mesh.triangles, original.mesh.triangles);
+  double worst = 0;
+  for (std::size_t i = 0; i < std::min(moved.mesh.vertices.size(), original.mesh.vertices.size()); ++i)
+    worst = std::max(worst, (moved.mesh.vertices[i] - (original.mesh.vertices[i] + shift)).norm());
+  return worst;
+}
+
+}  // namespace
+
+/// Imports `ifc` and its edited copy; returns the largest deviation from original + shift.
+double importedDeviation(const std::string& ifc, const std::filesystem::path& moved_path,
+                         const Eigen::Vector3d& shift) {
+  const BimModel original = readMesh(test::sharedData(ifc));
+  const BimModel moved = readMesh(moved_path);
+  EXPECT_EQ(moved.elements.size(), original.elements.size());
+  return largestDeviation(original, moved, shift);
+}
+
+TEST(IfcGeoref, DuplexSiteInLambert93KeepsTenthOfAMillimetre) {
+  // The duplex's IfcSite placement #38273 -> #38272 uses the shared origin #3: give it its own
+  // point in Lambert-93.
+  const auto path = edited("ifc/duplex.ifc", "#38272=IFCAXIS2PLACEMENT3D(#3,$,$);",
+                           "#38272=IFCAXIS2PLACEMENT3D(#900001,$,$);",
+                           "#900001=IFCCARTESIANPOINT((651000.123,6860000.456,40.));", "duplex_l93.ifc");
+  const double worst = importedDeviation("ifc/duplex.ifc", path, {651000.123, 6860000.456, 40.0});
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", worst);
+  RecordProperty("max_deviation_m", text);
+  EXPECT_LE(worst, 1e-4);
+}
+
+TEST(IfcGeoref, MillimetreWorldSystemOffsetIsScaled) {
+  // IfcOpenHouse is in millimetres; its world coordinate system #10 moves to Lambert-93 (mm).
+  const auto path = edited("ifc/IfcOpenHouse_IFC4.ifc", "#10=IFCAXIS2PLACEMENT3D(#9,#8,#7);",
+                           "#10=IFCAXIS2PLACEMENT3D(#900001,#8,#7);",
+                           "#900001=IFCCARTESIANPOINT((651000123.,6860000456.,40000.));", "openhouse_l93.ifc");
+  EXPECT_LE(importedDeviation("ifc/IfcOpenHouse_IFC4.ifc", path, {651000.123, 6860000.456, 40.0}), 1e-4);
+}
+
+TEST(IfcGeoref, PlanLeavesSharedPointsAloneAndKeepsLines) {
+  const std::string text =
+      "ISO-10303-21;\nHEADER;\nFILE_SCHEMA(('IFC2X3'));\nENDSEC;\nDATA;\n"
+      "#1=IFCCARTESIANPOINT((500000.,6000000.,10.));\n"
+      "#2=IFCAXIS2PLACEMENT3D(#1,$,$);\n"
+      "#3=IFCLOCALPLACEMENT($,#2);\n"
+      "#4=IFCSITE('g',$,$,$,$,#3,$,$,.ELEMENT.,$,$,$,$,$);\n"
+      "#5=IFCLOCALPLACEMENT($,#2);\n"
+      "#6=IFCSIUNIT(*,.LENGTHUNIT.,$,.METRE.);\n"
+      "#7=IFCUNITASSIGNMENT((#6));\n"
+      "#8=IFCCARTESIANPOINT((0.,0.,0.));\n"
+      "#9=IFCAXIS2PLACEMENT3D(#8,$,$);\n"
+      "#10=IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-5,#9,$);\n"
+      "#11=IFCPROJECT('p',$,'x',$,$,$,$,(#10),#7);\n"
+      "ENDSEC;\nEND-ISO-10303-21;\n";
+  const auto shift = ifc_georef::plan(text);
+  ASSERT_TRUE(shift);
+  EXPECT_EQ(shift->metres, Eigen::Vector3d(500000.0, 6000000.0, 10.0));
+  const std::string& out = shift->text;
+  EXPECT_NE(out.find("#1=IFCCARTESIANPOINT((500000.,6000000.,10.));"), std::string::npos);  // untouched
+  EXPECT_NE(out.find("#3=IFCLOCALPLACEMENT($,#13);\n#4="), std::string::npos) << out;  // same line
+  EXPECT_NE(out.find("#5=IFCLOCALPLACEMENT($,#15);"), std::string::npos) << out;
+  EXPECT_NE(out.find("#12=IFCCARTESIANPOINT((0.,0.,0.));\n#13=IFCAXIS2PLACEMENT3D(#12,$,$);"), std::string::npos) << out;
+  // A model near the origin is left alone.
+  EXPECT_FALSE(ifc_georef::plan(std::string(text).replace(text.find("500000.,6000000.,10."), 20, "5.,6.,1.")));
+}
