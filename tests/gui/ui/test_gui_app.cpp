@@ -19,6 +19,7 @@
 
 
 #include "gui/feature_fixtures.hpp"
+#include "support/damaged_models.hpp"
 #include "gui/grid_ply.hpp"
 #include "gui/image_checks.hpp"
 #include "gui/open_window.hpp"
@@ -294,6 +295,29 @@ class GuiAppTest : public QObject {
     for (const auto& args : logged)
       named |= args.at(1).toString().contains("plumb-missing.las");
     QVERIFY(named);
+  }
+
+  void damagedIfcIsLoggedAndTheAppCarriesOn() {
+    // duplex.ifc without entity #8961 crashes assimp (SIGSEGV): the import helper dies, the
+    // application logs the error naming the file and still opens the next model.
+    AppContext& app = window_->context();
+    const auto dir = test::scratchDir("gui_app_damaged_ifc");
+    const auto ifc = test::duplexWithout(dir, "#8961=", "duplex_no_8961.ifc");
+    test::writeAll(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\no tri\nf 1 2 3\n");
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    QSignalSpy logged(&app.log, &LogPanel::logged);
+    window_->openFiles({QString::fromStdString(ifc.string())});
+    QVERIFY(idle.wait(60000));
+    QCOMPARE(app.log.errorCount(), 1);
+    QVERIFY(app.scene.layers().empty());
+    bool named = false;
+    for (const auto& args : logged)
+      named |= args.at(1).toString().contains("duplex_no_8961.ifc") && args.at(1).toString().contains("assimp crashed");
+    QVERIFY2(named, qPrintable(app.log.toPlainText()));
+    window_->openFiles({QString::fromStdString((dir / "tri.obj").string())});
+    QVERIFY(idle.wait(60000));
+    QCOMPARE(app.scene.layers().size(), std::size_t{1});
+    QCOMPARE(app.log.errorCount(), 1);
   }
 
  private:
