@@ -1,6 +1,6 @@
 #!/bin/sh
 # Builds the .deb from a configured and built tree (plumb and plumb-cli must be built) and checks
-# it: contents (binaries, desktop entry, icon, MIME types for .e57/.las/.ply/.ifc and the
+# it: contents (binaries with the plumb-import helper, desktop entry, icon, MIME types for .e57/.las/.ply/.ifc and the
 # project file), the Depends line computed by dpkg-shlibdeps, and the installed binaries run
 # from a temporary root (plumb-cli --version and info on a real LAS file; plumb links Qt6, not
 # Qt5; with a display, plumb --screenshot renders the file). Registered as the CTest
@@ -21,7 +21,7 @@ deb=$(ls "$work"/out/*.deb 2>/dev/null | head -n 1)
 echo "package: $(basename "$deb") ($(du -k "$deb" | cut -f1) KiB)"
 
 dpkg-deb -c "$deb" | awk '{print $NF}' >contents.txt
-for f in ./usr/bin/plumb ./usr/bin/plumb-cli ./usr/share/applications/plumb.desktop \
+for f in ./usr/bin/plumb ./usr/bin/plumb-cli ./usr/bin/plumb-import ./usr/share/applications/plumb.desktop \
          ./usr/share/icons/hicolor/scalable/apps/plumb.svg ./usr/share/mime/packages/plumb.xml; do
   grep -qx "$f" contents.txt || fail "$f missing from the package"
 done
@@ -54,6 +54,13 @@ echo "installed plumb-cli --version: $version"
 root/usr/bin/plumb-cli info "$las" >info.txt || fail "installed plumb-cli info $las failed"
 grep -q "1065" info.txt || { cat info.txt >&2; fail "plumb-cli info does not report 1065 points"; }
 echo "installed plumb-cli info $(basename "$las"): 1065 points"
+# Models are imported by the plumb-import helper installed next to plumb-cli.
+ifc=$(dirname "$las")/../ifc/IfcOpenHouse_IFC4.ifc
+if [ -f "$ifc" ]; then
+  root/usr/bin/plumb-cli info "$ifc" >ifc.txt || fail "installed plumb-cli info $ifc failed (plumb-import?)"
+  grep -q "IfcWall: 4" ifc.txt || { cat ifc.txt >&2; fail "plumb-cli info does not report the 4 walls"; }
+  echo "installed plumb-cli info $(basename "$ifc"): 4 walls, through the installed plumb-import"
+fi
 ldd root/usr/bin/plumb >ldd.txt
 grep -q "libQt6Widgets" ldd.txt || fail "installed plumb does not link Qt6 Widgets"
 if grep -q "Qt5" ldd.txt; then grep Qt5 ldd.txt >&2; fail "installed plumb loads Qt5"; fi
