@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <map>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "io/mesh/step_entities.hpp"
@@ -24,25 +25,58 @@ struct Index {
   std::size_t last_end = 0;
 };
 
-bool kept(std::string_view type) {
-  static const char* const types[] = {"IFCLOCALPLACEMENT", "IFCAXIS2PLACEMENT3D", "IFCCARTESIANPOINT",
-                                      "IFCDIRECTION",      "IFCSITE",             "IFCPROJECT",
-                                      "IFCUNITASSIGNMENT", "IFCSIUNIT",
-                                      "IFCGEOMETRICREPRESENTATIONCONTEXT"};
+bool isHeadEntity(std::string_view type) {
+  static const char* const types[] = {"IFCLOCALPLACEMENT", "IFCSITE", "IFCPROJECT", "IFCUNITASSIGNMENT",
+                                      "IFCSIUNIT", "IFCGEOMETRICREPRESENTATIONCONTEXT"};
   return std::any_of(std::begin(types), std::end(types), [&](const char* t) { return type == t; });
 }
 
+/// Adds the entities whose ids are in `wanted` (one more pass over the text).
+void collectWanted(std::string_view text, const std::unordered_set<std::uint64_t>& wanted, Index& ix) {
+  if (wanted.empty()) return;
+  step::forEachEntity(text, [&](const step::Entity& e) {
+    if (wanted.count(e.id)) ix.by_id[e.id] = e;
+  });
+}
+
+/// The ids that the arguments `which` of the entities `ids` refer to.
+std::unordered_set<std::uint64_t> referenced(const Index& ix, const std::vector<std::uint64_t>& ids,
+                                             std::initializer_list<std::size_t> which) {
+  std::unordered_set<std::uint64_t> out;
+  for (const auto id : ids) {
+    const auto it = ix.by_id.find(id);
+    if (it == ix.by_id.end()) continue;
+    const auto args = step::splitArguments(it->second.args);
+    for (const auto i : which)
+      if (i < args.size() && step::reference(args[i])) out.insert(step::reference(args[i]));
+  }
+  return out;
+}
+
+/// Three passes, so that memory stays small on big files: the few head entities (placements
+/// at the top, site, project, units, contexts), then their axis placements, then the points
+/// and directions of those.
 Index buildIndex(std::string_view text) {
   Index ix;
   step::forEachEntity(text, [&](const step::Entity& e) {
     ix.max_id = std::max(ix.max_id, e.id);
     ix.last_end = e.end;
-    if (!kept(e.type)) return;
+    if (!isHeadEntity(e.type)) return;
+    const bool top = e.type == "IFCLOCALPLACEMENT" && step::splitArguments(e.args)[0] == "$";
+    if (e.type == "IFCLOCALPLACEMENT" && !top) return;
     ix.by_id[e.id] = e;
+    if (top) ix.top_level.push_back(e.id);
     if (e.type == "IFCSITE" && !ix.site) ix.site = e.id;
     if (e.type == "IFCPROJECT" && !ix.project) ix.project = e.id;
-    if (e.type == "IFCLOCALPLACEMENT" && step::splitArguments(e.args)[0] == "$") ix.top_level.push_back(e.id);
   });
+  std::vector<std::uint64_t> contexts;
+  for (const auto& [id, e] : ix.by_id)
+    if (e.type == "IFCGEOMETRICREPRESENTATIONCONTEXT") contexts.push_back(id);
+  auto placements = referenced(ix, ix.top_level, {1});
+  for (const auto id : referenced(ix, contexts, {4})) placements.insert(id);
+  collectWanted(text, placements, ix);
+  const std::vector<std::uint64_t> placement_ids(placements.begin(), placements.end());
+  collectWanted(text, referenced(ix, placement_ids, {0, 1, 2}), ix);
   return ix;
 }
 
