@@ -90,8 +90,10 @@ void raise(const std::filesystem::path& file, const import_process::Outcome& o, 
     throw FileError(file, "the model import was killed (SIGKILL), probably by the system for lack "
                           "of memory; close other programs, or split the model");
   if (!o.exited) crashed(file, o);
+  const std::string said = lastLine(o.error_tail);
   throw FileError(file, "the model import helper ended with exit status " + std::to_string(o.exit_code) +
-                            " and no result: " + lastLine(o.error_tail));
+                            " and no result" + (said.empty() ? "" : " (" + said + ")") +
+                            "; if this persists, reinstall Plumb");
 }
 
 }  // namespace plumb::import_failure

@@ -99,8 +99,13 @@ BimModel readMesh(const std::filesystem::path& path, Progress* progress, const I
   const import_failure::Limits used{limits.seconds, limits.memory_mib ? limits.memory_mib : defaultMemoryMib()};
   const auto shift = georefShift(path);
   std::optional<TempIfc> copy;
-  if (shift) copy.emplace(shift->text);
-  const auto outcome = import_process::run(helper, copy ? copy->path() : path, used.seconds, used.memory_mib, progress);
+  import_process::Outcome outcome;
+  try {
+    if (shift) copy.emplace(shift->text);
+    outcome = import_process::run(helper, copy ? copy->path() : path, used.seconds, used.memory_mib, progress);
+  } catch (const std::system_error& e) {  // no pipe, no process, no temporary file
+    throw FileError(path, std::string("cannot run the model import helper ") + helper.string() + ": " + e.what());
+  }
   BimModel model = interpret(path, outcome, used);
   model.source = path;
   if (shift)
