@@ -19,6 +19,7 @@ class FdWriter {
  public:
   explicit FdWriter(int fd) : fd_(fd) { buffer_.reserve(kChunk); }
   void bytes(const void* p, std::size_t n) {
+    if (n == 0) return;  // an empty table: p may be null
     const auto* c = static_cast<const char*>(p);
     while (n > 0 && ok_) {
       const std::size_t k = std::min(n, kChunk - buffer_.size());
@@ -72,6 +73,7 @@ class Reader {
  public:
   explicit Reader(std::string_view b) : b_(b) {}
   void bytes(void* p, std::size_t n) {
+    if (n == 0) return;  // an empty table: p may be null
     if (n > b_.size() - at_) throw std::runtime_error("the stream ends early");
     std::memcpy(p, b_.data() + at_, n);
     at_ += n;
