@@ -20,7 +20,12 @@ const ParamSchema<QualityParams>& QualityParams::schema() {
           .real(&P::max_point_rms, "max-rms", "Max point RMS", "m", 0.001, 1.0,
                 "Point RMS above this is flagged")
           .real(&P::warn_relative_gap, "warn-gap", "Warn score gap", "", 0.0, 1.0,
-                "Flag a runner-up within this relative score gap", true);
+                "Flag a runner-up within this relative score gap", true)
+          .real(&P::min_resistance, "min-resistance", "Min slide resistance", "", 0.0, 0.5,
+                "A direction along which a 0.2 m slide pushes fewer matched points than this "
+                "fraction off their surface is unconstrained: the registration fails", true)
+          .real(&P::warn_resistance, "warn-resistance", "Warn slide resistance", "", 0.0, 1.0,
+                "A direction weak by eigenvalue is flagged only below this slide resistance", true);
   return s;
 }
 
@@ -37,31 +42,85 @@ std::string axisName(const Eigen::Vector3d& a) {
 }
 }  // namespace
 
+namespace {
+/// Eigen-direction i of the normal matrix as a translation or a rotation axis.
+WeakDirection directionOf(const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>>& es,
+                          int i) {
+  const Eigen::Matrix<double, 6, 1> v = es.eigenvectors().col(i);
+  WeakDirection w;
+  w.translation = v.tail<3>().norm() >= v.head<3>().norm();
+  w.axis = (w.translation ? v.tail<3>() : v.head<3>()).normalized();
+  if (w.axis[2] < 0 || (std::abs(w.axis[2]) < 1e-9 && w.axis[0] < 0)) w.axis = -w.axis;
+  w.relative_eigenvalue = es.eigenvalues()(5) > 0 ? es.eigenvalues()(i) / es.eigenvalues()(5) : 0.0;
+  return w;
+}
+
+std::string describe(const WeakDirection& w) {
+  const std::string what = w.translation ? "translation along " + axisName(w.axis)
+                                         : "rotation about " + axisName(w.axis);
+  if (w.unconstrained)
+    return what + (w.translation ? " is unconstrained (the data slides along it freely)"
+                                 : " is unconstrained (the data turns about it freely)");
+  return what + (w.translation ? " is weakly constrained (the data slides along it)"
+                               : " is weakly constrained");
+}
+
+Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> solve(
+    const Eigen::Matrix<double, 6, 6>& h, std::array<double, 6>* eigenvalues) {
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(h);
+  if (eigenvalues)
+    for (int i = 0; i < 6; ++i) (*eigenvalues)[i] = es.eigenvalues()(i);
+  return es;
+}
+}  // namespace
+
 std::vector<WeakDirection> weakDirections(const Eigen::Matrix<double, 6, 6>& h, double ratio,
                                           std::array<double, 6>* eigenvalues) {
   std::vector<WeakDirection> out;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(h);
-  const auto ev = es.eigenvalues();
-  if (eigenvalues)
-    for (int i = 0; i < 6; ++i) (*eigenvalues)[i] = ev(i);
-  if (!(ev(5) > 0)) return out;
+  const auto es = solve(h, eigenvalues);
+  if (!(es.eigenvalues()(5) > 0)) return out;
   for (int i = 0; i < 6; ++i) {
-    const double rel = ev(i) / ev(5);
-    if (rel >= ratio) continue;
-    const Eigen::Matrix<double, 6, 1> v = es.eigenvectors().col(i);
-    WeakDirection w;
-    w.translation = v.tail<3>().norm() >= v.head<3>().norm();
-    w.axis = (w.translation ? v.tail<3>() : v.head<3>()).normalized();
-    if (w.axis[2] < 0 || (std::abs(w.axis[2]) < 1e-9 && w.axis[0] < 0)) w.axis = -w.axis;
-    w.relative_eigenvalue = rel;
-    w.description = w.translation ? "translation along " + axisName(w.axis) +
-                                        " is weakly constrained (the data slides along it)"
-                                  : "rotation about " + axisName(w.axis) +
-                                        " is weakly constrained";
+    WeakDirection w = directionOf(es, i);
+    if (w.relative_eigenvalue >= ratio) continue;
+    w.description = describe(w);
     out.push_back(w);
   }
   return out;
 }
+
+std::vector<WeakDirection> weakDirections(const RefineResult& r, const QualityParams& p,
+                                          std::array<double, 6>* eigenvalues) {
+  std::vector<WeakDirection> out;
+  const auto es = solve(r.normal_matrix, eigenvalues);
+  for (int i = 0; i < 6; ++i) {
+    WeakDirection w = directionOf(es, i);
+    w.resistance = r.direction_resistance[i];
+    w.unconstrained = !(es.eigenvalues()(5) > 0) || w.resistance < p.min_resistance;
+    const bool weak = w.relative_eigenvalue < p.weak_ratio && w.resistance < p.warn_resistance;
+    if (!w.unconstrained && !weak) continue;
+    w.description = describe(w);
+    out.push_back(w);
+  }
+  return out;
+}
+
+namespace {
+/// Beyond the papers: a registration whose refinement leaves a degree of freedom free (a
+/// single plane, parallel planes, a corridor without openings, a line) has no answer along it,
+/// whatever the global method claimed: it fails as degenerate, with the free directions named.
+bool failOnFreeDirections(QualityReport& q, std::ostringstream& verdict) {
+  std::vector<std::string> free;
+  for (const auto& w : q.weak_directions)
+    if (w.unconstrained) free.push_back(w.description);
+  if (free.empty()) return false;
+  q.status = "degenerate";
+  verdict << "Registration FAILED (degenerate): the data does not fix every degree of freedom: ";
+  for (std::size_t i = 0; i < free.size(); ++i) verdict << (i ? "; " : "") << free[i];
+  verdict << ". No transform is given: add data that constrains these directions (other walls, "
+             "openings, a neighbouring station) or tie points.";
+  return true;
+}
+}  // namespace
 
 QualityReport assessRegistration(const GlobalRegistrationResult& g, const RefineResult* refine,
                                  const QualityParams& p) {
@@ -102,7 +161,8 @@ QualityReport assessRegistration(const GlobalRegistrationResult& g, const Refine
     q.point_inliers = refine->inliers;
     q.refinement_shift = RigidTransform::translationError(refine->transform, g.transform);
     q.refinement_rotation = RigidTransform::rotationErrorDeg(refine->transform, g.transform);
-    q.weak_directions = weakDirections(refine->normal_matrix, p.weak_ratio, &q.eigenvalues);
+    q.weak_directions = weakDirections(*refine, p, &q.eigenvalues);
+    q.direction_resistance = refine->direction_resistance;
     if (refine->inliers < 10 || q.overlap_ratio < p.min_overlap) {
       fail = true;
       q.status = "refinement failed";
@@ -112,11 +172,15 @@ QualityReport assessRegistration(const GlobalRegistrationResult& g, const Refine
               << "%). The global alignment is probably wrong. "
               << refine->message;
     }
+    if (!fail) fail = failOnFreeDirections(q, verdict);
     if (q.point_rms > p.max_point_rms)
       q.warnings.push_back("point RMS " + std::to_string(q.point_rms) +
                            " m is above " + std::to_string(p.max_point_rms) +
                            " m: noisy data, moving objects or a partial misalignment");
   }
+  if (!refine)
+    q.warnings.push_back("refinement was off: the degrees of freedom were not checked on the "
+                         "points (run with refinement to know whether the data fixes all six)");
   if (g.runner_up && g.relative_gap < p.warn_relative_gap)
     q.warnings.push_back("a different transform scored only " +
                          std::to_string(100.0 * g.relative_gap) +
@@ -179,12 +243,15 @@ std::string qualityReportToJson(const QualityReport& q) {
                    {"refinement_shift_m", q.refinement_shift},
                    {"refinement_rotation_deg", q.refinement_rotation}};
     j["normal_matrix_eigenvalues"] = q.eigenvalues;
+    j["direction_resistance"] = q.direction_resistance;
   }
   json weak = json::array();
   for (const auto& w : q.weak_directions)
     weak.push_back({{"kind", w.translation ? "translation" : "rotation"},
                     {"axis", {w.axis.x(), w.axis.y(), w.axis.z()}},
                     {"relative_eigenvalue", w.relative_eigenvalue},
+                    {"slide_resistance", w.resistance},
+                    {"unconstrained", w.unconstrained},
                     {"description", w.description}});
   j["weak_directions"] = weak;
   json fig = json::object();

@@ -25,6 +25,15 @@ struct QualityParams {
   double max_point_rms = 0.03;
   /// A runner-up within this relative score gap is flagged (not failed), [0, 1].
   double warn_relative_gap = 0.2;
+  /// A direction is unconstrained (the registration fails as degenerate) when a slide of
+  /// RefineResult::kSlideDistance along it pushes fewer than this fraction of the matched
+  /// points off their surface, [0, 0.5]. Measured: single plane, two parallel planes, corridor
+  /// without openings, single line: <= 0.005 along their free directions; the demo's
+  /// indoor/outdoor pair 0.10 about its weakest axis, the real room pair >= 0.25 (docs/VERDICT.md).
+  double min_resistance = 0.02;
+  /// A direction weak by eigenvalue is still reported as a warning only when its slide
+  /// resistance is below this, [0, 1]: above it real geometry holds the direction.
+  double warn_resistance = 0.05;
   static const ParamSchema<QualityParams>& schema();
 };
 
@@ -32,6 +41,8 @@ struct WeakDirection {
   bool translation = true;   ///< translation along `axis`, or rotation about `axis`
   Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
   double relative_eigenvalue = 0.0;  ///< eigenvalue / largest eigenvalue
+  double resistance = 0.0;           ///< RefineResult::direction_resistance of this direction
+  bool unconstrained = false;        ///< resistance below QualityParams::min_resistance
   std::string description;
 };
 
@@ -58,6 +69,7 @@ struct QualityReport {
   double refinement_shift = 0.0;       ///< m, |t_refined - t_global|
   double refinement_rotation = 0.0;    ///< deg
   std::array<double, 6> eigenvalues{};  ///< of the scaled normal matrix, ascending
+  std::array<double, 6> direction_resistance{};  ///< RefineResult::direction_resistance
   std::vector<WeakDirection> weak_directions;
   std::vector<std::pair<std::string, double>> figures;
   std::vector<std::string> warnings;
@@ -70,6 +82,10 @@ QualityReport assessRegistration(const GlobalRegistrationResult& global,
 /// Weak directions of a 6x6 normal matrix (rotation first, rotation scaled by a length).
 std::vector<WeakDirection> weakDirections(const Eigen::Matrix<double, 6, 6>& normal_matrix,
                                           double weak_ratio, std::array<double, 6>* eigenvalues);
+/// Weak and unconstrained directions of a refinement: weak by eigenvalue ratio (and not held
+/// by a slide resistance of at least warn_resistance), or unconstrained by slide resistance.
+std::vector<WeakDirection> weakDirections(const RefineResult& refine, const QualityParams& p,
+                                          std::array<double, 6>* eigenvalues);
 
 /// JSON text of the report (every figure above).
 std::string qualityReportToJson(const QualityReport& report);

@@ -184,6 +184,17 @@ TEST(CliRegister, FailuresExplainAndLeaveOutputsUntouched) {
   EXPECT_NE(few.err.find("(too few features)"), std::string::npos) << few.err;
   untouched("too few features");
 
+  // Degenerate: ICP of a plane onto itself converges, but in-plane shifts and the rotation
+  // about the normal are free: it fails and names them (issue 13, degenerate suite).
+  reset();
+  const CliResult flat =
+      plumbCli(dir, "register plane.ply plane.ply --method icp -o out.ply --transform T.json --report R.json");
+  EXPECT_EQ(flat.exit_code, 2) << flat.err;
+  EXPECT_NE(flat.err.find("Registration FAILED (degenerate)"), std::string::npos) << flat.err;
+  EXPECT_NE(flat.err.find("rotation about vertical"), std::string::npos) << flat.err;
+  untouched("degenerate");
+  EXPECT_EQ(nlohmann::json::parse(readAll(dir / "R.json")).at("status"), "degenerate");
+
   // Unreadable input: one line naming the file and what is wrong.
   reset();
   const CliResult bad = plumbCli(dir, "register bad.ply b.ply -o out.ply --transform T.json");

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "acceptance_scenarios.hpp"
 
 #include <Eigen/Geometry>
@@ -157,6 +159,9 @@ CaseOutcome runPlumbCase(const Scenario& s, const RigidTransform& pose,
   o.seconds_features = r.seconds_features;
   o.seconds_global = r.seconds_global;
   o.seconds_refine = r.seconds_refine;
+  if (r.report.refined)
+    o.min_resistance = *std::min_element(r.report.direction_resistance.begin(),
+                                         r.report.direction_resistance.end());
   if (o.reported_success)
     o.error = poseError(r.transform(), pose.inverse(), moved.bounds().center());
   return o;

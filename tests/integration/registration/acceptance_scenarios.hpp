@@ -1,4 +1,5 @@
 #pragma once
+#include <limits>
 // The acceptance scenarios of the registration engine (issue 6), shared by the acceptance test
 // and bench_registration. Each scenario is simulated once (core/simulation, 3 mm TLS range
 // noise); every case moves the source cloud by a random pose (yaw uniform in [-180, 180] deg,
@@ -68,6 +69,9 @@ struct CaseOutcome {
   bool confidentWrong() const { return reported_success && !withinTolerance(error); }
   std::string method;
   std::string verdict;
+  /// Smallest slide resistance of the six directions (QualityReport::direction_resistance);
+  /// the degeneracy evidence: NaN when refinement did not run.
+  double min_resistance = std::numeric_limits<double>::quiet_NaN();
   double seconds_features = 0, seconds_global = 0, seconds_refine = 0, seconds_total = 0;
 };
 

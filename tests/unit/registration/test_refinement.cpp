@@ -68,7 +68,7 @@ TEST(IcpRefinement, ConvergesFromAFewDegreesAndDecimetres) {
   }
 }
 
-TEST(QualityReport, FindsTheSlidingDirectionOfACorridor) {
+TEST(QualityReport, ACorridorWithoutOpeningsIsDegenerateAlongItsAxis) {
   // A long corridor without end walls: translation along X is unconstrained.
   TriangleMesh m;
   m.vertices = {{0, 0, 0}, {30, 0, 0}, {30, 2, 0}, {0, 2, 0},
@@ -82,18 +82,92 @@ TEST(QualityReport, FindsTheSlidingDirectionOfACorridor) {
   g.status = RegistrationStatus::Success;
   g.method = "test";
   const QualityReport q = assessRegistration(g, &r);
-  ASSERT_TRUE(q.success) << q.verdict;
+  EXPECT_FALSE(q.success) << q.verdict;
+  EXPECT_EQ(q.status, "degenerate");
   ASSERT_FALSE(q.weak_directions.empty()) << q.verdict;
   EXPECT_TRUE(q.weak_directions[0].translation);
+  EXPECT_TRUE(q.weak_directions[0].unconstrained);
   EXPECT_GT(std::abs(q.weak_directions[0].axis.x()), 0.95);
-  EXPECT_NE(q.verdict.find("caution"), std::string::npos);
+  EXPECT_NE(q.verdict.find("translation along horizontal (1.00"), std::string::npos) << q.verdict;
   const std::string json = qualityReportToJson(q);
-  EXPECT_NE(json.find("weak_directions"), std::string::npos);
-  // A closed box has no weak direction.
+  EXPECT_NE(json.find("\"unconstrained\": true"), std::string::npos);
+  // A closed box has no weak direction: every slide pushes many points off their surface.
   const TriangleMesh box = boxesMesh(test::asymmetricRooms());
   const auto rb = refineRegistration(noisyScan(box, 0.08, 0.002, 6), noisyScan(box, 0.08, 0.002, 7),
                                      RigidTransform(), {});
-  EXPECT_TRUE(assessRegistration(g, &rb).weak_directions.empty());
+  const QualityReport qb = assessRegistration(g, &rb);
+  EXPECT_TRUE(qb.success) << qb.verdict;
+  EXPECT_TRUE(qb.weak_directions.empty()) << qb.verdict;
+  for (double resistance : rb.direction_resistance) EXPECT_GT(resistance, 0.1);
+}
+
+namespace {
+/// Points on a list of axis-aligned rectangles (3 mm noise): rect = {origin, edge u, edge v}.
+PointCloud noisyRectangles(const std::vector<std::array<Eigen::Vector3d, 3>>& rects, int per_rect,
+                           std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> n(0.0, 0.003);
+  PointCloud c;
+  for (const auto& r : rects)
+    for (int i = 0; i < per_rect; ++i) {
+      const Eigen::Vector3d p = r[0] + u(rng) * r[1] + u(rng) * r[2];
+      c.positions.push_back((p + Eigen::Vector3d(n(rng), n(rng), n(rng))).cast<float>());
+    }
+  return c;
+}
+
+struct DegenerateScene {
+  const char* name;
+  std::vector<std::array<Eigen::Vector3d, 3>> rects;
+  int free_directions;  ///< translations and rotations the data leaves free
+};
+
+std::vector<DegenerateScene> degenerateScenes() {
+  using V = Eigen::Vector3d;
+  const V x(10, 0, 0), y(0, 10, 0);
+  return {
+      {"single plane", {{V(0, 0, 0), x, y}}, 3},
+      {"two parallel planes", {{V(0, 0, 0), x, y}, {V(0, 0, 3), x, y}}, 3},
+      {"corridor without openings",
+       {{V(0, 0, 0), V(30, 0, 0), V(0, 2, 0)}, {V(0, 0, 3), V(30, 0, 0), V(0, 2, 0)},
+        {V(0, 0, 0), V(30, 0, 0), V(0, 0, 3)}, {V(0, 2, 0), V(30, 0, 0), V(0, 0, 3)}},
+       1},
+      // A line: a 10 m pole 6 mm thick (two thin strips).
+      {"single line", {{V(0, 0, 0), x, V(0, 0.006, 0)}, {V(0, 0, 0), x, V(0, 0, 0.006)}}, 2},
+  };
+}
+}  // namespace
+
+// Degenerate suite (issue 13): data that leaves degrees of freedom free never passes, even
+// when ICP lands near the truth by chance; the report names at least as many free directions.
+TEST(QualityReport, DegenerateScenesNeverSucceed) {
+  GlobalRegistrationResult g;
+  g.status = RegistrationStatus::Success;
+  g.method = "icp";
+  for (const auto& scene : degenerateScenes()) {
+    const PointCloud target = noisyRectangles(scene.rects, 30000, 1);
+    PointCloud source = noisyRectangles(scene.rects, 30000, 2);
+    // The source is shifted along the free directions; ICP cannot see the shift.
+    source.transform(RigidTransform::fromYaw(0.0, {0.3, -0.2, 0.0}));
+    const auto r = refineRegistration(source, target, RigidTransform(), {});
+    const QualityReport q = assessRegistration(g, &r);
+    EXPECT_FALSE(q.success) << scene.name << ": " << q.verdict;
+    EXPECT_EQ(q.status, "degenerate") << scene.name << ": " << q.verdict;
+    int unconstrained = 0;
+    for (const auto& w : q.weak_directions) unconstrained += w.unconstrained;
+    EXPECT_GE(unconstrained, scene.free_directions) << scene.name << ": " << q.verdict;
+  }
+}
+
+TEST(QualityReport, RefinementOffNeverClaimsWellConstrained) {
+  GlobalRegistrationResult g;
+  g.status = RegistrationStatus::Success;
+  g.method = "planes";
+  const QualityReport q = assessRegistration(g, nullptr);
+  EXPECT_TRUE(q.success);
+  EXPECT_EQ(q.verdict.find("well constrained"), std::string::npos) << q.verdict;
+  EXPECT_NE(q.verdict.find("caution"), std::string::npos) << q.verdict;
 }
 
 TEST(QualityReport, FailedGlobalResultIsAFailureWithoutTransform) {
