@@ -69,16 +69,17 @@ TEST(MeshIsolation, HugeObjPolygonStopsAtTheTimeLimit) {
   EXPECT_NE(msg.find("PLUMB_IMPORT_TIMEOUT"), std::string::npos) << msg;
 }
 
+// Not built into the AddressSanitizer tree: there the helper sets no address-space limit (ASan
+// reserves terabytes of shadow memory), so the test would have nothing to check.
+#if !defined(__SANITIZE_ADDRESS__)
 TEST(MeshIsolation, MemoryLimitIsAClearError) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "under AddressSanitizer the helper sets no address-space limit";
-#endif
   // The helper reads the duplex in ~54 MB (peak RSS); 32 MiB of address space is not enough.
   ImportLimits limits;
   limits.memory_mib = 32;
   const std::string msg = importError(test::sharedData("ifc/duplex.ifc"), limits);
   EXPECT_NE(msg.find("ran out of memory under the limit of 32 MiB"), std::string::npos) << msg;
 }
+#endif
 
 TEST(MeshIsolation, ParsedIfcErrorsKeepEntityAndLine) {
   // The error assimp reports (not a crash) still names the entity and its line.
