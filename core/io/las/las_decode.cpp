@@ -31,13 +31,11 @@ double extraValue(const std::uint8_t* p, int type) {
 }
 }  // namespace
 
-PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, bool auxiliary,
-                           PointCloud& cloud)
+PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, PointCloud& cloud)
     : layout_(pointLayout(h.format())),
       stride_(h.record_length),
       scale_(h.scale),
       extras_(std::move(extras)),
-      auxiliary_(auxiliary),
       cloud_(cloud) {
   for (int a = 0; a < 3; ++a) {
     shift_[a] = h.offset[a] - cloud.offset[a];
@@ -53,28 +51,20 @@ PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, b
   cloud.classification.resize(n);
   if (layout_.gps_at >= 0) cloud.timestamps.resize(n);
   if (layout_.rgb_at >= 0) cloud.colors.resize(n);
+  cloud.scan_angle.resize(n);
+  cloud.user_data.resize(n);
+  cloud.point_source_id.resize(n);
+  cloud.classification_flags.resize(n);
+  if (layout_.extended) cloud.scanner_channel.resize(n);
+  cloud.scan_flags.resize(n);
   auto add = [&](const std::string& name) {
     cloud.scalar_fields.push_back({name, Column<float>(n, 0.0f)});
   };
-  if (auxiliary_) {
-    add("scan_angle");
-    add("user_data");
-    add("point_source_id");
-    add("classification_flags");
-    if (layout_.extended) add("scanner_channel");
-    if (layout_.nir_at >= 0) add("nir");
-  }
+  if (layout_.nir_at >= 0) add("nir");
   for (const auto& e : extras_) add(e.name);
   // Pointers taken after every push_back (the vector no longer grows).
   std::size_t k = 0;
-  if (auxiliary_) {
-    angle_ = &cloud.scalar_fields[k++];
-    user_ = &cloud.scalar_fields[k++];
-    source_ = &cloud.scalar_fields[k++];
-    flags_ = &cloud.scalar_fields[k++];
-    if (layout_.extended) channel_ = &cloud.scalar_fields[k++];
-    if (layout_.nir_at >= 0) nir_ = &cloud.scalar_fields[k++];
-  }
+  if (layout_.nir_at >= 0) nir_ = &cloud.scalar_fields[k++];
   for (std::size_t e = 0; e < extras_.size(); ++e) extra_fields_.push_back(&cloud.scalar_fields[k++]);
 }
 
@@ -147,25 +137,7 @@ void PointDecoder::decode(const std::uint8_t* records, std::size_t n, std::size_
     }
     color_max_ = cmax;
   }
-  if (auxiliary_) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::uint8_t* p = records + i * stride_;
-      const std::size_t k = first + i;
-      if (extended) {
-        angle_->values[k] = load<std::int16_t>(p + 18) * 0.006f;
-        user_->values[k] = p[17];
-        source_->values[k] = load<std::uint16_t>(p + 20);
-        flags_->values[k] = p[15] & 0x0F;
-        channel_->values[k] = (p[15] >> 4) & 0x03;
-      } else {
-        angle_->values[k] = static_cast<std::int8_t>(p[16]);
-        user_->values[k] = p[17];
-        source_->values[k] = load<std::uint16_t>(p + 18);
-        flags_->values[k] = (p[15] >> 5) & 0x07;
-      }
-      if (nir_) nir_->values[k] = load<std::uint16_t>(p + layout_.nir_at);
-    }
-  }
+  decodeAuxiliary(records, n, first);
   for (std::size_t e = 0; e < extras_.size(); ++e) {
     const ExtraField& f = extras_[e];
     float* out = extra_fields_[e]->values.data() + first;
@@ -175,7 +147,45 @@ void PointDecoder::decode(const std::uint8_t* records, std::size_t n, std::size_
   }
 }
 
-bool PointDecoder::finishColors() { return color_max_ > 255; }
+void PointDecoder::decodeAuxiliary(const std::uint8_t* records, std::size_t n, std::size_t first) {
+  PointCloud& c = cloud_;
+  const std::uint8_t* p = records;
+  for (std::size_t i = 0, k = first; i < n; ++i, ++k, p += stride_) {
+    c.user_data[k] = p[17];
+    c.scan_flags[k] = (layout_.extended ? p[15] : p[14]) >> 6;  // direction, edge of line
+    if (layout_.extended) {
+      c.scan_angle[k] = static_cast<float>(load<std::int16_t>(p + 18) * 0.006);
+      c.point_source_id[k] = load<std::uint16_t>(p + 20);
+      c.classification_flags[k] = p[15] & 0x0F;
+      c.scanner_channel[k] = (p[15] >> 4) & 0x03;
+    } else {
+      c.scan_angle[k] = static_cast<std::int8_t>(p[16]);
+      c.point_source_id[k] = load<std::uint16_t>(p + 18);
+      c.classification_flags[k] = (p[15] >> 5) & 0x07;
+    }
+    if (nir_) nir_->values[k] = load<std::uint16_t>(p + layout_.nir_at);
+  }
+}
+
+namespace {
+// An all-zero LAS field carries nothing (the writer writes 0 when it is absent): free it.
+template <class V>
+void dropIfZero(V& v) {
+  for (const auto& x : v)
+    if (x != 0) return;
+  V().swap(v);
+}
+}  // namespace
+
+bool PointDecoder::finish() {
+  dropIfZero(cloud_.scan_angle);
+  dropIfZero(cloud_.user_data);
+  dropIfZero(cloud_.point_source_id);
+  dropIfZero(cloud_.classification_flags);
+  dropIfZero(cloud_.scanner_channel);
+  dropIfZero(cloud_.scan_flags);
+  return color_max_ > 255;
+}
 
 Bounds PointDecoder::worldBounds() const {
   Bounds b;

@@ -36,10 +36,9 @@ namespace plumb {
 struct LasReadOptions {
   /// Keep described extra bytes as ScalarFields.
   bool extra_bytes = true;
-  /// Also keep the LAS fields the model has no column for as ScalarFields: "scan_angle"
-  /// (degrees), "user_data", "point_source_id", "nir" (formats 8/10), "scanner_channel"
-  /// (formats 6-10) and "classification_flags" (synthetic=1, key-point=2, withheld=4,
-  /// overlap=8). The LAS writer writes these names back into their LAS fields.
+  /// Ignored, kept for source compatibility: scan angle, user data, point source ID,
+  /// classification flags, scanner channel, scan direction/edge flags always go to their PointCloud columns (freed
+  /// when 0 for every point), NIR (formats 8/10) to the ScalarField "nir".
   bool auxiliary_fields = false;
 };
 
