@@ -104,6 +104,24 @@ TEST(CliLossless, RegisterChecksEveryOutputBeforeRunning) {
   EXPECT_EQ(readAll(dir / "locked.json"), "old");
 }
 
+TEST(CliLossless, WritesAreFsyncedBeforeAndAfterTheRename) {
+  if (std::system("command -v strace > /dev/null 2>&1") != 0) GTEST_SKIP() << "strace not installed";
+  const auto dir = scratchDir("cli_fsync");
+  writeAll(dir / "a.ply", kTinyPly);
+  const std::string cmd = "cd '" + dir.string() + "' && strace -f -e trace=fsync,rename,openat -o trace.txt '" +
+                          PLUMB_CLI_PATH + "' convert a.ply b.xyz > /dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  // Order of the calls that matter: open temp, fsync, rename over b.xyz, open ".", fsync.
+  std::istringstream trace(readAll(dir / "trace.txt"));
+  std::string order;
+  for (std::string l; std::getline(trace, l);) {
+    if (l.find("fsync(") != std::string::npos) order += " fsync";
+    else if (l.find("rename(\".b.xyz.tmp-") != std::string::npos && l.find("\"b.xyz\") = 0") != std::string::npos) order += " rename";
+    else if (l.find("O_DIRECTORY") != std::string::npos && l.find("\".\"") != std::string::npos) order += " dir";
+  }
+  EXPECT_NE(order.find("fsync rename dir fsync"), std::string::npos) << order;
+}
+
 /// A binary PLY of n points at the origin (written fast: the records are zero bytes).
 void writeZeroPly(const fs::path& path, std::size_t n) {
   std::ofstream out(path, std::ios::binary);
