@@ -51,12 +51,7 @@ PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, P
   cloud.classification.resize(n);
   if (layout_.gps_at >= 0) cloud.timestamps.resize(n);
   if (layout_.rgb_at >= 0) cloud.colors.resize(n);
-  cloud.scan_angle.resize(n);
-  cloud.user_data.resize(n);
-  cloud.point_source_id.resize(n);
-  cloud.classification_flags.resize(n);
-  if (layout_.extended) cloud.scanner_channel.resize(n);
-  cloud.scan_flags.resize(n);
+  total_ = n;  // the LAS field columns are allocated by decodeAuxiliary when needed
   auto add = [&](const std::string& name) {
     cloud.scalar_fields.push_back({name, Column<float>(n, 0.0f)});
   };
@@ -147,45 +142,56 @@ void PointDecoder::decode(const std::uint8_t* records, std::size_t n, std::size_
   }
 }
 
-void PointDecoder::decodeAuxiliary(const std::uint8_t* records, std::size_t n, std::size_t first) {
-  PointCloud& c = cloud_;
-  const std::uint8_t* p = records;
-  for (std::size_t i = 0, k = first; i < n; ++i, ++k, p += stride_) {
-    c.user_data[k] = p[17];
-    c.scan_flags[k] = (layout_.extended ? p[15] : p[14]) >> 6;  // direction, edge of line
-    if (layout_.extended) {
-      c.scan_angle[k] = static_cast<float>(load<std::int16_t>(p + 18) * 0.006);
-      c.point_source_id[k] = load<std::uint16_t>(p + 20);
-      c.classification_flags[k] = p[15] & 0x0F;
-      c.scanner_channel[k] = (p[15] >> 4) & 0x03;
-    } else {
-      c.scan_angle[k] = static_cast<std::int8_t>(p[16]);
-      c.point_source_id[k] = load<std::uint16_t>(p + 18);
-      c.classification_flags[k] = (p[15] >> 5) & 0x07;
-    }
-    if (nir_) nir_->values[k] = load<std::uint16_t>(p + layout_.nir_at);
-  }
-}
-
 namespace {
-// An all-zero LAS field carries nothing (the writer writes 0 when it is absent): free it.
-template <class V>
-void dropIfZero(V& v) {
-  for (const auto& x : v)
-    if (x != 0) return;
-  V().swap(v);
+// One LAS field of a chunk into `column` (points [first, first+n)), allocated (zeros) only at
+// the first chunk where the field is not 0: a field that is 0 everywhere costs no memory.
+template <class V, class Get>
+void fillColumn(V& column, bool nonzero, std::size_t total, const std::uint8_t* records,
+                std::size_t stride, std::size_t n, std::size_t first, Get get) {
+  if (column.empty() && !nonzero) return;
+  if (column.empty()) column.resize(total, 0);
+  const std::uint8_t* p = records;
+  for (std::size_t i = 0; i < n; ++i, p += stride) column[first + i] = get(p);
 }
 }  // namespace
 
-bool PointDecoder::finish() {
-  dropIfZero(cloud_.scan_angle);
-  dropIfZero(cloud_.user_data);
-  dropIfZero(cloud_.point_source_id);
-  dropIfZero(cloud_.classification_flags);
-  dropIfZero(cloud_.scanner_channel);
-  dropIfZero(cloud_.scan_flags);
-  return color_max_ > 255;
+void PointDecoder::decodeAuxiliary(const std::uint8_t* records, std::size_t n, std::size_t first) {
+  const bool ext = layout_.extended;
+  const int angle_at = ext ? 18 : 16, source_at = ext ? 20 : 18, bits_at = ext ? 15 : 14;
+  // Which fields are not 0 in this chunk: one pass over bytes already in cache.
+  unsigned user = 0, angle = 0, source = 0, flags = 0, channel = 0, scan = 0;
+  const std::uint8_t* p = records;
+  for (std::size_t i = 0; i < n; ++i, p += stride_) {
+    user |= p[17];
+    angle |= p[angle_at] | (ext ? p[angle_at + 1] : 0);
+    source |= load<std::uint16_t>(p + source_at);
+    flags |= ext ? p[15] & 0x0F : p[15] >> 5;
+    channel |= ext ? p[15] & 0x30 : 0;
+    scan |= p[bits_at] >> 6;
+  }
+  PointCloud& c = cloud_;
+  const std::size_t total = total_;
+  auto fill = [&](auto& column, unsigned any, auto get) {
+    fillColumn(column, any != 0, total, records, stride_, n, first, get);
+  };
+  fill(c.user_data, user, [](const std::uint8_t* r) { return r[17]; });
+  fill(c.scan_flags, scan, [bits_at](const std::uint8_t* r) { return static_cast<std::uint8_t>(r[bits_at] >> 6); });
+  fill(c.point_source_id, source, [source_at](const std::uint8_t* r) { return load<std::uint16_t>(r + source_at); });
+  if (ext) {
+    fill(c.scan_angle, angle, [](const std::uint8_t* r) { return static_cast<float>(load<std::int16_t>(r + 18) * 0.006); });
+    fill(c.classification_flags, flags, [](const std::uint8_t* r) { return static_cast<std::uint8_t>(r[15] & 0x0F); });
+    fill(c.scanner_channel, channel, [](const std::uint8_t* r) { return static_cast<std::uint8_t>((r[15] >> 4) & 3); });
+  } else {
+    fill(c.scan_angle, angle, [](const std::uint8_t* r) { return static_cast<float>(static_cast<std::int8_t>(r[16])); });
+    fill(c.classification_flags, flags, [](const std::uint8_t* r) { return static_cast<std::uint8_t>(r[15] >> 5); });
+  }
+  if (nir_) {
+    const std::uint8_t* q = records + layout_.nir_at;
+    for (std::size_t i = 0; i < n; ++i, q += stride_) nir_->values[first + i] = load<std::uint16_t>(q);
+  }
 }
+
+bool PointDecoder::finish() { return color_max_ > 255; }
 
 Bounds PointDecoder::worldBounds() const {
   Bounds b;

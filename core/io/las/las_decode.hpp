@@ -21,8 +21,8 @@ class PointDecoder {
   /// [first, first+n).
   void decode(const std::uint8_t* records, std::size_t n, std::size_t first);
 
-  /// After the last chunk: frees LAS field columns that are 0 for every point; true when
-  /// the file held 16-bit colour (the RGB rule).
+  /// After the last chunk: true when the file held 16-bit colour (the RGB rule). LAS field
+  /// columns exist only for fields that are not 0 for every point.
   bool finish();
   /// Min/max of the decoded world coordinates (empty when no point).
   Bounds worldBounds() const;
@@ -33,6 +33,7 @@ class PointDecoder {
   void decodeAuxiliary(const std::uint8_t* records, std::size_t n, std::size_t first);
 
   PointLayout layout_;
+  std::size_t total_ = 0;  ///< points in the file
   std::size_t stride_;
   std::array<double, 3> scale_;
   std::array<double, 3> shift_;  ///< header offset - cloud offset

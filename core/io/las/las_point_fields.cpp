@@ -142,7 +142,14 @@ void RecordFields::storeClassAndAngle(std::uint8_t* r, std::size_t i) {
   }
 }
 
-void RecordFields::write(std::uint8_t* r, std::size_t i) {
+void RecordFields::write(std::uint8_t* records, std::size_t record_length, std::size_t begin,
+                         std::size_t end, const std::uint8_t* keep) {
+  std::uint8_t* r = records;
+  for (std::size_t i = begin; i < end; ++i)
+    if (keep[i]) writeOne(r, i), r += record_length;
+}
+
+void RecordFields::writeOne(std::uint8_t* r, std::size_t i) {
   if (cloud_.hasIntensity()) store<std::uint16_t>(r + 12, intensity_(cloud_.intensity[i]));
   storeReturns(r, i);
   storeClassAndAngle(r, i);

@@ -43,7 +43,10 @@ class RecordFields {
   RecordFields(const PointCloud& cloud, const PointLayout& layout, IntensityMap intensity,
                std::vector<const ScalarField*> extras);
 
-  void write(std::uint8_t* r, std::size_t i);
+  /// Fields of points [begin, end) with keep[i] != 0, into consecutive records of
+  /// `record_length` bytes from `records` (the same records the coordinates went to).
+  void write(std::uint8_t* records, std::size_t record_length, std::size_t begin, std::size_t end,
+             const std::uint8_t* keep);
 
   /// Points per return number (1..15) written so far.
   const std::array<std::uint64_t, 15>& byReturn() const { return by_return_; }
@@ -51,6 +54,7 @@ class RecordFields {
   std::uint64_t zeroReturns() const { return zero_returns_; }
 
  private:
+  void writeOne(std::uint8_t* r, std::size_t i);
   void storeReturns(std::uint8_t* r, std::size_t i);
   void storeClassAndAngle(std::uint8_t* r, std::size_t i);
 

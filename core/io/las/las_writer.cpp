@@ -201,9 +201,9 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
         hi[a] = std::max(hi[a], xyz[a]);
         store<std::int32_t>(r + 4 * a, xyz[a]);
       }
-      fields.write(r, i);
       r += record_length;
     }
+    fields.write(buf.data(), record_length, begin, end, keep.data());
     out.write(reinterpret_cast<const char*>(buf.data()), r - buf.data());
     reportProgress(progress, static_cast<double>(end) / static_cast<double>(cloud.size()),
                    "writing LAS points");
