@@ -21,26 +21,25 @@ std::string meta(const Dataset& d, const std::string& key) {
   return {};
 }
 
-// Every point and attribute (LAS fields included) of `b` equals `a`: positions within half the scale plus float
-// rounding of local coordinates (a few 1e-5 m for clouds spanning 1 km).
+// Each listed column of `b` equals that of `a`.
+template <class... Column>
+void expectSameColumns(const PointCloud& a, const PointCloud& b, Column... column) {
+  auto same = [&](auto member) { EXPECT_EQ(a.*member, b.*member); };
+  (same(column), ...);
+}
+
+// Every point and attribute (LAS fields included) of `b` equals `a`: positions within half
+// the scale plus float rounding of local coordinates (a few 1e-5 m for clouds spanning 1 km).
 void expectSamePoints(const PointCloud& a, const PointCloud& b, double scale) {
   ASSERT_EQ(a.size(), b.size());
   double worst = 0;
   for (std::size_t i = 0; i < a.size(); ++i)
     worst = std::max(worst, (a.world(i) - b.world(i)).cwiseAbs().maxCoeff());
   EXPECT_LE(worst, scale / 2 + 1e-4);
-  EXPECT_EQ(a.intensity, b.intensity);
-  EXPECT_EQ(a.return_index, b.return_index);
-  EXPECT_EQ(a.return_count, b.return_count);
-  EXPECT_EQ(a.classification, b.classification);
-  EXPECT_EQ(a.timestamps, b.timestamps);
-  EXPECT_EQ(a.colors, b.colors);
-  EXPECT_EQ(a.scan_angle, b.scan_angle);
-  EXPECT_EQ(a.user_data, b.user_data);
-  EXPECT_EQ(a.point_source_id, b.point_source_id);
-  EXPECT_EQ(a.classification_flags, b.classification_flags);
-  EXPECT_EQ(a.scanner_channel, b.scanner_channel);
-  EXPECT_EQ(a.scan_flags, b.scan_flags);
+  using P = PointCloud;
+  expectSameColumns(a, b, &P::intensity, &P::return_index, &P::return_count, &P::classification,
+                    &P::timestamps, &P::colors, &P::scan_angle, &P::user_data, &P::point_source_id,
+                    &P::classification_flags, &P::scanner_channel, &P::scan_flags);
 }
 
 TEST(LasRoundTrip, Las12Format3PreservesEveryPoint) {
