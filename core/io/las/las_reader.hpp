@@ -12,6 +12,10 @@
 //   and each channel becomes value >> 8 (the high byte; the writer stores v * 257, so a
 //   round trip is exact). If no channel exceeds 255 the writer stored 8-bit values (common
 //   in older files) and they are kept as they are.
+// - Scan angle (degrees), user data, point source ID, classification flags, scanner channel
+//   and scan direction/edge flags go to their PointCloud columns; a field that is 0 for every
+//   point has no column (the LAS writer writes 0 for it). NIR (formats 8/10) is the
+//   ScalarField "nir".
 // - GPS time goes to `timestamps` as stored; its kind (week time / adjusted standard) is in
 //   the metadata ("GPS time").
 // - Extra bytes described by the Extra Bytes VLR (LASF_Spec 4) become ScalarFields named after
