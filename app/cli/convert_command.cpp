@@ -2,7 +2,9 @@
 // formats, chosen by extension. The transform (JSON or 4x4 text, source -> target) is applied in
 // world coordinates: scan poses become T * pose (points stay in their scan frames), models are
 // transformed directly. --split writes one file per scan: OUT_STEM_<index>_<scan name>.EXT.
-// Writes are atomic: on any failure an existing OUT is left untouched.
+// Writes are atomic: on any failure an existing OUT is left untouched. OUT must not be IN
+// (also through a symlink, a hard link or another spelling): converting in place is refused.
+// The writer's notes (points dropped, intensity rescaled...) are printed after "wrote".
 #include <iostream>
 
 #include "cli/command.hpp"
@@ -16,6 +18,21 @@ std::string safeName(std::string s) {
   for (auto& c : s)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
   return s;
+}
+
+void refuseSameFile(const std::filesystem::path& in, const std::filesystem::path& out) {
+  std::error_code ec;
+  if (std::filesystem::equivalent(in, out, ec))
+    throw FileError(out, "is the input file itself; converting in place would rewrite it with "
+                         "whatever the output format cannot hold: write to another file");
+}
+
+/// "wrote OUT (N points, M scan(s))" with the writer's count when it has one, then its notes.
+void printWritten(const std::filesystem::path& out, const Dataset& d, const WriteReport& r) {
+  std::cout << "wrote " << out.string() << " (" << r.points.value_or(d.pointCount()) << " points";
+  if (r.dropped) std::cout << ", " << r.dropped << " dropped";
+  std::cout << ", " << d.scans.size() << " scan(s))\n";
+  for (const auto& note : r.notes) std::cout << "  note: " << note << "\n";
 }
 
 void applyTransform(Dataset& d, const RigidTransform& t) {
@@ -45,8 +62,9 @@ void addConvertCommand(CLI::App& app, Action& action) {
       if (!a->transform.empty()) t = readTransformFile(a->transform);
       WriteOptions wo;
       wo.binary = !a->ascii;
-      LoadedData data = readFile(a->in);
       const std::filesystem::path out(a->out);
+      refuseSameFile(a->in, out);
+      LoadedData data = readFile(a->in);
       if (auto* m = std::get_if<BimModel>(&data)) {
         if (a->split) throw InputError("--split applies to point datasets with several scans, not to models");
         if (!t.isIdentity()) m->transform(t);
@@ -57,9 +75,10 @@ void addConvertCommand(CLI::App& app, Action& action) {
       auto& d = std::get<Dataset>(data);
       applyTransform(d, t);
       if (!a->split) {
+        WriteReport report;
+        wo.report = &report;
         writeDataset(out, d, wo);
-        std::cout << "wrote " << out.string() << " (" << d.pointCount() << " points, " << d.scans.size()
-                  << " scan(s))\n";
+        printWritten(out, d, report);
         return 0;
       }
       for (std::size_t k = 0; k < d.scans.size(); ++k) {
@@ -70,8 +89,11 @@ void addConvertCommand(CLI::App& app, Action& action) {
         one.scans.push_back(std::move(d.scans[k]));
         const auto path = out.parent_path() / (out.stem().string() + "_" + std::to_string(k) + "_" +
                                                safeName(one.scans[0].name) + out.extension().string());
+        refuseSameFile(a->in, path);
+        WriteReport report;
+        wo.report = &report;
         writeDataset(path, one, wo);
-        std::cout << "wrote " << path.string() << " (" << one.pointCount() << " points)\n";
+        printWritten(path, one, report);
       }
       return 0;
     };

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/command.hpp"
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 
 int main(int argc, char** argv) {
@@ -9,6 +10,7 @@ int main(int argc, char** argv) {
                "plumb-cli"};
   app.set_version_flag("--version", std::string("plumb-cli ") + PLUMB_VERSION);
   app.require_subcommand(1);
+  plumb::removeTemporaryFilesOnSignals();  // an interrupted write leaves no temporary file
   plumb::cli::Action action;
   // One line per subcommand (each defined in its own cli/<name>_command.cpp).
   plumb::cli::addInfoCommand(app, action);

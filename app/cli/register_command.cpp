@@ -15,7 +15,9 @@
 // error naming the file); 2 registration failed (too few features, no hypothesis above
 // threshold, ambiguous, refinement lost the overlap): it explains why on stderr, writes the
 // report if asked (it says FAILED) and writes neither the transform nor the registered file,
-// so an existing output stays untouched.
+// so an existing output stays untouched. Every output (-o with its extension, --transform,
+// --report) is checked once the inputs are read and before the registration runs: a bad one
+// is exit 1 with nothing written.
 #include <nlohmann/json.hpp>
 
 #include <fstream>
@@ -104,6 +106,29 @@ void load(Side& s, const std::string& path, const std::string& trajectory, const
   }
 }
 
+/// Every output is checked before the registration runs, so a bad -o never comes after the
+/// transform was written.
+/// `model_source` unknown (a PLY holds either): the output extension decides.
+void checkOutputs(const RegisterOptions& o, std::optional<bool> model_source) {
+  if (!o.output.empty())
+    checkOutputPath(o.output, model_source.value_or(isModelFormat(formatFromExtension(o.output))));
+  for (const std::string* p : {&o.transform, &o.report})
+    if (!p->empty()) checkWritableTarget(*p);
+  const std::string* all[] = {&o.output, &o.transform, &o.report};
+  for (int a = 0; a < 3; ++a)
+    for (int b = a + 1; b < 3; ++b) {
+      std::error_code ec;
+      if (!all[a]->empty() && (*all[a] == *all[b] || std::filesystem::equivalent(*all[a], *all[b], ec)))
+        throw InputError("register: '" + *all[a] + "' is given for two outputs");
+    }
+  for (const std::string* out : all)
+    for (const std::string* in : {&o.source, &o.target}) {
+      std::error_code ec;
+      if (!out->empty() && std::filesystem::equivalent(*out, *in, ec))
+        throw InputError("register: the output '" + *out + "' is the input '" + *in + "'");
+    }
+}
+
 int run(const RegisterOptions& o) {
   const PipelineParams p = loadParams(o);
   if (o.print_params) {
@@ -112,9 +137,13 @@ int run(const RegisterOptions& o) {
   }
   if (o.source.empty() || o.target.empty())
     throw InputError("register: SOURCE and TARGET are required (or --print-params)");
+  const FileFormat source_format = formatFromExtension(o.source);  // checked before the slow part
+  checkOutputs(o, source_format == FileFormat::Ply ? std::nullopt
+                                                   : std::optional<bool>(isModelFormat(source_format)));
   Side src, tgt;
   load(src, o.source, o.source_trajectory, "--source-trajectory");
   load(tgt, o.target, o.target_trajectory, "--target-trajectory");
+  checkOutputs(o, std::holds_alternative<BimModel>(src.data));
   // Progress on a terminal only (logs stay clean).
   const bool tty = isatty(2);
   Progress progress([tty](double f, std::string_view stage) {

@@ -33,6 +33,7 @@ void writeSurveyFormat(FileFormat format, const std::filesystem::path& path, con
     LasWriteOptions o;
     o.version_minor = options.las_version_minor;
     o.scale = options.scaled_precision;
+    o.report = options.report;
     writeLas(path, data, o, progress);
     return;
   }

@@ -1,6 +1,7 @@
 // The format dispatcher: extension first, checked against the content's first bytes.
 #include "io/io.hpp"
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "io/dispatch.hpp"
 #include "io/mesh/mesh_io.hpp"
@@ -118,6 +119,18 @@ void writeDataset(const std::filesystem::path& path, const Dataset& data, const 
     default: break;
   }
   throw FileError(path, "cannot write a point cloud as " + formatName(f) + " (use .ply .pcd .xyz .csv .e57 .las)");
+}
+
+void checkOutputPath(const std::filesystem::path& path, bool model) {
+  const FileFormat f = formatFromExtension(path);
+  const bool ok = model ? (f == FileFormat::Ply || f == FileFormat::Obj || f == FileFormat::Stl)
+                        : (f == FileFormat::Ply || f == FileFormat::Pcd || f == FileFormat::Text ||
+                           f == FileFormat::E57 || f == FileFormat::Las);
+  if (!ok)
+    throw FileError(path, "cannot write " + std::string(model ? "a mesh" : "a point cloud") +
+                              " with the extension '" + path.extension().string() + "' (use " +
+                              (model ? ".ply .obj .stl" : ".ply .pcd .xyz .txt .csv .pts .asc .e57 .las") + ")");
+  checkWritableTarget(path);
 }
 
 void writeModel(const std::filesystem::path& path, const BimModel& model, const WriteOptions& options) {

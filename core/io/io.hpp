@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/progress.hpp"
+#include "io/write_report.hpp"
 #include "model/bim_model.hpp"
 #include "model/dataset.hpp"
 #include "model/rigid_transform.hpp"
@@ -30,7 +31,8 @@ struct WriteOptions {
   bool binary = true;             ///< PLY: binary little-endian (false: ASCII)
   double scaled_precision = 1e-4; ///< E57/LAS: position quantum, metres (0.1 mm default)
   bool e57_float_positions = false;
-  int las_version_minor = 4;      ///< LAS 1.2 (formats 2/3) or 1.4 (format 7)
+  int las_version_minor = 4;      ///< LAS 1.2 (formats 0-3) or 1.4 (formats 6-8)
+  WriteReport* report = nullptr;  ///< filled when given (LAS: counts, dropped points, notes)
 };
 
 /// What a file holds: a point dataset or a model.
@@ -49,6 +51,11 @@ BimModel readModel(const std::filesystem::path& path, Progress* progress = nullp
 /// Formats that hold one cloud (PLY, PCD, text, LAS) get the scans merged in the dataset frame.
 void writeDataset(const std::filesystem::path& path, const Dataset& data,
                   const WriteOptions& options = {}, Progress* progress = nullptr);
+/// Throws FileError, before anything is computed or written, when `path` cannot receive a
+/// dataset (`model` false) or a model (`model` true): unknown or unwritable extension,
+/// read-only file, missing or unwritable directory.
+void checkOutputPath(const std::filesystem::path& path, bool model);
+
 /// Writes a mesh (PLY, OBJ, STL via assimp or own PLY writer). Atomic.
 void writeModel(const std::filesystem::path& path, const BimModel& model,
                 const WriteOptions& options = {});

@@ -22,6 +22,13 @@ void forEachAttribute(Cloud& c, F&& f) {
   f(c.classification, "classification");
   f(c.sensor_origins, "sensor_origins");
   f(c.scan_id, "scan_id");
+  f(c.scan_angle, "scan_angle");
+  f(c.user_data, "user_data");
+  f(c.point_source_id, "point_source_id");
+  f(c.classification_flags, "classification_flags");
+  f(c.scanner_channel, "scanner_channel");
+  f(c.scan_flags, "scan_flags");
+  f(c.color_invalid, "color_invalid");
 }
 }  // namespace
 
@@ -131,6 +138,13 @@ PointCloud PointCloud::subset(const std::vector<std::size_t>& indices) const {
   pick(classification, out.classification);
   pick(sensor_origins, out.sensor_origins);
   pick(scan_id, out.scan_id);
+  pick(scan_angle, out.scan_angle);
+  pick(user_data, out.user_data);
+  pick(point_source_id, out.point_source_id);
+  pick(classification_flags, out.classification_flags);
+  pick(scanner_channel, out.scanner_channel);
+  pick(scan_flags, out.scan_flags);
+  pick(color_invalid, out.color_invalid);
   for (const auto& f : scalar_fields) {
     ScalarField g{f.name, {}};
     pick(f.values, g.values);
@@ -172,6 +186,13 @@ void PointCloud::append(const PointCloud& other) {
   join(classification, other.classification, false);
   join(sensor_origins, other.sensor_origins, true);
   join(scan_id, other.scan_id, false);
+  join(scan_angle, other.scan_angle, false);
+  join(user_data, other.user_data, false);
+  join(point_source_id, other.point_source_id, false);
+  join(classification_flags, other.classification_flags, false);
+  join(scanner_channel, other.scanner_channel, false);
+  join(scan_flags, other.scan_flags, false);
+  join(color_invalid, other.color_invalid, false);
   std::vector<ScalarField> fields;
   for (auto& f : scalar_fields) {
     const ScalarField* g = other.findScalarField(f.name);

@@ -66,6 +66,15 @@ class PointCloud {
   Column<Eigen::Vector3f> sensor_origins;             ///< per-point sensor position, local frame
   std::vector<std::uint16_t> scan_id;                 ///< index of the scan a point came from
   std::vector<ScalarField> scalar_fields;             ///< custom float attributes
+  // LAS point fields, kept so LAS -> LAS is lossless (absent = 0 for every point).
+  Column<float> scan_angle;                           ///< degrees (LAS 1.4: raw * 0.006)
+  std::vector<std::uint8_t> user_data;
+  std::vector<std::uint16_t> point_source_id;
+  std::vector<std::uint8_t> classification_flags;     ///< 1 synthetic, 2 key-point, 4 withheld, 8 overlap
+  std::vector<std::uint8_t> scanner_channel;          ///< 0..3
+  std::vector<std::uint8_t> scan_flags;               ///< 1 scan direction, 2 edge of flight line
+  /// 1 where the colour is unknown (E57 isColorInvalid); `colors` holds 0 there.
+  std::vector<std::uint8_t> color_invalid;
 
   /// Organized scans: grid size (rows x columns); 0 when unorganized.
   std::int32_t grid_rows = 0;

@@ -48,9 +48,17 @@ Dataset readFromSource(const e57::ByteSource& source, const std::filesystem::pat
                 FileLocation{std::nullopt, std::nullopt, s.points_path});
   }
   std::uint64_t done = 0;
+  std::size_t skipped = 0;
   for (std::size_t k = 0; k < info.scans.size(); ++k) {
     checkCanceled(progress);
     const auto& s = info.scans[k];
+    if (!e57::hasCoordinates(s)) {  // the other scans are still read
+      ++skipped;
+      data.metadata.emplace_back("warning", "scan " + std::to_string(k) + " ('" + s.name + "', " +
+                                                s.points_path + ") skipped: its prototype has neither "
+                                                "cartesianX/Y/Z nor sphericalRange/Azimuth/Elevation");
+      continue;
+    }
     if (progress && total > 0) {
       Progress sub = progress->sub(static_cast<double>(done) / total,
                                    static_cast<double>(done + s.record_count) / total);
@@ -60,6 +68,9 @@ Dataset readFromSource(const e57::ByteSource& source, const std::filesystem::pat
     }
     done += s.record_count;
   }
+  if (skipped > 0 && skipped == info.scans.size())
+    file.fail("no scan has coordinates (cartesianX/Y/Z or sphericalRange/Azimuth/Elevation)",
+              FileLocation{std::nullopt, std::nullopt, info.scans[0].points_path + "/prototype"});
   reportProgress(progress, 1.0, "reading E57");
   return data;
 }

@@ -18,6 +18,10 @@
 //   fields *:normalX/Y/Z), returnIndex (0-based in E57, stored +1 like LAS) / returnCount,
 //   timeStamp (NaN where isTimeStampInvalid=1), classification (any prefix). Other numeric
 //   fields are kept as scalar fields under their E57 name. Images2D are skipped.
+// - isColorInvalid = 1: colour 0 and color_invalid = 1 for that point; a scan without any
+//   valid colour has no colour column.
+// - A data3D without coordinates in its prototype is skipped with a "warning" metadata entry;
+//   the file fails only when no scan has coordinates.
 // - Every page read has its CRC-32C checked. Any inconsistency is a FileError naming the
 //   file, what is wrong and where (byte offset, page, XML element path); counts are validated
 //   against the file size before any allocation.

@@ -123,7 +123,31 @@ void allocate(V& v, std::size_t n) {
 
 constexpr std::size_t kBlock = 4096;  // records per block: the double columns stay in L2 cache
 
+// isColorInvalid: invalid colours are 0 and flagged in color_invalid; a scan without a single
+// valid colour has no colour at all, one with all colours valid no flags.
+void settleColorValidity(PointCloud& cloud, const std::string& prefix,
+                         std::vector<std::pair<std::string, std::string>>& metadata) {
+  if (cloud.color_invalid.empty()) return;
+  const auto invalid = static_cast<std::size_t>(
+      std::count(cloud.color_invalid.begin(), cloud.color_invalid.end(), std::uint8_t{1}));
+  if (invalid == 0 || invalid == cloud.size()) cloud.color_invalid = {};
+  if (invalid == 0) return;
+  if (invalid == cloud.size()) cloud.colors = {};
+  metadata.emplace_back(prefix + "invalid colours", std::to_string(invalid) + " of " +
+                                                        std::to_string(cloud.size()) +
+                                                        (cloud.colors.empty() ? " (colour dropped)" : ""));
+}
+
 }  // namespace
+
+bool hasCoordinates(const ScanInfo& info) {
+  bool has[RoleCount] = {};
+  for (const auto& f : info.fields) {
+    const int r = roleOf(f.name);
+    if (r >= 0) has[r] = true;
+  }
+  return (has[X] && has[Y] && has[Z]) || (has[Range] && has[Azimuth] && has[Elevation]);
+}
 
 Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
               const E57ReadOptions& options, Progress* progress,
@@ -207,6 +231,7 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
   allocate(cloud.positions, n_records);
   if (has_intensity) allocate(cloud.intensity, n_records);
   if (colors) allocate(cloud.colors, n_records);
+  if (colors && col[ColorInvalid] >= 0) allocate(cloud.color_invalid, n_records);
   if (has_normals) allocate(cloud.normals, n_records);
   if (has_grid) allocate(cloud.row, n_records), allocate(cloud.column, n_records);
   if (has_returns) allocate(cloud.return_index, n_records), allocate(cloud.return_count, n_records);
@@ -301,6 +326,13 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
           d[j] = {colorScale[0](r[i]), colorScale[1](g[i]), colorScale[2](b[i])};
         }
       }
+      if (const double* bad = c(ColorInvalid)) {
+        std::uint8_t* flag = cloud.color_invalid.data() + out;
+        for (std::size_t j = 0; j < m; ++j) {
+          flag[j] = bad[sel[j]] != 0;
+          if (flag[j]) d[j] = {0, 0, 0};
+        }
+      }
     }
     if (has_grid) {
       const double *r = c(Row), *cc = c(Column);
@@ -364,6 +396,8 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
   trim(cloud.positions), trim(cloud.intensity), trim(cloud.colors), trim(cloud.normals);
   trim(cloud.row), trim(cloud.column), trim(cloud.return_index), trim(cloud.return_count);
   trim(cloud.timestamps), trim(cloud.classification), trim(cloud.sensor_origins);
+  trim(cloud.color_invalid);
+  settleColorValidity(cloud, prefix, metadata);
   for (auto& f : cloud.scalar_fields) trim(f.values);
   if (has_grid && !cloud.empty()) {
     auto extent = [](std::int64_t data_max, const std::optional<Limits>& l) {

@@ -8,6 +8,9 @@
 
 namespace plumb::e57 {
 
+/// True when the prototype of `info` has cartesianX/Y/Z or sphericalRange/Azimuth/Elevation.
+bool hasCoordinates(const ScanInfo& info);
+
 /// Reads the points of `info` (scan number `index`) from `file`. Adds facts to `metadata`.
 Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
               const E57ReadOptions& options, Progress* progress,

@@ -103,6 +103,10 @@ std::vector<OutField> describeScan(const PointCloud& cloud, const E57WriteOption
       const std::int64_t lo = b.empty() ? 0 : toRaw(b.min[a], q);
       const std::int64_t hi = b.empty() ? 0 : toRaw(b.max[a], q);
       f = scaledAxisField(names[a], cloud.positions, offset, a, q, lo, hi, lo);
+      if (w.bounds) {  // the bounds of the stored (quantized) values, which readers decode
+        w.bounds->min[a] = static_cast<double>(lo) * q;
+        w.bounds->max[a] = static_cast<double>(hi) * q;
+      }
     }
     fields.push_back(std::move(f));
   }
@@ -144,6 +148,13 @@ std::vector<OutField> describeScan(const PointCloud& cloud, const E57WriteOption
       OutField f{integerSpec(names_rgb[c], 0, 255), {}, {}};
       f.integers = [&cloud, c](std::size_t begin, std::size_t count, std::int64_t* out) {
         for (std::size_t i = 0; i < count; ++i) out[i] = cloud.colors[begin + i][c];
+      };
+      fields.push_back(std::move(f));
+    }
+    if (cloud.color_invalid.size() == n) {  // isColorInvalid: 1 where the colour is unknown
+      OutField f{integerSpec("isColorInvalid", 0, 1), {}, {}};
+      f.integers = [&cloud](std::size_t begin, std::size_t count, std::int64_t* out) {
+        for (std::size_t i = 0; i < count; ++i) out[i] = cloud.color_invalid[begin + i] != 0;
       };
       fields.push_back(std::move(f));
     }

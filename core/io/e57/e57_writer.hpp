@@ -1,14 +1,17 @@
 #pragma once
 // E57 writer. Each Scan becomes one data3D entry with its pose (normalised double quaternion +
-// translation), GUID (kept from the scan or generated), name, description, cartesianBounds,
-// and a point prototype of: cartesianX/Y/Z as ScaledInteger with quantum `scaled_precision`
+// translation), GUID (kept from the scan or generated), name, description (String values
+// with bytes XML cannot carry replaced by U+FFFD), cartesianBounds (of the stored, quantized
+// values), and a point prototype of: cartesianX/Y/Z as ScaledInteger with quantum `scaled_precision`
 // (limits from the data, so bits = ceil(log2(range/precision + 1))) or as Float double;
 // cartesianInvalidState (only when some position is not finite: those points are written as
 // invalid); intensity (Integer when every value is a whole number, else Float single, with
-// intensityLimits); colorRed/Green/Blue Integer 0..255 with colorLimits; rowIndex/columnIndex
+// intensityLimits); colorRed/Green/Blue Integer 0..255 with colorLimits (and isColorInvalid
+// from color_invalid); rowIndex/columnIndex
 // with indexBounds (all six children, as E57RefImpl tools require); returnIndex (0-based)
 // and returnCount; timeStamp (Float double); normals as the nor:normalX/Y/Z extension.
-// Classification and custom scalar fields have no standard E57 field and are not written.
+// Classification, the LAS fields and custom scalar fields have no standard E57 field and
+// are not written.
 // The file is streamed (one packet and one page in memory), has no index packets and writes
 // empty scans in the form both libE57Format 3.x and E57RefImpl tools read (E57_FACTS.md
 // pitfall 8), and is replaced atomically.

@@ -14,7 +14,46 @@ std::string num(double v) {
   return std::string(buf, end);
 }
 
-std::string cdata(const std::string& s) {
+/// Length of the valid UTF-8 sequence at s[i] that XML 1.0 allows as a character, else 0:
+/// no C0 control but tab/newline/return, no overlong form, surrogate, U+FFFE/U+FFFF or
+/// code point beyond U+10FFFF.
+std::size_t xmlCharLength(const std::string& s, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned c = byte(i);
+  if (c < 0x80) return (c >= 0x20 || c == '\t' || c == '\n' || c == '\r') ? 1 : 0;
+  const std::size_t len = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 0;
+  if (len == 0 || i + len > s.size()) return 0;
+  unsigned cp = c & (0x7F >> len);
+  for (std::size_t k = 1; k < len; ++k) {
+    if ((byte(i + k) & 0xC0) != 0x80) return 0;
+    cp = (cp << 6) | (byte(i + k) & 0x3F);
+  }
+  const unsigned min_cp[] = {0, 0, 0x80, 0x800, 0x10000};
+  const bool ok = cp >= min_cp[len] && cp <= 0x10FFFF && !(cp >= 0xD800 && cp <= 0xDFFF) &&
+                  cp != 0xFFFE && cp != 0xFFFF;
+  return ok ? len : 0;
+}
+
+/// `s` with every byte XML cannot carry (control characters, invalid UTF-8) replaced by
+/// U+FFFD, so the XML section stays well-formed whatever a scan name holds.
+std::string xmlText(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (std::size_t i = 0; i < s.size();) {
+    const std::size_t len = xmlCharLength(s, i);
+    if (len == 0) {
+      out += "\xEF\xBF\xBD";
+      ++i;
+    } else {
+      out.append(s, i, len);
+      i += len;
+    }
+  }
+  return out;
+}
+
+std::string cdata(const std::string& raw) {
+  const std::string s = xmlText(raw);
   std::string out = "<![CDATA[";
   std::size_t start = 0;
   for (std::size_t p; (p = s.find("]]>", start)) != std::string::npos; start = p + 2)

@@ -31,13 +31,11 @@ double extraValue(const std::uint8_t* p, int type) {
 }
 }  // namespace
 
-PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, bool auxiliary,
-                           PointCloud& cloud)
+PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, PointCloud& cloud)
     : layout_(pointLayout(h.format())),
       stride_(h.record_length),
       scale_(h.scale),
       extras_(std::move(extras)),
-      auxiliary_(auxiliary),
       cloud_(cloud) {
   for (int a = 0; a < 3; ++a) {
     shift_[a] = h.offset[a] - cloud.offset[a];
@@ -53,28 +51,15 @@ PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, b
   cloud.classification.resize(n);
   if (layout_.gps_at >= 0) cloud.timestamps.resize(n);
   if (layout_.rgb_at >= 0) cloud.colors.resize(n);
+  total_ = n;  // the LAS field columns are allocated by decodeAuxiliary when needed
   auto add = [&](const std::string& name) {
     cloud.scalar_fields.push_back({name, Column<float>(n, 0.0f)});
   };
-  if (auxiliary_) {
-    add("scan_angle");
-    add("user_data");
-    add("point_source_id");
-    add("classification_flags");
-    if (layout_.extended) add("scanner_channel");
-    if (layout_.nir_at >= 0) add("nir");
-  }
+  if (layout_.nir_at >= 0) add("nir");
   for (const auto& e : extras_) add(e.name);
   // Pointers taken after every push_back (the vector no longer grows).
   std::size_t k = 0;
-  if (auxiliary_) {
-    angle_ = &cloud.scalar_fields[k++];
-    user_ = &cloud.scalar_fields[k++];
-    source_ = &cloud.scalar_fields[k++];
-    flags_ = &cloud.scalar_fields[k++];
-    if (layout_.extended) channel_ = &cloud.scalar_fields[k++];
-    if (layout_.nir_at >= 0) nir_ = &cloud.scalar_fields[k++];
-  }
+  if (layout_.nir_at >= 0) nir_ = &cloud.scalar_fields[k++];
   for (std::size_t e = 0; e < extras_.size(); ++e) extra_fields_.push_back(&cloud.scalar_fields[k++]);
 }
 
@@ -147,25 +132,7 @@ void PointDecoder::decode(const std::uint8_t* records, std::size_t n, std::size_
     }
     color_max_ = cmax;
   }
-  if (auxiliary_) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::uint8_t* p = records + i * stride_;
-      const std::size_t k = first + i;
-      if (extended) {
-        angle_->values[k] = load<std::int16_t>(p + 18) * 0.006f;
-        user_->values[k] = p[17];
-        source_->values[k] = load<std::uint16_t>(p + 20);
-        flags_->values[k] = p[15] & 0x0F;
-        channel_->values[k] = (p[15] >> 4) & 0x03;
-      } else {
-        angle_->values[k] = static_cast<std::int8_t>(p[16]);
-        user_->values[k] = p[17];
-        source_->values[k] = load<std::uint16_t>(p + 18);
-        flags_->values[k] = (p[15] >> 5) & 0x07;
-      }
-      if (nir_) nir_->values[k] = load<std::uint16_t>(p + layout_.nir_at);
-    }
-  }
+  decodeAuxiliary(records, n, first);
   for (std::size_t e = 0; e < extras_.size(); ++e) {
     const ExtraField& f = extras_[e];
     float* out = extra_fields_[e]->values.data() + first;
@@ -175,7 +142,56 @@ void PointDecoder::decode(const std::uint8_t* records, std::size_t n, std::size_
   }
 }
 
-bool PointDecoder::finishColors() { return color_max_ > 255; }
+namespace {
+// One LAS field of a chunk into `column` (points [first, first+n)), allocated (zeros) only at
+// the first chunk where the field is not 0: a field that is 0 everywhere costs no memory.
+template <class V, class Get>
+void fillColumn(V& column, bool nonzero, std::size_t total, const std::uint8_t* records,
+                std::size_t stride, std::size_t n, std::size_t first, Get get) {
+  if (column.empty() && !nonzero) return;
+  if (column.empty()) column.resize(total, 0);
+  const std::uint8_t* p = records;
+  for (std::size_t i = 0; i < n; ++i, p += stride) column[first + i] = get(p);
+}
+}  // namespace
+
+void PointDecoder::decodeAuxiliary(const std::uint8_t* records, std::size_t n, std::size_t first) {
+  const bool ext = layout_.extended;
+  const int angle_at = ext ? 18 : 16, source_at = ext ? 20 : 18, bits_at = ext ? 15 : 14;
+  // Which fields are not 0 in this chunk: one pass over bytes already in cache.
+  unsigned user = 0, angle = 0, source = 0, flags = 0, channel = 0, scan = 0;
+  const std::uint8_t* p = records;
+  for (std::size_t i = 0; i < n; ++i, p += stride_) {
+    user |= p[17];
+    angle |= p[angle_at] | (ext ? p[angle_at + 1] : 0);
+    source |= load<std::uint16_t>(p + source_at);
+    flags |= ext ? p[15] & 0x0F : p[15] >> 5;
+    channel |= ext ? p[15] & 0x30 : 0;
+    scan |= p[bits_at] >> 6;
+  }
+  PointCloud& c = cloud_;
+  const std::size_t total = total_;
+  auto fill = [&](auto& column, unsigned any, auto get) {
+    fillColumn(column, any != 0, total, records, stride_, n, first, get);
+  };
+  fill(c.user_data, user, [](const std::uint8_t* r) { return r[17]; });
+  fill(c.scan_flags, scan, [bits_at](const std::uint8_t* r) { return static_cast<std::uint8_t>(r[bits_at] >> 6); });
+  fill(c.point_source_id, source, [source_at](const std::uint8_t* r) { return load<std::uint16_t>(r + source_at); });
+  if (ext) {
+    fill(c.scan_angle, angle, [](const std::uint8_t* r) { return static_cast<float>(load<std::int16_t>(r + 18) * 0.006); });
+    fill(c.classification_flags, flags, [](const std::uint8_t* r) { return static_cast<std::uint8_t>(r[15] & 0x0F); });
+    fill(c.scanner_channel, channel, [](const std::uint8_t* r) { return static_cast<std::uint8_t>((r[15] >> 4) & 3); });
+  } else {
+    fill(c.scan_angle, angle, [](const std::uint8_t* r) { return static_cast<float>(static_cast<std::int8_t>(r[16])); });
+    fill(c.classification_flags, flags, [](const std::uint8_t* r) { return static_cast<std::uint8_t>(r[15] >> 5); });
+  }
+  if (nir_) {
+    const std::uint8_t* q = records + layout_.nir_at;
+    for (std::size_t i = 0; i < n; ++i, q += stride_) nir_->values[first + i] = load<std::uint16_t>(q);
+  }
+}
+
+bool PointDecoder::finish() { return color_max_ > 255; }
 
 Bounds PointDecoder::worldBounds() const {
   Bounds b;

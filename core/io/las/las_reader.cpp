@@ -109,7 +109,7 @@ Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
   PointCloud& cloud = scan.cloud;
   cloud.offset = chooseOffset(h, src);
 
-  PointDecoder decoder(h, std::move(extras), options.auxiliary_fields, cloud);
+  PointDecoder decoder(h, std::move(extras), cloud);
   const std::uint64_t n = h.point_count;
   std::vector<std::uint8_t> chunk;
   for (std::uint64_t first = 0; first < n; first += kChunkRecords) {
@@ -128,7 +128,7 @@ Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
     reportProgress(progress, static_cast<double>(first + count) / static_cast<double>(n),
                    "reading LAS points");
   }
-  const bool rgb16 = decoder.finishColors();
+  const bool rgb16 = decoder.finish();
   if (decoder.badReturns() > 0)
     warnings.push_back(std::to_string(decoder.badReturns()) +
                        " points have a return number outside 1..number of returns (kept as "

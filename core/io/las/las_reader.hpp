@@ -12,6 +12,10 @@
 //   and each channel becomes value >> 8 (the high byte; the writer stores v * 257, so a
 //   round trip is exact). If no channel exceeds 255 the writer stored 8-bit values (common
 //   in older files) and they are kept as they are.
+// - Scan angle (degrees), user data, point source ID, classification flags, scanner channel
+//   and scan direction/edge flags go to their PointCloud columns; a field that is 0 for every
+//   point has no column (the LAS writer writes 0 for it). NIR (formats 8/10) is the
+//   ScalarField "nir".
 // - GPS time goes to `timestamps` as stored; its kind (week time / adjusted standard) is in
 //   the metadata ("GPS time").
 // - Extra bytes described by the Extra Bytes VLR (LASF_Spec 4) become ScalarFields named after
@@ -36,10 +40,9 @@ namespace plumb {
 struct LasReadOptions {
   /// Keep described extra bytes as ScalarFields.
   bool extra_bytes = true;
-  /// Also keep the LAS fields the model has no column for as ScalarFields: "scan_angle"
-  /// (degrees), "user_data", "point_source_id", "nir" (formats 8/10), "scanner_channel"
-  /// (formats 6-10) and "classification_flags" (synthetic=1, key-point=2, withheld=4,
-  /// overlap=8). The LAS writer writes these names back into their LAS fields.
+  /// Ignored, kept for source compatibility: scan angle, user data, point source ID,
+  /// classification flags, scanner channel, scan direction/edge flags always go to their PointCloud columns (freed
+  /// when 0 for every point), NIR (formats 8/10) to the ScalarField "nir".
   bool auxiliary_fields = false;
 };
 

@@ -10,6 +10,7 @@
 #include "common/error.hpp"
 #include "io/las/las_bytes.hpp"
 #include "io/las/las_header.hpp"
+#include "io/las/las_point_fields.hpp"
 #include "io/las/las_vlr.hpp"
 
 namespace plumb {
@@ -18,17 +19,22 @@ using namespace las;
 
 constexpr std::size_t kChunk = 1 << 15;
 
-bool isAuxiliary(const std::string& name) {
-  return name == "scan_angle" || name == "user_data" || name == "point_source_id" ||
-         name == "classification_flags" || name == "scanner_channel";
-}
-
-template <class T>
-T clampRound(double v) {
-  if (!(v == v)) return 0;
-  v = std::round(v);
-  return static_cast<T>(std::clamp(v, static_cast<double>(std::numeric_limits<T>::min()),
-                                   static_cast<double>(std::numeric_limits<T>::max())));
+/// A scan's dataset-frame coordinates must be finite and representable to `scale` beside a
+/// double header offset (|coordinate| / scale < 2^53); a pose translation of 1e308 is not.
+void checkScanRange(const std::filesystem::path& path, const Scan& scan, double scale) {
+  const Bounds b = scan.cloud.bounds();
+  if (b.empty()) return;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d c((corner & 1) ? b.max.x() : b.min.x(), (corner & 2) ? b.max.y() : b.min.y(),
+                            (corner & 4) ? b.max.z() : b.min.z());
+    const Eigen::Vector3d w = scan.pose.apply(c);
+    for (int a = 0; a < 3; ++a)
+      if (!std::isfinite(w[a]) || std::abs(w[a]) / scale >= 9007199254740992.0)
+        throw FileError(path, std::string("scan '") + scan.name + "': its pose puts " + "XYZ"[a] +
+                                  " at " + std::to_string(w[a]) + " m, outside what LAS scaled " +
+                                  "integers can hold at scale " + std::to_string(scale) +
+                                  " m (|coordinate| / scale must stay below 2^53)");
+  }
 }
 
 // GeoKeyDirectory with one ProjectedCSTypeGeoKey (or GeographicTypeGeoKey for codes < 5000,
@@ -50,24 +56,23 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
   if (!(options.scale > 0.0) || !std::isfinite(options.scale))
     throw InputError("LAS scale must be a positive number of metres");
   // One scan with an identity pose is written in place; otherwise scans are merged (a copy).
+  for (const Scan& scan : data.scans) checkScanRange(path, scan, options.scale);
   PointCloud merged;
   const bool in_place = data.scans.size() == 1 && data.scans[0].pose.isIdentity();
   if (!in_place) merged = data.merged();
   const PointCloud& cloud = in_place ? data.scans[0].cloud : merged;
   const bool v14 = options.version_minor == 4;
   const bool has_time = cloud.hasTimestamps();
-  const int format = v14 ? 7 : (has_time ? 3 : 2);
+  const int format = chooseFormat(cloud, v14);
   const PointLayout layout = pointLayout(format);
 
   // Which scalar fields go where.
-  auto aux = [&](const char* name) -> const Column<float>* {
-    const ScalarField* f = cloud.findScalarField(name);
-    return f && f->values.size() == cloud.size() ? &f->values : nullptr;
-  };
   std::vector<const ScalarField*> extras;
   if (options.extra_fields)
     for (const auto& f : cloud.scalar_fields)
-      if (!isAuxiliary(f.name) && f.values.size() == cloud.size()) extras.push_back(&f);
+      if (!isLasFieldName(f.name) && !(f.name == "nir" && layout.nir_at >= 0) &&
+          f.values.size() == cloud.size())
+        extras.push_back(&f);
   const std::size_t record_length = layout.min_size + 4 * extras.size();
   if (record_length > 65535) throw InputError("too many scalar fields for one LAS record");
 
@@ -172,16 +177,12 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
   out.write(reinterpret_cast<const char*>(serializeHeader(h).data()), h.header_size);
   out.write(reinterpret_cast<const char*>(vlrs.data()), static_cast<std::streamsize>(vlrs.size()));
 
-  const auto* angle = aux("scan_angle");
-  const auto* user = aux("user_data");
-  const auto* source = aux("point_source_id");
-  const auto* flags = aux("classification_flags");
-  const auto* channel = aux("scanner_channel");
-  const int max_return = v14 ? 15 : 7;
+  WriteReport report;
+  RecordFields fields(cloud, layout, intensityMap(cloud, knownIntensityLimits(data), report.notes),
+                      extras);
   std::array<std::int32_t, 3> lo, hi;
   lo.fill(std::numeric_limits<std::int32_t>::max());
   hi.fill(std::numeric_limits<std::int32_t>::min());
-  std::array<std::uint64_t, 15> by_return{};
   std::vector<std::uint8_t> buf;
   const Eigen::Vector3d shift = cloud.offset - offset;
   const double inv = 1.0 / options.scale;
@@ -200,41 +201,15 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
         hi[a] = std::max(hi[a], xyz[a]);
         store<std::int32_t>(r + 4 * a, xyz[a]);
       }
-      if (cloud.hasIntensity()) store<std::uint16_t>(r + 12, clampRound<std::uint16_t>(cloud.intensity[i]));
-      const int ret = cloud.hasReturns() ? std::min<int>(cloud.return_index[i], max_return) : 1;
-      const int cnt = cloud.hasReturns() ? std::min<int>(cloud.return_count[i], max_return) : 1;
-      if (ret >= 1) ++by_return[std::min(ret, 15) - 1];
-      const int cls = cloud.hasClassification() ? cloud.classification[i] : 0;
-      const int fl = flags ? clampRound<std::uint8_t>((*flags)[i]) : 0;
-      r[17] = user ? clampRound<std::uint8_t>((*user)[i]) : 0;
-      if (v14) {
-        r[14] = static_cast<std::uint8_t>(ret | (cnt << 4));
-        const int ch = channel ? clampRound<std::uint8_t>((*channel)[i]) & 3 : 0;
-        r[15] = static_cast<std::uint8_t>((fl & 0x0F) | (ch << 4));
-        r[16] = static_cast<std::uint8_t>(cls);
-        store<std::int16_t>(r + 18, angle ? clampRound<std::int16_t>((*angle)[i] / 0.006) : 0);
-        store<std::uint16_t>(r + 20, source ? clampRound<std::uint16_t>((*source)[i]) : 0);
-      } else {
-        r[14] = static_cast<std::uint8_t>(ret | (cnt << 3));
-        r[15] = static_cast<std::uint8_t>((cls & 0x1F) | ((fl & 0x07) << 5));
-        r[16] = static_cast<std::uint8_t>(angle ? clampRound<std::int8_t>((*angle)[i]) : 0);
-        store<std::uint16_t>(r + 18, source ? clampRound<std::uint16_t>((*source)[i]) : 0);
-      }
-      if (layout.gps_at >= 0 && has_time) store<double>(r + layout.gps_at, cloud.timestamps[i]);
-      if (layout.rgb_at >= 0 && cloud.hasColors()) {
-        const Rgb8& c = cloud.colors[i];
-        for (int k = 0; k < 3; ++k)
-          store<std::uint16_t>(r + layout.rgb_at + 2 * k, static_cast<std::uint16_t>(c[k] * 257));
-      }
-      for (std::size_t e = 0; e < extras.size(); ++e)
-        store<float>(r + layout.min_size + 4 * e, extras[e]->values[i]);
       r += record_length;
     }
+    fields.write(buf.data(), record_length, begin, end, keep.data());
     out.write(reinterpret_cast<const char*>(buf.data()), r - buf.data());
     reportProgress(progress, static_cast<double>(end) / static_cast<double>(cloud.size()),
                    "writing LAS points");
   }
 
+  const auto& by_return = fields.byReturn();
   h.count64 = count;
   h.by_return = by_return;
   const bool legacy_ok = !v14 || (format < 6 && count <= 0xFFFFFFFFu);
@@ -251,6 +226,21 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
   out.seekp(0);
   out.write(reinterpret_cast<const char*>(serializeHeader(h).data()), h.header_size);
   writer.commit();
+  report.points = count;
+  report.dropped = cloud.size() - count;
+  if (report.dropped > 0)
+    report.notes.push_back(std::to_string(report.dropped) +
+                           " points with a non-finite (NaN) position were not written");
+  if (layout.rgb_at >= 0 && cloud.color_invalid.size() == cloud.size()) {
+    const auto unknown = std::count(cloud.color_invalid.begin(), cloud.color_invalid.end(), 1);
+    if (unknown > 0)
+      report.notes.push_back(std::to_string(unknown) +
+                             " points have no valid colour (LAS cannot mark it); written as 0");
+  }
+  if (fields.zeroReturns() > 0)
+    report.notes.push_back(std::to_string(fields.zeroReturns()) +
+                           " points had return number 0 (unknown); written as return 1");
+  if (options.report) *options.report = std::move(report);
 }
 
 }  // namespace plumb

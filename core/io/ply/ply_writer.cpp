@@ -9,6 +9,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/header_token.hpp"
 #include "io/ply/ply_values.hpp"
 
 namespace plumb {
@@ -121,6 +122,21 @@ std::string oneLine(std::string s) {
   return s;
 }
 
+/// The LAS fields (scan angle, user data, point source ID, classification flags, scanner
+/// channel, scan direction/edge flags) as properties of their names, when the cloud has them.
+void addLasColumns(const PointCloud& cloud, std::vector<OutColumn>& cols) {
+  const std::size_t n = cloud.size();
+  auto add = [&](const char* name, Type t, const auto& v) {
+    if (!v.empty() && v.size() == n) cols.push_back({name, t, [&v](std::size_t i) { return double(v[i]); }});
+  };
+  add("scan_angle", Type::Float32, cloud.scan_angle);
+  add("user_data", Type::UInt8, cloud.user_data);
+  add("point_source_id", Type::UInt16, cloud.point_source_id);
+  add("classification_flags", Type::UInt8, cloud.classification_flags);
+  add("scanner_channel", Type::UInt8, cloud.scanner_channel);
+  add("scan_flags", Type::UInt8, cloud.scan_flags);
+}
+
 }  // namespace
 
 void writePly(const std::filesystem::path& path, const PointCloud& cloud,
@@ -168,9 +184,18 @@ void writePly(const std::filesystem::path& path, const PointCloud& cloud,
     cols.push_back({"classification", Type::UInt8, [&](std::size_t i) { return double(cloud.classification[i]); }});
   if (cloud.hasScanId())
     cols.push_back({"scan_id", Type::UInt16, [&](std::size_t i) { return double(cloud.scan_id[i]); }});
-  for (const auto& f : cloud.scalar_fields) {
-    if (f.values.size() != n) continue;
-    cols.push_back({oneLine(f.name), Type::Float32, [&f](std::size_t i) { return double(f.values[i]); },
+  addLasColumns(cloud, cols);
+  // Scalar field names become single header tokens ("my field" -> "my_field"), distinct from
+  // the other properties, so the file reads back.
+  std::vector<std::string> taken, names;
+  std::vector<const ScalarField*> fields;
+  for (const auto& c : cols) taken.push_back(c.name);
+  for (const auto& f : cloud.scalar_fields)
+    if (f.values.size() == n) fields.push_back(&f), names.push_back(f.name);
+  const auto tokens = headerTokens(names, taken);
+  for (std::size_t k = 0; k < fields.size(); ++k) {
+    const ScalarField& f = *fields[k];
+    cols.push_back({tokens[k], Type::Float32, [&f](std::size_t i) { return double(f.values[i]); },
                     f.values.data(), 1});
   }
   std::vector<std::string> comments;

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "common/atomic_file.hpp"
+#include "common/header_token.hpp"
 #include "io/text/text_io.hpp"
 
 namespace plumb {
@@ -33,8 +34,12 @@ void writeText(const std::filesystem::path& path, const PointCloud& cloud,
     if (cloud.hasColors()) names.insert(names.end(), {"red", "green", "blue"});
     if (cloud.hasIntensity()) names.push_back("intensity");
     if (cloud.hasNormals()) names.insert(names.end(), {"nx", "ny", "nz"});
+    // One token per column whatever the field is called ("my field" -> "my_field").
+    std::vector<std::string> fields;
     for (const auto& f : cloud.scalar_fields)
-      if (f.values.size() == n) names.push_back(f.name);
+      if (f.values.size() == n) fields.push_back(f.name);
+    const auto tokens = headerTokens(fields, names, ",;\"");
+    names.insert(names.end(), tokens.begin(), tokens.end());
     for (std::size_t k = 0; k < names.size(); ++k) h += (k ? std::string(1, delim) : "") + names[k];
     out << h << "\n";
   }

@@ -30,10 +30,8 @@ class LasFormat : public ::testing::TestWithParam<int> {};
 
 TEST_P(LasFormat, DecodesEveryField) {
   const int f = GetParam();
-  LasReadOptions o;
-  o.auxiliary_fields = true;
   const auto path = std::filesystem::path(PLUMB_LAS_TEST_DATA_DIR) / ("format_" + std::to_string(f) + ".las");
-  const Dataset d = readLas(path, o);
+  const Dataset d = readLas(path);
   EXPECT_EQ(meta(d, "point format"), std::to_string(f));
   const char* version = f == 0 ? "1.0" : f == 1 ? "1.1" : f <= 3 ? "1.2" : f <= 5 ? "1.3" : "1.4";
   EXPECT_EQ(meta(d, "LAS version"), version);
@@ -53,10 +51,14 @@ TEST_P(LasFormat, DecodesEveryField) {
     EXPECT_EQ(c.return_index[i], i + 1);
     EXPECT_EQ(c.return_count[i], 3);
     EXPECT_EQ(c.classification[i], (f >= 6 ? 40 : 2) + i);
-    EXPECT_EQ(c.findScalarField("user_data")->values[i], 7);
-    EXPECT_EQ(c.findScalarField("point_source_id")->values[i], 300 + i);
+    ASSERT_EQ(c.user_data.size(), 3u);
+    EXPECT_EQ(c.user_data[i], 7);
+    ASSERT_EQ(c.point_source_id.size(), 3u);
+    EXPECT_EQ(c.point_source_id[i], 300 + i);
     // Scan angle rank -5 deg (formats 0-5) or -500 x 0.006 = -3 deg (6-10).
-    EXPECT_NEAR(c.findScalarField("scan_angle")->values[i], f >= 6 ? -3.0f : -5.0f, 1e-4);
+    ASSERT_EQ(c.scan_angle.size(), 3u);
+    EXPECT_NEAR(c.scan_angle[i], f >= 6 ? -3.0f : -5.0f, 1e-4);
+    EXPECT_TRUE(c.classification_flags.empty());  // all 0: no column
     if (gps) {
       EXPECT_EQ(c.timestamps[i], 1000.5 + i);
     }

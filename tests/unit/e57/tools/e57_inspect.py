@@ -207,6 +207,14 @@ def inspect(path):
             lo = [min(p[a] for p in sel) for a in range(3)]
             hi = [max(p[a] for p in sel) for a in range(3)]
             print('  bounds min=(%.6f, %.6f, %.6f) max=(%.6f, %.6f, %.6f)' % (*lo, *hi))
+            if cb is not None:
+                c = {strip_ns(e.tag): float(e.text or 0) for e in cb}
+                inside = all(c[a + 'Minimum'] <= lo[k] and hi[k] <= c[a + 'Maximum']
+                             for k, a in enumerate('xyz'))
+                print('  points inside cartesianBounds: %s' % ('yes' if inside else 'no'))
+        if 'isColorInvalid' in v:
+            print('  isColorInvalid set=%d' % sum(1 for x, ok in zip(v['isColorInvalid'], keep)
+                                                 if ok and x != 0))
         for name in ('intensity', 'colorRed', 'rowIndex', 'columnIndex', 'returnIndex', 'timeStamp'):
             if name in v:
                 vals = [x for x, ok in zip(v[name], keep) if ok]
