@@ -3,13 +3,21 @@
 // present when its vector has size() == size(). Attributes are kept in separate vectors so an
 // algorithm touches only what it needs and memory is exactly what the data carries.
 //
-// Precision: positions are float, stored relative to a double-precision `offset`
-// (world = offset + local). Georeferenced data (Lambert-93, UTM: coordinates in the millions)
-// keeps sub-millimetre precision as long as one cloud spans less than ~100 km. Readers choose
-// the offset (e.g. the first point or the header's offset rounded to metres).
+// Precision model: world(i) = offset + positions[i] + position_residuals[i], the sum taken in
+// double. `offset` is double; `positions` are the float working copy every algorithm uses (its
+// step is 2^-24 of the distance to the offset: 0.06 mm at 1 km, 2 mm at 30 km). The optional
+// `position_residuals` hold what float dropped (a float-float split, ~48 significant bits), so
+// the exact coordinate of a double, scaled-integer or text source is kept to ~1e-9 m however
+// far a point is from the offset. The residual column is present only when some residual
+// exceeds kResidualTolerance (1 µm); otherwise positions alone are exact to 1 µm. Readers choose
+// the offset (a robust median of the first points, the header's offset or bounds centre,
+// rounded to the metre); every operation that moves points (transform, setOffset, append)
+// rebases the offset in double and re-splits positions, so coordinates survive read ->
+// transform -> merge -> write to 0.1 mm (measured: see README "Coordinates and precision").
 #include <Eigen/Core>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -53,7 +61,11 @@ class PointCloud {
  public:
   // --- attributes (public: algorithms read and fill them directly) -------------------------
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();  ///< world = offset + positions[i]
-  Column<Eigen::Vector3f> positions;                  ///< local coordinates, metres
+  Column<Eigen::Vector3f> positions;                  ///< local coordinates, metres (float part)
+  /// Optional exact remainder of each local coordinate (see the precision model above): the
+  /// exact local is positions[i] + position_residuals[i] evaluated in double. Not a user field
+  /// (fieldNames() does not list it); present only when some |residual| > kResidualTolerance.
+  Column<Eigen::Vector3f> position_residuals;
   Column<Eigen::Vector3f> normals;                    ///< unit normals
   Column<Rgb8> colors;                                ///< 8-bit RGB
   Column<float> intensity;                            ///< as stored by the source (no rescale)
@@ -80,6 +92,10 @@ class PointCloud {
   std::int32_t grid_rows = 0;
   std::int32_t grid_columns = 0;
 
+  /// Residuals at most this large (metres, per component) are dropped: positions alone are
+  /// then exact to 1 µm.
+  static constexpr double kResidualTolerance = 1e-6;
+
   // --- queries ---------------------------------------------------------------------------
   std::size_t size() const { return positions.size(); }
   bool empty() const { return positions.empty(); }
@@ -92,12 +108,39 @@ class PointCloud {
   bool hasClassification() const { return has(classification); }
   bool hasSensorOrigins() const { return has(sensor_origins); }
   bool hasScanId() const { return has(scan_id); }
+  bool hasPositionResiduals() const { return has(position_residuals); }
   const ScalarField* findScalarField(const std::string& name) const;
   ScalarField* findScalarField(const std::string& name);
 
-  Eigen::Vector3d world(std::size_t i) const { return offset + positions[i].cast<double>(); }
-  /// Bounds of world positions (NaN positions ignored).
+  /// Exact local coordinate of point i (float position plus residual), relative to offset.
+  Eigen::Vector3d local(std::size_t i) const {
+    const Eigen::Vector3d p = positions[i].cast<double>();
+    return hasPositionResiduals() ? Eigen::Vector3d(p + position_residuals[i].cast<double>()) : p;
+  }
+  /// Axis a of world(i), without computing the other two.
+  double worldAxis(std::size_t i, int a) const {
+    double v = positions[i][a];
+    if (hasPositionResiduals()) v += position_residuals[i][a];
+    return offset[a] + v;
+  }
+  /// Exact world coordinate of point i (offset + local, residual included).
+  Eigen::Vector3d world(std::size_t i) const { return offset + local(i); }
+  /// Splits a double local coordinate into its float part `hi` and the float remainder `lo`
+  /// (hi + lo == local to ~48 bits; lo is 0 when local is not finite).
+  static void splitLocal(const Eigen::Vector3d& local, Eigen::Vector3f& hi, Eigen::Vector3f& lo);
+  /// One component of splitLocal: v - hi is exact in double (hi is v's leading 24 bits).
+  static void splitComponent(double v, float& hi, float& lo) {
+    hi = static_cast<float>(v);
+    const double rest = v - static_cast<double>(hi);
+    lo = std::isfinite(rest) ? static_cast<float>(rest) : 0.0f;
+  }
+  /// Bounds of world positions (NaN positions ignored). Exact: from the float positions plus
+  /// offset (one fast float pass) when there are no residuals, else from world(i) in double
+  /// (writers quantize against these bounds, so they must contain every exact coordinate).
   Bounds bounds() const;
+  /// True when every finite world coordinate is within `tolerance` metres of its float32
+  /// value: writers then store float x y z, else double.
+  bool worldFitsFloat(double tolerance) const;
   /// Names of the attributes present, e.g. {"x","y","z","nx",...,"intensity","row",...}.
   std::vector<std::string> fieldNames() const;
   /// In-memory size of the attributes, bytes.
@@ -115,19 +158,51 @@ class PointCloud {
   /// Appends another cloud (same attributes required for those present in both; attributes
   /// present in only one side are dropped). Positions are re-expressed in this offset.
   void append(const PointCloud& other);
-  /// Applies a rigid transform in world coordinates (positions, normals, sensor origins).
-  /// The offset stays; the transform is applied as world' = T world.
+  /// Applies a rigid transform in world coordinates (positions, normals, sensor origins):
+  /// world' = R world + t. The offset is rebased in double (offset' = R offset + t) and local
+  /// coordinates are only rotated (local' = R local, computed in double from the exact local
+  /// and split again), so a large translation costs no precision; a pure translation leaves
+  /// positions untouched.
   void transform(const RigidTransform& t);
-  /// Moves the offset to `new_offset` without changing world positions.
+  /// Moves the offset to `new_offset` without changing world positions (residuals kept).
   void setOffset(const Eigen::Vector3d& new_offset);
+  /// Stores the exact local coordinate of point i: positions[i], and position_residuals[i]
+  /// when that column is sized (readers size it up front for double sources).
+  void setLocal(std::size_t i, const Eigen::Vector3d& local) {
+    Eigen::Vector3f lo;
+    splitLocal(local, positions[i], lo);
+    if (position_residuals.size() == positions.size()) position_residuals[i] = lo;
+  }
+  /// Drops position_residuals when misaligned or when every component is within
+  /// kResidualTolerance (saves 12 bytes a point when float positions are exact enough).
+  void dropNegligibleResiduals();
   /// Removes points with non-finite positions (organized clouds keep NaN for grid holes).
   void removeNonFinite();
 
  private:
+  /// Appends other's positions re-expressed with `shift` = other.offset - offset (exact).
+  void appendPositions(const PointCloud& other, const Eigen::Vector3d& shift);
+  /// local' = r local + add for every point (exact local, split again) and sensor origin.
+  void mapLocals(const Eigen::Matrix3d& r, const Eigen::Vector3d& add);
+
   template <class V>
   bool has(const V& v) const {
     return !v.empty() && v.size() == positions.size();
   }
 };
+
+/// The precision claim (README "Coordinates and precision"): world coordinates survive every
+/// read, transform, merge and write to 0.1 mm (LAS/E57 integers: to their stored quantum).
+/// Writers store double coordinates wherever float32 would lose more than this.
+inline constexpr double kCoordinatePrecision = 1e-4;
+
+/// How many leading finite points readers sample to choose an offset (offsetFromSample).
+inline constexpr std::size_t kOffsetSampleSize = 4096;
+
+/// Offset for a cloud from a sample of its world points (non-finite ones are skipped): the
+/// per-axis median rounded to the metre, so one odd point (a (0,0,0) or NaN record 0) does not
+/// decide it. Zero when the sample is empty or every |coordinate| is below 1e4 m: small clouds
+/// keep their exact float positions.
+Eigen::Vector3d offsetFromSample(std::vector<Eigen::Vector3d> sample);
 
 }  // namespace plumb

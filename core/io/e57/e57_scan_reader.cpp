@@ -229,6 +229,11 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
   const bool has_class = col[Classification] >= 0;
   const bool has_origins = col[SensorX] >= 0 && col[SensorY] >= 0 && col[SensorZ] >= 0;
   allocate(cloud.positions, n_records);
+  // Double and ScaledInteger coordinates keep their exact value through position residuals
+  // (dropped at the end when negligible); single-precision floats need none.
+  const FieldSpec& first_axis = info.fields[cartesian ? col[X] : col[Range]];
+  const bool exact_locals = !(first_axis.type == FieldType::Float && first_axis.single);
+  if (exact_locals) allocate(cloud.position_residuals, n_records);
   if (has_intensity) allocate(cloud.intensity, n_records);
   if (colors) allocate(cloud.colors, n_records);
   if (colors && col[ColorInvalid] >= 0) allocate(cloud.color_invalid, n_records);
@@ -294,7 +299,8 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
     Eigen::Vector3f* pos = cloud.positions.data() + out;
     for (std::size_t j = 0; j < m; ++j) {
       const std::uint32_t i = sel[j];
-      pos[j] = {static_cast<float>(px[i] - ox), static_cast<float>(py[i] - oy), static_cast<float>(pz[i] - oz)};
+      if (exact_locals) cloud.setLocal(out + j, {px[i] - ox, py[i] - oy, pz[i] - oz});
+      else pos[j] = {static_cast<float>(px[i] - ox), static_cast<float>(py[i] - oy), static_cast<float>(pz[i] - oz)};
     }
     if (flag_direction) {
       float* d = cloud.scalar_fields.back().values.data() + out;
@@ -393,7 +399,7 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
       v.shrink_to_fit();
     }
   };
-  trim(cloud.positions), trim(cloud.intensity), trim(cloud.colors), trim(cloud.normals);
+  trim(cloud.positions), trim(cloud.position_residuals), trim(cloud.intensity), trim(cloud.colors), trim(cloud.normals);
   trim(cloud.row), trim(cloud.column), trim(cloud.return_index), trim(cloud.return_count);
   trim(cloud.timestamps), trim(cloud.classification), trim(cloud.sensor_origins);
   trim(cloud.color_invalid);
@@ -408,6 +414,7 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
     cloud.grid_rows = extent(max_row, info.row_limits);
     cloud.grid_columns = extent(max_column, info.column_limits);
   }
+  cloud.dropNegligibleResiduals();
   cloud.validate(true);
   return scan;
 }

@@ -37,19 +37,19 @@ FieldSpec floatSpec(const char* name, bool single) {
 /// A ScaledInteger raw value: v in units of the quantum q, rounded.
 std::int64_t toRaw(double v, double q) { return static_cast<std::int64_t>(std::floor(v / q + 0.5)); }
 
-/// Axis `a` of a float vector column stored relative to `offset` (positions, sensor origins),
-/// written as a ScaledInteger of quantum `q` over raw [lo, hi]; non-finite values as `fill`.
-OutField scaledAxisField(const char* name, const Column<Eigen::Vector3f>& column,
-                         const Eigen::Vector3d& offset, int a, double q, std::int64_t lo,
-                         std::int64_t hi, std::int64_t fill) {
+/// A coordinate axis, `world(i)` its world value (positions, sensor origins), written as a
+/// ScaledInteger of quantum `q` over raw [lo, hi]; non-finite values as `fill`.
+template <class World>
+OutField scaledAxisField(const char* name, World world, double q, std::int64_t lo, std::int64_t hi,
+                         std::int64_t fill) {
   OutField f;
   f.spec = integerSpec(name, lo, hi);
   f.spec.type = FieldType::ScaledInteger;
   f.spec.scale = q;
-  f.integers = [&column, offset, a, q, fill](std::size_t begin, std::size_t count, std::int64_t* out) {
+  f.integers = [world, q, fill](std::size_t begin, std::size_t count, std::int64_t* out) {
     for (std::size_t i = 0; i < count; ++i) {
-      const float v = column[begin + i][a];
-      out[i] = std::isfinite(v) ? toRaw(offset[a] + v, q) : fill;
+      const double v = world(begin + i);
+      out[i] = std::isfinite(v) ? toRaw(v, q) : fill;
     }
   };
   return f;
@@ -93,16 +93,17 @@ std::vector<OutField> describeScan(const PointCloud& cloud, const E57WriteOption
     OutField f;
     if (options.float_positions) {
       f.spec = floatSpec(names[a], false);
-      f.floats = [&cloud, offset, a](std::size_t begin, std::size_t count, double* out) {
+      f.floats = [&cloud, a](std::size_t begin, std::size_t count, double* out) {
         for (std::size_t i = 0; i < count; ++i) {
-          const float p = cloud.positions[begin + i][a];
-          out[i] = std::isfinite(p) ? offset[a] + p : 0.0;
+          const double p = cloud.worldAxis(begin + i, a);
+          out[i] = std::isfinite(p) ? p : 0.0;
         }
       };
     } else {
       const std::int64_t lo = b.empty() ? 0 : toRaw(b.min[a], q);
       const std::int64_t hi = b.empty() ? 0 : toRaw(b.max[a], q);
-      f = scaledAxisField(names[a], cloud.positions, offset, a, q, lo, hi, lo);
+      // World coordinates with their residuals: exact to the quantum q / 2.
+      f = scaledAxisField(names[a], [&cloud, a](std::size_t i) { return cloud.worldAxis(i, a); }, q, lo, hi, lo);
       if (w.bounds) {  // the bounds of the stored (quantized) values, which readers decode
         w.bounds->min[a] = static_cast<double>(lo) * q;
         w.bounds->max[a] = static_cast<double>(hi) * q;
@@ -210,8 +211,8 @@ std::vector<OutField> describeScan(const PointCloud& cloud, const E57WriteOption
       const auto r = rangeOf(cloud.sensor_origins, [&](const Eigen::Vector3f& o) {
         return std::isfinite(o[a]) ? toRaw(offset[a] + o[a], qo) : 0;
       });
-      fields.push_back(
-          scaledAxisField(names_o[a], cloud.sensor_origins, offset, a, qo, r.first, r.second, 0));
+      auto origin = [&cloud, offset, a](std::size_t i) { return offset[a] + cloud.sensor_origins[i][a]; };
+      fields.push_back(scaledAxisField(names_o[a], origin, qo, r.first, r.second, 0));
     }
   }
   for (const auto& f : fields) w.prototype.push_back(f.spec);

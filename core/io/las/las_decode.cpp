@@ -9,10 +9,11 @@ namespace plumb::las {
 
 namespace {
 // double -> float without the undefined behaviour of out-of-range conversions (fuzzed scales).
-inline float toFloat(double v) {
+inline double inFloatRange(double v) {
   constexpr double kMax = std::numeric_limits<float>::max();
-  return static_cast<float>(v < -kMax ? -kMax : (v > kMax ? kMax : v));
+  return v < -kMax ? -kMax : (v > kMax ? kMax : v);
 }
+inline float toFloat(double v) { return static_cast<float>(inFloatRange(v)); }
 
 double extraValue(const std::uint8_t* p, int type) {
   switch (type) {
@@ -45,6 +46,7 @@ PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, P
   raw_max_.fill(std::numeric_limits<std::int32_t>::min());
   const std::size_t n = h.point_count;
   cloud.positions.resize(n);
+  cloud.position_residuals.resize(n);  // scaled integers: exact locals (dropped when negligible)
   cloud.intensity.resize(n);
   cloud.return_index.resize(n);
   cloud.return_count.resize(n);
@@ -65,6 +67,7 @@ PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, P
 
 void PointDecoder::decode(const std::uint8_t* records, std::size_t n, std::size_t first) {
   Eigen::Vector3f* pos = cloud_.positions.data() + first;
+  Eigen::Vector3f* res = cloud_.position_residuals.data() + first;
   float* intensity = cloud_.intensity.data() + first;
   std::uint8_t* ret = cloud_.return_index.data() + first;
   std::uint8_t* cnt = cloud_.return_count.data() + first;
@@ -79,8 +82,9 @@ void PointDecoder::decode(const std::uint8_t* records, std::size_t n, std::size_
     lo[0] = std::min(lo[0], x), hi[0] = std::max(hi[0], x);
     lo[1] = std::min(lo[1], y), hi[1] = std::max(hi[1], y);
     lo[2] = std::min(lo[2], z), hi[2] = std::max(hi[2], z);
-    pos[i] = Eigen::Vector3f(toFloat(x * scale_[0] + shift_[0]), toFloat(y * scale_[1] + shift_[1]),
-                             toFloat(z * scale_[2] + shift_[2]));
+    const std::int32_t raw[3] = {x, y, z};
+    for (int a = 0; a < 3; ++a)
+      PointCloud::splitComponent(inFloatRange(raw[a] * scale_[a] + shift_[a]), pos[i][a], res[i][a]);
     intensity[i] = load<std::uint16_t>(r + 12);
     const std::uint8_t b = r[14];
     if (extended) {

@@ -128,6 +128,7 @@ Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
     reportProgress(progress, static_cast<double>(first + count) / static_cast<double>(n),
                    "reading LAS points");
   }
+  cloud.dropNegligibleResiduals();
   const bool rgb16 = decoder.finish();
   if (decoder.badReturns() > 0)
     warnings.push_back(std::to_string(decoder.badReturns()) +

@@ -193,7 +193,7 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
     std::uint8_t* r = buf.data();
     for (std::size_t i = begin; i < end; ++i) {
       if (!keep[i]) continue;
-      const Eigen::Vector3f& p = cloud.positions[i];
+      const Eigen::Vector3d p = cloud.local(i);  // exact (residual included)
       std::int32_t xyz[3];
       for (int a = 0; a < 3; ++a) {
         xyz[a] = static_cast<std::int32_t>(std::llround((p[a] + shift[a]) * inv));

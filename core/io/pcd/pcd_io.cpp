@@ -223,27 +223,29 @@ Dataset readPcd(const std::filesystem::path& path, Progress* progress) {
   const std::uint8_t* data = pc.data.data();
   const std::size_t step = pc.point_step;
   if (pc.data.size() < n * step) throw FileError(path, "PCL returned fewer bytes than the header declares");
+  // Double coordinates: offset from the first finite points (offsetFromSample) and exact
+  // locals through residuals; float coordinates are stored as they are.
   const bool dbl = fx->datatype == pcl::PCLPointField::FLOAT64;
-  if (dbl && n > 0) {  // double coordinates >= 10 km: offset = first finite point rounded to the metre
+  auto position = [&](std::size_t i) {
+    const std::uint8_t* p = data + i * step;
+    return Eigen::Vector3d(getDouble(p + fx->offset, fx->datatype), getDouble(p + fy->offset, fy->datatype),
+                           getDouble(p + fz->offset, fz->datatype));
+  };
+  c.positions.resize(n);
+  if (dbl) {
+    std::vector<Eigen::Vector3d> sample;
+    for (std::size_t i = 0; i < n && sample.size() < kOffsetSampleSize; ++i)
+      if (const Eigen::Vector3d w = position(i); w.allFinite()) sample.push_back(w);
+    c.offset = offsetFromSample(std::move(sample));
+    c.position_residuals.resize(n);
+    for (std::size_t i = 0; i < n; ++i) c.setLocal(i, position(i) - c.offset);
+    c.dropNegligibleResiduals();
+  } else {
     for (std::size_t i = 0; i < n; ++i) {
       const std::uint8_t* p = data + i * step;
-      Eigen::Vector3d w(getDouble(p + fx->offset, fx->datatype), getDouble(p + fy->offset, fy->datatype),
-                        getDouble(p + fz->offset, fz->datatype));
-      if (w.allFinite()) {
-        if (w.cwiseAbs().maxCoeff() >= 1e4) c.offset = w.array().round().matrix();
-        break;
-      }
-    }
-  }
-  c.positions.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint8_t* p = data + i * step;
-    if (dbl)
-      c.positions[i] = (Eigen::Vector3d(getDouble(p + fx->offset, fx->datatype), getDouble(p + fy->offset, fy->datatype),
-                                        getDouble(p + fz->offset, fz->datatype)) - c.offset).cast<float>();
-    else
       c.positions[i] = {getFloat(p + fx->offset, fx->datatype), getFloat(p + fy->offset, fy->datatype),
                         getFloat(p + fz->offset, fz->datatype)};
+    }
   }
   if (fnx && fny && fnz) {
     c.normals.resize(n);
@@ -325,7 +327,9 @@ void writePcd(const std::filesystem::path& path, const PointCloud& cloud,
     offset += size;
     return f.offset;
   };
-  const bool dbl = !cloud.offset.isZero();
+  // Double x y z when float32 would move any point by more than 0.1 mm (georeferenced data).
+  const bool dbl = !cloud.worldFitsFloat(kCoordinatePrecision);
+  const bool exact_floats = cloud.offset.isZero() && !cloud.hasPositionResiduals();
   const std::uint8_t pt = dbl ? pcl::PCLPointField::FLOAT64 : pcl::PCLPointField::FLOAT32;
   const std::uint32_t ps = dbl ? 8 : 4;
   const std::uint32_t ox = add("x", pt, ps), oy = add("y", pt, ps), oz = add("z", pt, ps);
@@ -352,9 +356,10 @@ void writePcd(const std::filesystem::path& path, const PointCloud& cloud,
       std::memcpy(p + oy, &w.y(), 8);
       std::memcpy(p + oz, &w.z(), 8);
     } else {
-      std::memcpy(p + ox, &cloud.positions[i].x(), 4);
-      std::memcpy(p + oy, &cloud.positions[i].y(), 4);
-      std::memcpy(p + oz, &cloud.positions[i].z(), 4);
+      const Eigen::Vector3f f = exact_floats ? cloud.positions[i] : cloud.world(i).cast<float>();
+      std::memcpy(p + ox, &f.x(), 4);
+      std::memcpy(p + oy, &f.y(), 4);
+      std::memcpy(p + oz, &f.z(), 4);
     }
     if (cloud.hasNormals()) std::memcpy(p + on, cloud.normals[i].data(), 12);
     if (cloud.hasColors()) {

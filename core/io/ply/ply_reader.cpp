@@ -53,6 +53,7 @@ struct Slot {
 /// Destination columns of the vertex element.
 struct Columns {
   float* pos = nullptr;
+  float* res = nullptr;  ///< position residuals (double positions only), else null
   float* nrm = nullptr;
   std::uint8_t* rgb = nullptr;
   float* inten = nullptr;
@@ -91,6 +92,11 @@ void extractBlock(const char* p, std::size_t k, std::size_t stride, const std::v
           if (std::is_same_v<T, float> && off == 0.0) {
             for (std::size_t i = 0; i < k; ++i)
               d[3 * i] = static_cast<float>(ply::load<T, Swap>(q + i * stride));
+          } else if (c.res) {  // exact local: float part and residual
+            float* r = c.res + base * 3 + s.comp;
+            for (std::size_t i = 0; i < k; ++i)
+              PointCloud::splitComponent(static_cast<double>(ply::load<T, Swap>(q + i * stride)) - off,
+                                         d[3 * i], r[3 * i]);
           } else {
             for (std::size_t i = 0; i < k; ++i)
               d[3 * i] = static_cast<float>(static_cast<double>(ply::load<T, Swap>(q + i * stride)) - off);
@@ -130,7 +136,10 @@ void extractBlock(const char* p, std::size_t k, std::size_t stride, const std::v
 /// One value of a generic (ASCII or list-carrying) vertex record.
 void putValue(const Slot& s, const Columns& c, std::size_t i, double v) {
   switch (s.target) {
-    case Target::Position: c.pos[i * 3 + s.comp] = static_cast<float>(v - c.offset[s.comp]); break;
+    case Target::Position:
+      if (c.res) PointCloud::splitComponent(v - c.offset[s.comp], c.pos[i * 3 + s.comp], c.res[i * 3 + s.comp]);
+      else c.pos[i * 3 + s.comp] = static_cast<float>(v - c.offset[s.comp]);
+      break;
     case Target::Normal: c.nrm[i * 3 + s.comp] = static_cast<float>(v); break;
     case Target::Color:
       c.rgb[i * 3 + s.comp] = ply::withType(s.type, [&](auto tag) {
@@ -158,7 +167,7 @@ void planCopies(const std::vector<Slot>& slots, const Columns& c, bool sw, std::
       const std::size_t sz = bytes / 3;
       for (int k = 0; k < 3; ++k)
         if (slots[idx[k]].type != type || slots[idx[k]].offset != slots[idx[0]].offset + k * sz) return;
-      if (t == Target::Position && !c.offset.isZero()) return;
+      if (t == Target::Position && (!c.offset.isZero() || c.res)) return;
       copies.push_back({slots[idx[0]].offset, dst, bytes});
       for (int k : idx) used[k] = true;
     };
@@ -202,6 +211,23 @@ constexpr std::size_t kWindowBytes = std::size_t{1} << 20;
 /// rather than a fresh mapping, whose 4 KiB page faults cost more than reading a 4 MiB block.
 /// It grows when a header or line needs more.
 constexpr std::size_t kHeadBlockBytes = std::size_t{64} << 10;
+
+/// World position of a record whose values (one per slot) are `v`.
+Eigen::Vector3d valuePosition(const std::vector<Slot>& slots, const std::vector<double>& v) {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (std::size_t j = 0; j < slots.size(); ++j)
+    if (slots[j].target == Target::Position) p[slots[j].comp] = v[j];
+  return p;
+}
+
+/// World position of the binary record at `record`.
+template <bool Swap>
+Eigen::Vector3d binaryPosition(const std::vector<Slot>& slots, const char* record) {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (const Slot& s : slots)
+    if (s.target == Target::Position) p[s.comp] = ply::loadAsDouble<Swap>(s.type, record + s.offset);
+  return p;
+}
 
 const char* const kFaceIdNames[] = {"element_id", "element", "object_id", "segment_id"};
 
@@ -419,7 +445,8 @@ class Reader {
         cloud.scalar_fields.push_back({p.name, {}});
       }
     }
-    // Double coordinates >= 10 km: offset = first point rounded to the metre (from record 0).
+    // Double coordinates: offset from a sample of the first records (offsetFromSample), and
+    // a residual column so every double keeps its exact value (float sources need neither).
     const bool double_coords = std::any_of(slots.begin(), slots.end(), [](const Slot& s) {
       return s.target == Target::Position && s.type == Type::Float64;
     });
@@ -431,6 +458,7 @@ class Reader {
     // zeros (zeroing colours and intensity in a pass of their own first cost 70 MB of extra
     // memory traffic and 22% of the read time on 10M points).
     cloud.positions.resize(n);
+    if (double_coords) cloud.position_residuals.resize(n);
     if (has_normals) cloud.normals.resize(n);
     if (has_colors) cloud.colors.resize(n);
     if (ii >= 0) cloud.intensity.resize(n);
@@ -438,6 +466,7 @@ class Reader {
     for (auto& v : extra_values) v.resize(n);
     Columns c;
     c.pos = cloud.positions.empty() ? nullptr : cloud.positions[0].data();
+    c.res = cloud.position_residuals.empty() ? nullptr : cloud.position_residuals[0].data();
     c.nrm = has_normals && n ? cloud.normals[0].data() : nullptr;
     c.rgb = has_colors && n ? cloud.colors[0].data() : nullptr;
     c.inten = ii >= 0 ? cloud.intensity.data() : nullptr;
@@ -468,34 +497,52 @@ class Reader {
       }
     } store_extras{extra_names, extra_values, cloud};
 
-    auto setOffsetFrom = [&](const Eigen::Vector3d& first) {
-      if (double_coords && first.allFinite() && first.cwiseAbs().maxCoeff() >= 1e4)
-        c.offset = first.array().round().matrix();
-      cloud.offset = c.offset;
-    };
-
     if (binary() && !e.hasLists()) {
       const std::size_t stride = e.recordSize();
       const bool sw = swap();
       const std::uint64_t start = in_.offset();
-      if (n > 0) {
-        if (in_.fill(stride) < stride) truncated(e, 0);
-        Eigen::Vector3d first = Eigen::Vector3d::Zero();
-        for (const auto& s : slots)
-          if (s.target == Target::Position)
-            first[s.comp] = sw ? ply::loadAsDouble<true>(s.type, in_.data() + s.offset)
-                               : ply::loadAsDouble<false>(s.type, in_.data() + s.offset);
-        setOffsetFrom(first);
+      if (n > 0 && in_.fill(stride) < stride) truncated(e, 0);
+      if (double_coords && n > 0) {
+        const std::size_t k = std::min({n, kOffsetSampleSize, std::max<std::size_t>(1, kWindowBytes / stride)});
+        const std::size_t got = std::min(k, in_.fill(k * stride) / stride);
+        std::vector<Eigen::Vector3d> sample(got);
+        for (std::size_t j = 0; j < got; ++j)
+          sample[j] = sw ? binaryPosition<true>(slots, in_.data() + j * stride)
+                         : binaryPosition<false>(slots, in_.data() + j * stride);
+        c.offset = offsetFromSample(std::move(sample));
       }
+      cloud.offset = c.offset;
       const std::uint64_t end = start + static_cast<std::uint64_t>(n) * stride;
       if (end > in_.fileSize())
         truncated(e, (in_.fileSize() - start) / stride, in_.fileSize());
       readFixedRecords(start, n, stride, sw, slots, c);
       in_.seek(end);
+      cloud.dropNegligibleResiduals();
       store_extras();
       return;
     }
+    readRecords(e, n, slots, double_coords, c);
+    cloud.offset = c.offset;
+    cloud.dropNegligibleResiduals();
+    store_extras();
+  }
+
+  /// ASCII or list-carrying vertex records, one by one. With double coordinates the first
+  /// kOffsetSampleSize records are held until the offset is chosen from them.
+  void readRecords(const Element& e, std::size_t n, const std::vector<Slot>& slots, bool double_coords,
+                   Columns& c) {
     std::vector<double> values(slots.size());
+    std::vector<std::vector<double>> held;
+    auto put = [&](std::size_t i, const std::vector<double>& v) {
+      for (std::size_t j = 0; j < slots.size(); ++j) putValue(slots[j], c, i, v[j]);
+    };
+    auto release = [&] {  // choose the offset from the held records, then store them
+      std::vector<Eigen::Vector3d> sample;
+      for (const auto& v : held) sample.push_back(valuePosition(slots, v));
+      c.offset = offsetFromSample(std::move(sample));
+      for (std::size_t i = 0; i < held.size(); ++i) put(i, held[i]);
+      held.clear();
+    };
     for (std::size_t i = 0; i < n; ++i) {
       if (!beginRecord()) truncated(e, i);
       for (std::size_t j = 0; j < slots.size(); ++j) {
@@ -508,16 +555,15 @@ class Reader {
         }
       }
       endRecord(e, i);
-      if (i == 0) {
-        Eigen::Vector3d first = Eigen::Vector3d::Zero();
-        for (std::size_t j = 0; j < slots.size(); ++j)
-          if (slots[j].target == Target::Position) first[slots[j].comp] = values[j];
-        setOffsetFrom(first);
+      if (double_coords && i < kOffsetSampleSize) {
+        held.push_back(values);
+        if (held.size() == kOffsetSampleSize) release();
+      } else {
+        put(i, values);
       }
-      for (std::size_t j = 0; j < slots.size(); ++j) putValue(slots[j], c, i, values[j]);
       if ((i & 0xFFFF) == 0) report();
     }
-    store_extras();
+    if (!held.empty()) release();
   }
 
   /// Binary vertex records of fixed size: the file is read in 1 MiB windows (never all at once,

@@ -144,16 +144,17 @@ void writePly(const std::filesystem::path& path, const PointCloud& cloud,
   cloud.validate(true);
   const std::size_t n = cloud.size();
   std::vector<OutColumn> cols;
-  const bool dbl = options.force_double || !cloud.offset.isZero();
+  // Double x y z when float32 would move any point by more than 0.1 mm (georeferenced data).
+  const bool dbl = options.force_double || !cloud.worldFitsFloat(kCoordinatePrecision);
   const Type pt = dbl ? Type::Float64 : Type::Float32;
+  const bool exact_floats = cloud.offset.isZero() && !cloud.hasPositionResiduals();
   const char* axes[] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
-    const double off = cloud.offset[a];
-    if (dbl)
-      cols.push_back({axes[a], pt, [&, a, off](std::size_t i) { return off + static_cast<double>(cloud.positions[i][a]); }});
-    else
+    if (exact_floats)  // the float positions are the values: copied directly
       cols.push_back({axes[a], pt, [&, a](std::size_t i) { return static_cast<double>(cloud.positions[i][a]); },
-                      n ? cloud.positions[0].data() + a : nullptr, 3});
+                      n && !dbl ? cloud.positions[0].data() + a : nullptr, 3});
+    else
+      cols.push_back({axes[a], pt, [&, a](std::size_t i) { return cloud.worldAxis(i, a); }});
   }
   if (cloud.hasNormals()) {
     const char* nn[] = {"nx", "ny", "nz"};

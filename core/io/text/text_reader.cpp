@@ -111,6 +111,14 @@ std::vector<Col> guessColumns(std::size_t ncols, const std::vector<std::vector<d
   return c;
 }
 
+/// x y z of a row whose column roles are `cols`.
+Eigen::Vector3d positionOf(const std::vector<Col>& cols, const std::vector<double>& row) {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < cols.size() && k < row.size(); ++k)
+    if (cols[k] <= Col::Z) p[static_cast<int>(cols[k])] = row[k];
+  return p;
+}
+
 struct Line {
   std::string_view text;
   std::uint64_t number;  ///< 1-based
@@ -230,7 +238,13 @@ Dataset readText(const std::filesystem::path& path, Progress* progress) {
       c.scalar_fields.push_back({names.empty() ? "column " + std::to_string(k + 1) : names[k], {}});
   for (std::size_t k = 0, s = 0; k < ncols; ++k)
     if (cols[k] == Col::Scalar) scalar_of[k] = &c.scalar_fields[s++];
-  bool offset_set = false;
+  // Offset from the sampled rows (robust to an odd first row); every row keeps its exact
+  // double value through position residuals.
+  {
+    std::vector<Eigen::Vector3d> xyz;
+    for (const auto& row : sample) xyz.push_back(positionOf(cols, row));
+    c.offset = offsetFromSample(std::move(xyz));
+  }
   std::vector<double> vals(ncols);
   const double total = static_cast<double>(text.size());
   std::uint64_t count = 0;
@@ -249,15 +263,15 @@ Dataset readText(const std::filesystem::path& path, Progress* progress) {
       if (!parseNumber(toks[k], delim == ';', vals[k]))
         throw FileError(path, "'" + std::string(toks[k]) + "' is not a number (column " + std::to_string(k + 1) + ")",
                         atLine(ln.number, "point " + std::to_string(count)));
-    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    const Eigen::Vector3d p = positionOf(cols, vals);
     Eigen::Vector3f n = Eigen::Vector3f::Zero();
     Rgb8 rgb{0, 0, 0};
     for (std::size_t k = 0; k < ncols; ++k) {
       const double v = vals[k];
       switch (cols[k]) {
-        case Col::X: p.x() = v; break;
-        case Col::Y: p.y() = v; break;
-        case Col::Z: p.z() = v; break;
+        case Col::X:
+        case Col::Y:
+        case Col::Z: break;
         case Col::R: rgb[0] = static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0)); break;
         case Col::G: rgb[1] = static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0)); break;
         case Col::B: rgb[2] = static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0)); break;
@@ -268,11 +282,10 @@ Dataset readText(const std::filesystem::path& path, Progress* progress) {
         case Col::Scalar: scalar_of[k]->values.push_back(static_cast<float>(v)); break;
       }
     }
-    if (!offset_set) {
-      if (p.allFinite() && p.cwiseAbs().maxCoeff() >= 1e4) c.offset = p.array().round().matrix();
-      offset_set = true;
-    }
-    c.positions.push_back((p - c.offset).cast<float>());
+    Eigen::Vector3f hi, lo;
+    PointCloud::splitLocal(p - c.offset, hi, lo);
+    c.positions.push_back(hi);
+    c.position_residuals.push_back(lo);
     if (has(Col::R)) c.colors.push_back(rgb);
     if (has(Col::NX)) c.normals.push_back(n);
     if ((++count & 0xFFFF) == 0) {
@@ -281,6 +294,7 @@ Dataset readText(const std::filesystem::path& path, Progress* progress) {
     }
     return true;
   });
+  c.dropNegligibleResiduals();
   d.metadata.emplace_back("delimiter", delim == ' ' ? "space/tab" : std::string(1, delim));
   d.metadata.emplace_back("header", names.empty() ? "none (columns guessed from their count)" : "yes");
   d.scans.push_back(std::move(scan));

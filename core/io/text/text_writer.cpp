@@ -15,6 +15,14 @@ void appendFloat(std::string& out, float v) {
   out.append(buf, r.ptr);
 }
 
+/// Shortest fixed-point text that reads back as exactly `v` (a value read from text is
+/// written as it was read; georeferenced coordinates keep every digit they carry).
+void appendDouble(std::string& out, double v) {
+  char buf[400];
+  auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
+  out.append(buf, r.ptr);
+}
+
 }  // namespace
 
 void writeText(const std::filesystem::path& path, const PointCloud& cloud,
@@ -25,7 +33,7 @@ void writeText(const std::filesystem::path& path, const PointCloud& cloud,
   const bool csv = ext == ".csv";
   const char delim = options.delimiter ? options.delimiter : (csv ? ',' : ' ');
   const std::size_t n = cloud.size();
-  const bool world_offset = !cloud.offset.isZero();
+  const bool exact_floats = cloud.offset.isZero() && !cloud.hasPositionResiduals();
   AtomicFileWriter writer(path);
   std::ostream& out = writer.stream();
   if (options.header) {
@@ -44,17 +52,13 @@ void writeText(const std::filesystem::path& path, const PointCloud& cloud,
     out << h << "\n";
   }
   std::string line;
-  char buf[64];
   for (std::size_t i = 0; i < n; ++i) {
     line.clear();
+    const Eigen::Vector3d w = exact_floats ? Eigen::Vector3d::Zero() : cloud.world(i);
     for (int a = 0; a < 3; ++a) {
       if (a) line.push_back(delim);
-      if (world_offset) {
-        const int len = std::snprintf(buf, sizeof buf, "%.4f", cloud.offset[a] + static_cast<double>(cloud.positions[i][a]));
-        line.append(buf, static_cast<std::size_t>(len));
-      } else {
-        appendFloat(line, cloud.positions[i][a]);
-      }
+      if (exact_floats) appendFloat(line, cloud.positions[i][a]);
+      else appendDouble(line, w[a]);
     }
     if (cloud.hasColors())
       for (int a = 0; a < 3; ++a) line += delim + std::to_string(cloud.colors[i][a]);
