@@ -230,6 +230,8 @@ struct QuietPcl {
 
 }  // namespace
 
+void checkPcdHeader(const std::filesystem::path& path) { checkDataSize(path, checkHeader(path)); }
+
 Dataset readPcd(const std::filesystem::path& path, Progress* progress) {
   const PcdHeader header = checkHeader(path);
   checkDataSize(path, header);
