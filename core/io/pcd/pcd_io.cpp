@@ -81,6 +81,32 @@ void checkFields(PcdHeader& h, bool have_width, bool have_points, Fail&& fail) {
          ") differs from POINTS " + std::to_string(h.points));
 }
 
+/// PCL's PCDReader goes on reading header lines after DATA while they are empty, comments or
+/// start with a header keyword, so a FIELDS, SIZE, COUNT or POINTS line there changes the
+/// layout after it sized its buffers: a heap overflow inside PCL (found by fuzz_pcd). Such a
+/// line is refused, naming it.
+void checkNoHeaderAfterData(std::istream& in, const std::filesystem::path& path, std::uint64_t line_no,
+                            std::uint64_t offset) {
+  static const char* const kKeywords[] = {"FIELDS", "COLUMNS", "SIZE",   "TYPE", "COUNT",
+                                          "WIDTH",  "HEIGHT",  "VIEWPOINT", "POINTS", "DATA"};
+  std::string line;
+  while (offset < (1u << 20) && std::getline(in, line)) {
+    ++line_no;
+    const std::uint64_t start = offset;
+    offset += line.size() + 1;
+    std::istringstream words(line);
+    std::string key;
+    if (!(words >> key) || key[0] == '#' || key.starts_with("VERSION")) continue;
+    for (const char* k : kKeywords)
+      if (key.starts_with(k)) {
+        FileLocation loc = atLine(line_no, "data");
+        loc.byte_offset = start;
+        throw FileError(path, "a " + std::string(k) + " header line after the DATA line", loc);
+      }
+    return;
+  }
+}
+
 PcdHeader checkHeader(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(path, "cannot open file");
@@ -104,6 +130,10 @@ PcdHeader checkHeader(const std::filesystem::path& path) {
       loc.byte_offset = line_start;
       throw FileError(path, what + ": \"" + line.substr(0, 80) + "\"", loc);
     };
+    // PCL splits header lines at spaces, tabs and CRs only, and takes the first character of
+    // each TYPE word: other separators or longer TYPE words would make its layout differ from
+    // the one checked here (fuzz_pcd: a NULL read inside PCL for "TYPE FF F F").
+    if (line.find_first_of("\r\v\f") != std::string::npos) fail("control character in a header line");
     auto readAll = [&](auto& vec) {
       typename std::decay_t<decltype(vec)>::value_type v;
       while (words >> v) vec.push_back(v);
@@ -115,7 +145,12 @@ PcdHeader checkHeader(const std::filesystem::path& path) {
     } else if (key == "SIZE") {
       readAll(h.sizes);
     } else if (key == "TYPE") {
-      readAll(h.types);
+      std::vector<std::string> types;
+      readAll(types);
+      for (const auto& t : types) {
+        if (t.size() != 1) fail("TYPE '" + t + "' is not one of F, I, U");
+        h.types.push_back(t[0]);
+      }
     } else if (key == "COUNT") {
       readAll(h.counts);
     } else if (key == "WIDTH") {
@@ -134,6 +169,7 @@ PcdHeader checkHeader(const std::filesystem::path& path) {
       h.data_offset = offset;
       h.data_line = line_no + 1;
       checkFields(h, have_width, have_points, fail);
+      checkNoHeaderAfterData(in, path, line_no, offset);
       return h;
     } else {
       if (line_no == 1 && line.size() > 0)

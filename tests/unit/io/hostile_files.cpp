@@ -56,6 +56,12 @@ std::vector<HostileFile> pcdFiles() {
                     "PCL allocated 1.2 GB for a 154-byte file"};
   ascii.offset = static_cast<std::int64_t>(ascii.bytes.size());
   f.push_back(ascii);
+  // PCL reads header lines after DATA: this FIELDS line widened its records after it had sized
+  // the buffer for 3-value records (fuzz_pcd: heap corruption inside PCL).
+  f.push_back({"header_after_data.pcd", xyz + "WIDTH 2\nHEIGHT 1\nPOINTS 2\nDATA ascii\nFIELDS a b c d e f g h i j k\n"
+                                           "1 2 3 4 5 6 7 8 9 10 11\n1 2 3 4 5 6 7 8 9 10 11\n",
+               "a FIELDS header line after the DATA line", "data", 10, -1,
+               "PCL wrote 11-value records into a buffer sized for 3 (heap overflow)"});
   // 357913941 points x 12 bytes = 4294967292 bytes declared for a 16-byte LZF block.
   const std::string head = xyz + "WIDTH 357913941\nHEIGHT 1\nPOINTS 357913941\nDATA binary_compressed\n";
   f.push_back({"compressed_lie.pcd", head + bytesOf<std::uint32_t>(16) + bytesOf<std::uint32_t>(4294967292u) +
