@@ -27,6 +27,7 @@
 #include <unistd.h>
 
 #include "cli/command.hpp"
+#include "cli/option_checks.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "io/io.hpp"
@@ -42,7 +43,7 @@ struct RegisterOptions {
   std::string source_trajectory, target_trajectory;
   bool no_refine = false;
   bool print_params = false;
-  std::optional<std::uint64_t> seed;
+  std::string seed;  ///< empty: not given; range-checked in loadParams
 };
 
 /// The pipeline overrides every group's own seed with PipelineParams::seed; the groups carry
@@ -83,7 +84,7 @@ PipelineParams loadParams(const RegisterOptions& o) {
   }
   if (!o.method.empty()) p.method = methodFromName(o.method);
   if (o.no_refine) p.refine = false;
-  if (o.seed) p.seed = *o.seed;
+  if (!o.seed.empty()) p.seed = static_cast<std::uint64_t>(parseOption(seedSpec(), o.seed));
   syncSeeds(p);
   return p;
 }
@@ -196,7 +197,7 @@ void addRegisterCommand(CLI::App& app, Action& action) {
   cmd->add_option("--transform", opts->transform, "Write the transform (JSON or 4x4 text)");
   cmd->add_option("--report", opts->report, "Write the quality report (JSON)");
   cmd->add_option("--seed", opts->seed,
-                  "Random seed of every step (default 1; results are deterministic for a seed)");
+                  "Random seed of every step, 0 .. 9e15 (default 1; results are deterministic for a seed)");
   cmd->add_option("--params", opts->params,
                   "Registration parameters (JSON as written by --print-params; any subset of "
                   "its keys); --method, --no-refine and --seed override it")

@@ -23,6 +23,7 @@
 #include <sstream>
 
 #include "cli/command.hpp"
+#include "cli/option_checks.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "io/io.hpp"
@@ -33,24 +34,6 @@
 
 namespace plumb::cli {
 namespace {
-
-std::vector<double> parseNumbers(const std::string& text, std::size_t count, const std::string& option) {
-  std::vector<double> v;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    try {
-      std::size_t used = 0;
-      v.push_back(std::stod(item, &used));
-      if (used != item.size()) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      throw InputError(option + ": '" + text + "' is not " + std::to_string(count) + " comma-separated numbers");
-    }
-  }
-  if (v.size() != count)
-    throw InputError(option + ": '" + text + "' is not " + std::to_string(count) + " comma-separated numbers");
-  return v;
-}
 
 template <class P>
 void addParamOptions(CLI::App* cmd, const ParamSchema<P>& schema, const std::string& prefix,
@@ -65,7 +48,12 @@ void applyParamOptions(const ParamSchema<P>& schema, const std::string& prefix,
                        const std::map<std::string, std::string>& values, P& params) {
   for (const auto& f : schema.fields()) {
     const auto it = values.find(prefix + "-" + f.spec.key);
-    if (it != values.end() && !it->second.empty()) setParam(schema, params, f.spec.key, it->second);
+    if (it == values.end() || it->second.empty()) continue;
+    try {
+      setParam(schema, params, f.spec.key, it->second);
+    } catch (const InputError& e) {
+      throw InputError("--" + it->first + ": " + e.what());
+    }
   }
 }
 
@@ -73,10 +61,41 @@ struct Args {
   std::string preset, building, model, trajectory, perturb, outdir, format = "e57";
   std::vector<std::string> tls;
   bool tls_rooms = false, mms = false, perturb_mms = false, list = false, demo = false, opaque_glass = false;
-  std::uint64_t seed = 1;
-  double noise_mm = -1.0;
+  std::string seed = "1", noise_mm;  // parsed and range-checked in run()
   std::map<std::string, std::string> params;
 };
+
+/// --tls x,y,z and --perturb yaw_max_deg,shift_max_m, range-checked.
+Eigen::Vector3d parseStation(const std::string& text) {
+  const auto v = parseNumberList(text, 3, "--tls");
+  for (double x : v) checkOption(coordinateSpec("tls"), x);
+  return {v[0], v[1], v[2]};
+}
+void applyPerturb(const std::string& text, SurveyRequest& r) {
+  const auto v = parseNumberList(text, 2, "--perturb");
+  checkOption({"perturb", "yaw_max_deg", "deg", "", ParamKind::Real, 0, 180, {}, false}, v[0]);
+  checkOption({"perturb", "shift_max_m", "m", "", ParamKind::Real, 0, 1000, {}, false}, v[1]);
+  r.perturb_yaw_deg = v[0];
+  r.perturb_shift_m = v[1];
+}
+/// --noise-mm applies to both scanners: it must suit both of their schema ranges.
+void applyNoise(const std::string& text, SurveyRequest& r) {
+  if (text.empty()) return;
+  const double mm = parseOption(TlsParams::schema().find("noise-mm")->spec, text);
+  checkOption(MmsParams::schema().find("noise-mm")->spec, mm);
+  r.tls.noise_mm = r.mms_params.noise_mm = mm;
+}
+
+/// The numeric options onto a request: --seed, --tls stations, --perturb, --noise-mm and the
+/// --tls-<key> / --mms-<key> schema parameters, each parsed and range-checked.
+void applyNumbers(const Args& a, SurveyRequest& r) {
+  r.seed = static_cast<std::uint64_t>(parseOption(seedSpec(), a.seed));
+  for (const auto& t : a.tls) r.tls_stations.push_back(parseStation(t));
+  if (!a.perturb.empty()) applyPerturb(a.perturb, r);
+  applyNoise(a.noise_mm, r);
+  applyParamOptions(TlsParams::schema(), "tls", a.params, r.tls);
+  applyParamOptions(MmsParams::schema(), "mms", a.params, r.mms_params);
+}
 
 int run(const Args& a) {
   if (a.list) {
@@ -87,6 +106,8 @@ int run(const Args& a) {
   const int sources = !a.preset.empty() + !a.building.empty() + !a.model.empty();
   if (sources > 1) throw InputError("simulate: give only one of --preset, --building, --model");
   if (a.format != "e57" && a.format != "ply") throw InputError("simulate: --format must be e57 or ply");
+  SurveyRequest checked;
+  applyNumbers(a, checked);  // every numeric option is checked before any work is done
 
   std::optional<GeneratedBuilding> generated;
   BimModel model;
@@ -111,31 +132,17 @@ int run(const Args& a) {
   SurveyRequest r;
   if (a.demo) {
     if (!generated) throw InputError("simulate: --demo needs a generated building (no --model)");
-    r = demoSurveyRequest(generated->spec, a.seed);
+    r = demoSurveyRequest(generated->spec, checked.seed);
   }
-  r.seed = a.seed;
+  applyNumbers(a, r);
   r.glass_transparent = !a.opaque_glass;
-  for (const auto& t : a.tls) {
-    const auto v = parseNumbers(t, 3, "--tls");
-    r.tls_stations.emplace_back(v[0], v[1], v[2]);
-  }
   if (a.tls_rooms) {
     if (!generated) throw InputError("simulate: --tls-rooms needs a generated building (no --model)");
     for (const auto& c : roomCentres(generated->spec, 0)) r.tls_stations.push_back(c);
   }
   r.mms = r.mms || a.mms || !a.trajectory.empty();
   if (!a.trajectory.empty()) r.trajectory = readTrajectory(a.trajectory);
-  if (!a.perturb.empty()) {
-    const auto v = parseNumbers(a.perturb, 2, "--perturb");
-    if (v[0] < 0 || v[0] > 180 || v[1] < 0 || v[1] > 1000)
-      throw InputError("--perturb: yaw_max_deg must be in [0, 180] and shift_max_m in [0, 1000]");
-    r.perturb_yaw_deg = v[0];
-    r.perturb_shift_m = v[1];
-  }
   r.perturb_mms = r.perturb_mms || a.perturb_mms;
-  if (a.noise_mm >= 0) r.tls.noise_mm = r.mms_params.noise_mm = a.noise_mm;
-  applyParamOptions(TlsParams::schema(), "tls", a.params, r.tls);
-  applyParamOptions(MmsParams::schema(), "mms", a.params, r.mms_params);
   if (r.tls_stations.empty() && !r.mms)
     throw InputError("simulate: nothing to scan: give --tls x,y,z, --tls-rooms, --mms or --trajectory");
 
@@ -210,8 +217,8 @@ void addSimulateCommand(CLI::App& app, Action& action) {
   cmd->add_option("--perturb", a->perturb, "Random rigid perturbation yaw_max_deg,shift_max_m");
   cmd->add_flag("--perturb-mms", a->perturb_mms, "Perturb the outdoor dataset too (default: it is the reference)");
   cmd->add_flag("--opaque-glass", a->opaque_glass, "Glass stops the laser");
-  cmd->add_option("--seed", a->seed, "Random seed (same seed, same output)");
-  cmd->add_option("--noise-mm", a->noise_mm, "Range noise sigma for all scanners [mm]");
+  cmd->add_option("--seed", a->seed, "Random seed, 0 .. 9e15 (same seed, same output)");
+  cmd->add_option("--noise-mm", a->noise_mm, "Range noise sigma for all scanners, 0 .. 100 [mm]");
   cmd->add_option("--format", a->format, "Scan file format: e57 (with poses) or ply");
   cmd->add_option("-o,--output", a->outdir, "Output directory");
   addParamOptions(cmd, TlsParams::schema(), "tls", a->params);

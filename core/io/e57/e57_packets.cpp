@@ -8,6 +8,7 @@ namespace plumb::e57 {
 namespace {
 constexpr std::size_t kSectionHeaderSize = 32;
 constexpr std::size_t kMaxPacket = 65536;
+constexpr std::uint32_t kMaxBarrenPackets = 256;
 
 std::uint16_t u16(const std::uint8_t* p) { return static_cast<std::uint16_t>(p[0] | (p[1] << 8)); }
 std::uint64_t u64(const std::uint8_t* p) {
@@ -41,18 +42,15 @@ CompressedVectorReader::CompressedVectorReader(PagedReader& file, const ScanInfo
     fail("invalid CompressedVector section length " + std::to_string(length), section_start_ + 8);
   section_end_ = section_start_ + length;
 
-  std::uint64_t bits_per_record = 0;
-  for (const FieldSpec& f : scan.fields) {
-    decoders_.emplace_back(f);
-    bits_per_record += f.bits();
-  }
-  // A record costs at least one bit of the section (records with only constant fields are
-  // limited the same way), so a corrupted count cannot make us allocate unbounded memory.
-  const std::uint64_t capacity = (length - kSectionHeaderSize) * 8 / std::max<std::uint64_t>(1, bits_per_record);
+  for (const FieldSpec& f : scan.fields) decoders_.emplace_back(f);
+  // A record costs at least one bit of the section per field (fields stored in 0 bits too), so
+  // a corrupted count cannot make us allocate unbounded memory.
+  const std::uint64_t cost = scan.recordCost();
+  const std::uint64_t capacity = (length - kSectionHeaderSize) * 8 / cost;
   if (record_count_ > capacity) {
     std::ostringstream msg;
     msg << "recordCount " << record_count_ << " cannot fit in the " << length
-        << "-byte CompressedVector section (" << bits_per_record << " bits per record)";
+        << "-byte CompressedVector section (at least " << cost << " bits per record)";
     fail(msg.str(), section_start_);
   }
   if (record_count_ > 0) {
@@ -82,14 +80,11 @@ void CompressedVectorReader::readNextPacket() {
     file_.readLogical(at, 4, head, "packet header");
     const std::uint8_t type = head[0];
     const std::size_t length = std::size_t{u16(head + 2)} + 1;
-    if (type > 2) fail("invalid packet type " + std::to_string(type), at);
-    if (at + length > section_end_)
-      fail("packet of " + std::to_string(length) + " bytes extends past the end of its section", at);
+    checkPacket(type, length, at);
     next_packet_ = at + length;
     if (type != 1) continue;  // index and empty packets carry no records
     packet_.resize(kMaxPacket);
     file_.readLogical(at, length, packet_.data(), "data packet");
-    if (length < 6) fail("data packet too short (" + std::to_string(length) + " bytes)", at);
     const std::size_t count = u16(packet_.data() + 4);
     if (count == 0) continue;  // a packet without bytestreams (libE57Format's 0-record form)
     if (count != decoders_.size()) {
@@ -113,8 +108,29 @@ void CompressedVectorReader::readNextPacket() {
       decoders_[i].append(packet_.data() + pos, n);
       pos += n;
     }
-    return;
+    if (total > 6 + 2 * count) {
+      barren_packets_ = 0;
+      return;
+    }
   }
+}
+
+void CompressedVectorReader::checkPacket(std::uint8_t type, std::size_t length, std::uint64_t at) {
+  if (type > 2) fail("invalid packet type " + std::to_string(type), at);
+  // E57_FACTS.md section 8: lengths are multiples of 4; an index packet has a 16-byte header,
+  // a data packet 6 bytes before its buffers. A section of zeros fails here at once instead of
+  // being walked as 1-byte packets.
+  static const std::size_t kMinLength[3] = {16, 8, 4};
+  if (length % 4 != 0 || length < kMinLength[type])
+    fail("invalid " + std::string(type == 0 ? "index" : type == 1 ? "data" : "empty") +
+             " packet length " + std::to_string(length) + " (packets are multiples of 4 bytes, at least " +
+             std::to_string(kMinLength[type]) + ")", at);
+  if (at + length > section_end_)
+    fail("packet of " + std::to_string(length) + " bytes extends past the end of its section", at);
+  // Packets without record bytes cost time but no memory: a run of them longer than any writer
+  // produces (libE57Format writes one index packet per section) is a corrupted section.
+  if (++barren_packets_ > kMaxBarrenPackets)
+    fail(std::to_string(kMaxBarrenPackets) + " packets in a row carry no record bytes", at);
 }
 
 std::size_t CompressedVectorReader::read(std::vector<std::vector<double>>& columns,

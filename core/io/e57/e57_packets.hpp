@@ -28,6 +28,8 @@ class CompressedVectorReader {
 
  private:
   void readNextPacket();  ///< appends one data packet's buffers (skips index/empty packets)
+  /// Type, length and bounds of the packet at logical `at`; counts packets without record bytes.
+  void checkPacket(std::uint8_t type, std::size_t length, std::uint64_t at);
   [[noreturn]] void fail(const std::string& message, std::uint64_t logical) const;
 
   PagedReader& file_;
@@ -39,6 +41,7 @@ class CompressedVectorReader {
   std::uint64_t section_end_ = 0;    ///< logical, exclusive
   std::uint64_t next_packet_ = 0;    ///< logical
   std::vector<std::uint8_t> packet_;
+  std::uint32_t barren_packets_ = 0;  ///< packets in a row that delivered no record bytes
 };
 
 }  // namespace plumb::e57

@@ -33,15 +33,14 @@ Dataset readFromSource(const e57::ByteSource& source, const std::filesystem::pat
   data.metadata.emplace_back("scans", std::to_string(info.scans.size()));
   if (info.image_count) data.metadata.emplace_back("images2D (skipped)", std::to_string(info.image_count));
 
-  // Sections hold at least one bit per record; scans sharing or overlapping sections in a
-  // corrupted file must not multiply the memory a small file can demand.
+  // Sections hold at least one bit per record and field (ScanInfo::recordCost); scans sharing
+  // or overlapping sections in a corrupted file must not multiply the memory a small file can
+  // demand.
   std::uint64_t total = 0;
   unsigned __int128 total_bits = 0;
   for (const auto& s : info.scans) {
     total += s.record_count;
-    std::uint64_t bits = 0;
-    for (const auto& f : s.fields) bits += f.bits();
-    total_bits += static_cast<unsigned __int128>(s.record_count) * std::max<std::uint64_t>(bits, 1);
+    total_bits += static_cast<unsigned __int128>(s.record_count) * s.recordCost();
     if (total_bits > static_cast<unsigned __int128>(file.logicalSize()) * 8)
       file.fail("recordCount " + std::to_string(s.record_count) + ": the scans up to this one claim " +
                     std::to_string(total) + " records, more than the file can hold",

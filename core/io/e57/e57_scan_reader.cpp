@@ -254,7 +254,10 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
   bool offset_chosen = false;
   std::int64_t max_row = -1, max_column = -1;
   std::size_t out = 0;  // points kept so far
-  while (const std::size_t n = reader.read(cols, kBlock)) {
+  // Decoded columns of one block (8 bytes per field and record) stay under 4 MiB however many
+  // fields the prototype declares.
+  const std::size_t block = std::clamp<std::size_t>((std::size_t{4} << 20) / (8 * info.fields.size() + 8), 1, kBlock);
+  while (const std::size_t n = reader.read(cols, block)) {
     checkCanceled(progress);
     auto c = [&](int role) -> const double* { return col[role] >= 0 ? cols[col[role]].data() : nullptr; };
     sel.clear();

@@ -2,6 +2,7 @@
 
 #include <pugixml.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -22,6 +23,12 @@ unsigned FieldSpec::bits() const {
     }
   }
   return 64;
+}
+
+std::uint64_t ScanInfo::recordCost() const {
+  std::uint64_t bits = 0;
+  for (const FieldSpec& f : fields) bits += f.bits();
+  return std::max<std::uint64_t>({bits, fields.size(), 1});
 }
 
 namespace {

@@ -50,6 +50,11 @@ struct ScanInfo {
   std::optional<Limits> intensity_limits;
   std::optional<std::array<Limits, 3>> color_limits;  ///< red, green, blue
   std::optional<Limits> row_limits, column_limits;    ///< indexBounds
+
+  /// Bits of its section one record is charged when its recordCount is checked against the
+  /// section and file sizes: its packed bits, but at least one per field, as every field
+  /// costs memory per record even when it is stored in 0 bits (minimum = maximum).
+  std::uint64_t recordCost() const;
 };
 
 struct FileInfo {

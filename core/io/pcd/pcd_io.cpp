@@ -4,6 +4,8 @@
 #include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -24,12 +26,86 @@ struct PcdHeader {
   std::string data;
   std::uint64_t data_offset = 0;  ///< first byte after the DATA line
   std::uint64_t data_line = 0;
-  std::size_t recordSize() const {
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < sizes.size(); ++i) n += static_cast<std::size_t>(sizes[i] * counts[i]);
+  /// Bytes of one binary record (fields were checked: sizes 1..8, counts 1..kMaxRecordBytes).
+  std::uint64_t recordSize() const {
+    std::uint64_t n = 0;
+    for (std::size_t i = 0; i < sizes.size(); ++i)
+      n += static_cast<std::uint64_t>(sizes[i]) * static_cast<std::uint64_t>(counts[i]);
+    return n;
+  }
+  /// Values of one record (an ASCII record needs at least one character per value).
+  std::uint64_t valueCount() const {
+    std::uint64_t n = 0;
+    for (int c : counts) n += static_cast<std::uint64_t>(c);
     return n;
   }
 };
+
+/// Largest record accepted (PCL keeps field offsets and the point step in 32-bit integers).
+constexpr std::uint64_t kMaxRecordBytes = std::uint64_t{1} << 20;
+
+/// WIDTH, HEIGHT or POINTS: a whole number in 0 .. 2^32-1 (PCL's range), nothing else on the line.
+bool parseDimension(std::istringstream& words, std::uint64_t& out) {
+  std::string text, rest;
+  if (!(words >> text) || (words >> rest)) return false;
+  const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+  return ec == std::errc() && p == text.data() + text.size() && out <= UINT32_MAX;
+}
+
+/// Checks FIELDS/SIZE/TYPE/COUNT/WIDTH/HEIGHT/POINTS once the DATA line is reached.
+template <class Fail>
+void checkFields(PcdHeader& h, bool have_width, bool have_points, Fail&& fail) {
+  if (h.fields.empty()) fail("PCD header has no FIELDS line before DATA");
+  if (h.counts.empty()) h.counts.assign(h.fields.size(), 1);
+  if (h.sizes.size() != h.fields.size() || h.types.size() != h.fields.size() ||
+      h.counts.size() != h.fields.size())
+    fail("FIELDS, SIZE, TYPE and COUNT have different numbers of entries (" +
+         std::to_string(h.fields.size()) + ", " + std::to_string(h.sizes.size()) + ", " +
+         std::to_string(h.types.size()) + ", " + std::to_string(h.counts.size()) + ")");
+  for (std::size_t i = 0; i < h.types.size(); ++i) {
+    const char t = h.types[i];
+    const int s = h.sizes[i];
+    if (!((t == 'F' && (s == 4 || s == 8)) || ((t == 'I' || t == 'U') && (s == 1 || s == 2 || s == 4 || s == 8))))
+      fail("field '" + h.fields[i] + "' has an invalid TYPE/SIZE " + std::string(1, t) + "/" + std::to_string(s));
+    if (h.counts[i] < 1 || static_cast<std::uint64_t>(h.counts[i]) > kMaxRecordBytes)
+      fail("field '" + h.fields[i] + "' has COUNT " + std::to_string(h.counts[i]) + " (expected 1 .. " +
+           std::to_string(kMaxRecordBytes) + ")");
+  }
+  if (h.recordSize() > kMaxRecordBytes)
+    fail("a point record of " + std::to_string(h.recordSize()) + " bytes is larger than the " +
+         std::to_string(kMaxRecordBytes) + " bytes accepted");
+  if (!have_width) fail("PCD header has no WIDTH line");
+  if (!have_points) h.points = h.width * h.height;
+  if (h.width * h.height != h.points)
+    fail("WIDTH x HEIGHT (" + std::to_string(h.width) + " x " + std::to_string(h.height) +
+         ") differs from POINTS " + std::to_string(h.points));
+}
+
+/// PCL's PCDReader goes on reading header lines after DATA while they are empty, comments or
+/// start with a header keyword, so a FIELDS, SIZE, COUNT or POINTS line there changes the
+/// layout after it sized its buffers: a heap overflow inside PCL (found by fuzz_pcd). Such a
+/// line is refused, naming it.
+void checkNoHeaderAfterData(std::istream& in, const std::filesystem::path& path, std::uint64_t line_no,
+                            std::uint64_t offset) {
+  static const char* const kKeywords[] = {"FIELDS", "COLUMNS", "SIZE",   "TYPE", "COUNT",
+                                          "WIDTH",  "HEIGHT",  "VIEWPOINT", "POINTS", "DATA"};
+  std::string line;
+  while (offset < (1u << 20) && std::getline(in, line)) {
+    ++line_no;
+    const std::uint64_t start = offset;
+    offset += line.size() + 1;
+    std::istringstream words(line);
+    std::string key;
+    if (!(words >> key) || key[0] == '#' || key.starts_with("VERSION")) continue;
+    for (const char* k : kKeywords)
+      if (key.starts_with(k)) {
+        FileLocation loc = atLine(line_no, "data");
+        loc.byte_offset = start;
+        throw FileError(path, "a " + std::string(k) + " header line after the DATA line", loc);
+      }
+    return;
+  }
+}
 
 PcdHeader checkHeader(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -54,6 +130,10 @@ PcdHeader checkHeader(const std::filesystem::path& path) {
       loc.byte_offset = line_start;
       throw FileError(path, what + ": \"" + line.substr(0, 80) + "\"", loc);
     };
+    // PCL splits header lines at spaces, tabs and CRs only, and takes the first character of
+    // each TYPE word: other separators or longer TYPE words would make its layout differ from
+    // the one checked here (fuzz_pcd: a NULL read inside PCL for "TYPE FF F F").
+    if (line.find_first_of("\r\v\f") != std::string::npos) fail("control character in a header line");
     auto readAll = [&](auto& vec) {
       typename std::decay_t<decltype(vec)>::value_type v;
       while (words >> v) vec.push_back(v);
@@ -65,17 +145,22 @@ PcdHeader checkHeader(const std::filesystem::path& path) {
     } else if (key == "SIZE") {
       readAll(h.sizes);
     } else if (key == "TYPE") {
-      readAll(h.types);
+      std::vector<std::string> types;
+      readAll(types);
+      for (const auto& t : types) {
+        if (t.size() != 1) fail("TYPE '" + t + "' is not one of F, I, U");
+        h.types.push_back(t[0]);
+      }
     } else if (key == "COUNT") {
       readAll(h.counts);
     } else if (key == "WIDTH") {
-      if (!(words >> h.width)) fail("WIDTH is not a number");
+      if (!parseDimension(words, h.width)) fail("WIDTH is not a whole number in 0 .. 4294967295");
       have_width = true;
     } else if (key == "HEIGHT") {
-      if (!(words >> h.height)) fail("HEIGHT is not a number");
+      if (!parseDimension(words, h.height)) fail("HEIGHT is not a whole number in 0 .. 4294967295");
     } else if (key == "VIEWPOINT") {
     } else if (key == "POINTS") {
-      if (!(words >> h.points)) fail("POINTS is not a number");
+      if (!parseDimension(words, h.points)) fail("POINTS is not a whole number in 0 .. 4294967295");
       have_points = true;
     } else if (key == "DATA") {
       words >> h.data;
@@ -83,25 +168,8 @@ PcdHeader checkHeader(const std::filesystem::path& path) {
         fail("unknown DATA type (expected ascii, binary or binary_compressed)");
       h.data_offset = offset;
       h.data_line = line_no + 1;
-      if (h.fields.empty()) fail("PCD header has no FIELDS line before DATA");
-      if (h.counts.empty()) h.counts.assign(h.fields.size(), 1);
-      if (h.sizes.size() != h.fields.size() || h.types.size() != h.fields.size() ||
-          h.counts.size() != h.fields.size())
-        fail("FIELDS, SIZE, TYPE and COUNT have different numbers of entries (" +
-             std::to_string(h.fields.size()) + ", " + std::to_string(h.sizes.size()) + ", " +
-             std::to_string(h.types.size()) + ", " + std::to_string(h.counts.size()) + ")");
-      for (std::size_t i = 0; i < h.types.size(); ++i) {
-        const char t = h.types[i];
-        const int s = h.sizes[i];
-        if (!((t == 'F' && (s == 4 || s == 8)) || ((t == 'I' || t == 'U') && (s == 1 || s == 2 || s == 4 || s == 8))))
-          fail("field '" + h.fields[i] + "' has an invalid TYPE/SIZE " + std::string(1, t) + "/" + std::to_string(s));
-        if (h.counts[i] < 1) fail("field '" + h.fields[i] + "' has COUNT < 1");
-      }
-      if (!have_width) fail("PCD header has no WIDTH line");
-      if (!have_points) h.points = h.width * h.height;
-      if (h.width * h.height != h.points)
-        fail("WIDTH x HEIGHT (" + std::to_string(h.width) + " x " + std::to_string(h.height) +
-             ") differs from POINTS " + std::to_string(h.points));
+      checkFields(h, have_width, have_points, fail);
+      checkNoHeaderAfterData(in, path, line_no, offset);
       return h;
     } else {
       if (line_no == 1 && line.size() > 0)
@@ -113,35 +181,55 @@ PcdHeader checkHeader(const std::filesystem::path& path) {
   throw FileError(path, "PCD header has no DATA line", atLine(line_no, "PCD header"));
 }
 
-/// Checks that the data section is complete before handing the file to PCL.
+/// LZF output is at most 88 times its input (a 3-byte back reference copies up to 264 bytes).
+constexpr std::uint64_t kLzfMaxRatio = 88;
+
+[[noreturn]] void truncatedPoints(const std::filesystem::path& path, const PcdHeader& h,
+                                  std::uint64_t file_size, std::uint64_t fit) {
+  throw FileError(path, "truncated data: expected " + std::to_string(h.points) +
+                            " points, file ends at byte " + std::to_string(file_size) +
+                            " in point " + std::to_string(fit),
+                  FileLocation{file_size, {}, "point " + std::to_string(fit)});
+}
+
+/// binary_compressed: the two block sizes must agree with POINTS, the file size and each
+/// other before PCL allocates the uncompressed block.
+void checkCompressedSizes(const std::filesystem::path& path, const PcdHeader& h, std::uint64_t file_size) {
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(h.data_offset));
+  std::uint32_t sizes[2] = {0, 0};
+  if (!in.read(reinterpret_cast<char*>(sizes), sizeof sizes))
+    throw FileError(path, "truncated data: the compressed block sizes are missing",
+                    atByte(h.data_offset, "binary_compressed header"));
+  const FileLocation where = atByte(h.data_offset, "binary_compressed header");
+  const std::uint64_t need = h.points * h.recordSize();  // < 2^52: both factors were bounded
+  if (sizes[1] != need)
+    throw FileError(path, "compressed block declares " + std::to_string(sizes[1]) +
+                              " uncompressed bytes, but " + std::to_string(h.points) +
+                              " points need " + std::to_string(need), where);
+  if (sizes[0] > file_size - std::min(file_size, h.data_offset + 8))
+    throw FileError(path, "truncated data: the compressed block has " + std::to_string(sizes[0]) +
+                              " bytes, file ends at byte " + std::to_string(file_size),
+                    atByte(file_size, "binary_compressed block"));
+  if (sizes[1] > std::uint64_t{sizes[0]} * kLzfMaxRatio)
+    throw FileError(path, "compressed block of " + std::to_string(sizes[0]) + " bytes cannot hold " +
+                              std::to_string(sizes[1]) + " uncompressed bytes (LZF expands at most " +
+                              std::to_string(kLzfMaxRatio) + " times)", where);
+}
+
+/// Checks that the data section can hold POINTS records before PCL sizes anything from it.
 void checkDataSize(const std::filesystem::path& path, const PcdHeader& h) {
   const std::uint64_t file_size = std::filesystem::file_size(path);
-  const std::uint64_t rec = h.recordSize();
+  const std::uint64_t left = file_size - std::min(file_size, h.data_offset);
   if (h.data == "binary") {
-    const std::uint64_t need = h.data_offset + h.points * rec;
-    if (file_size < need) {
-      const std::uint64_t k = file_size > h.data_offset ? (file_size - h.data_offset) / rec : 0;
-      throw FileError(path, "truncated data: expected " + std::to_string(h.points) +
-                                " points, file ends at byte " + std::to_string(file_size) +
-                                " in point " + std::to_string(k),
-                      FileLocation{file_size, {}, "point " + std::to_string(k)});
-    }
+    const std::uint64_t rec = h.recordSize();
+    if (h.points > left / rec) truncatedPoints(path, h, file_size, left / rec);
+  } else if (h.data == "ascii") {
+    // Every value takes a character and a separator (the last one of the file may lack it).
+    const std::uint64_t record = 2 * h.valueCount();
+    if (h.points > (left + 1) / record) truncatedPoints(path, h, file_size, (left + 1) / record);
   } else if (h.data == "binary_compressed") {
-    std::ifstream in(path, std::ios::binary);
-    in.seekg(static_cast<std::streamoff>(h.data_offset));
-    std::uint32_t sizes[2] = {0, 0};
-    if (!in.read(reinterpret_cast<char*>(sizes), sizeof sizes))
-      throw FileError(path, "truncated data: the compressed block sizes are missing",
-                      atByte(h.data_offset, "binary_compressed header"));
-    if (sizes[1] != h.points * rec)
-      throw FileError(path, "compressed block declares " + std::to_string(sizes[1]) +
-                                " uncompressed bytes, but " + std::to_string(h.points) +
-                                " points need " + std::to_string(h.points * rec),
-                      atByte(h.data_offset, "binary_compressed header"));
-    if (h.data_offset + 8 + sizes[0] > file_size)
-      throw FileError(path, "truncated data: the compressed block has " + std::to_string(sizes[0]) +
-                                " bytes, file ends at byte " + std::to_string(file_size),
-                      atByte(file_size, "binary_compressed block"));
+    checkCompressedSizes(path, h, file_size);
   }
 }
 
@@ -177,6 +265,8 @@ struct QuietPcl {
 };
 
 }  // namespace
+
+void checkPcdHeader(const std::filesystem::path& path) { checkDataSize(path, checkHeader(path)); }
 
 Dataset readPcd(const std::filesystem::path& path, Progress* progress) {
   const PcdHeader header = checkHeader(path);

@@ -21,6 +21,10 @@ namespace plumb {
 /// Throws FileError (file, what, where) for malformed headers, truncated data, bad LZF blocks.
 Dataset readPcd(const std::filesystem::path& path, Progress* progress = nullptr);
 
+/// The header and size checks readPcd runs before PCL reads the file: throws FileError when
+/// the header is malformed or the data section cannot hold what it declares. (fuzz_pcd.)
+void checkPcdHeader(const std::filesystem::path& path);
+
 struct PcdWriteOptions {
   bool compressed = true;  ///< binary_compressed (LZF); false: binary
 };

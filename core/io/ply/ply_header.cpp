@@ -1,5 +1,6 @@
 #include "io/ply/ply_header.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <sstream>
 
@@ -37,6 +38,26 @@ std::vector<std::string_view> splitWords(std::string_view line) {
     i = j;
   }
   return words;
+}
+
+/// Fewest bytes one record of `e` takes in the data section: binary, its fixed-size values (a
+/// list at least its count); ASCII, one character per value (a realistic minimum, a character
+/// and a separator per value, is used only to say where the data would end).
+std::uint64_t minRecordBytes(const Element& e, Encoding encoding, std::uint64_t ascii_value_bytes) {
+  std::uint64_t n = 0;
+  for (const auto& p : e.properties)
+    n += encoding == Encoding::Ascii ? ascii_value_bytes : typeSize(p.is_list ? p.count_type : p.type);
+  return n;
+}
+
+[[noreturn]] void tooManyRecords(const Element& e, std::uint64_t fit, std::uint64_t file_size,
+                                 const std::filesystem::path& file) {
+  const std::string plural = e.name == "vertex" ? "vertices" : e.name + "s";
+  const std::string where = e.name + " " + std::to_string(fit);
+  throw FileError(file, "truncated data: expected " + std::to_string(e.count) + " " + plural +
+                            ", file ends at byte " +
+                            std::to_string(file_size) + " in " + where,
+                  atByte(file_size, where));
 }
 
 }  // namespace
@@ -166,6 +187,24 @@ Header parseHeader(const char* data, std::size_t size, const std::filesystem::pa
     } else {
       fail("unknown PLY header keyword '" + std::string(kw) + "'");
     }
+  }
+}
+
+void checkElementSizes(const Header& h, std::uint64_t data_bytes, const std::filesystem::path& file) {
+  const bool ascii = h.encoding == Encoding::Ascii;
+  std::uint64_t left = data_bytes;
+  for (const Element& e : h.elements) {
+    if (e.count == 0) continue;
+    if (e.properties.empty())
+      throw FileError(file, "element '" + e.name + "' declares " + std::to_string(e.count) +
+                                " records but has no properties",
+                      atLine(e.header_line, "PLY header"));
+    const std::uint64_t record = minRecordBytes(e, h.encoding, 1);
+    const std::uint64_t room = ascii ? left + 1 : left;  // the last ASCII value needs no separator
+    if (e.count > room / record)
+      tooManyRecords(e, room / (ascii ? minRecordBytes(e, h.encoding, 2) : record),
+                     h.data_offset + data_bytes, file);
+    left -= std::min(left, e.count * record);
   }
 }
 

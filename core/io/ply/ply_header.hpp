@@ -48,4 +48,11 @@ struct Header {
 /// "end_header" is not found within `size` bytes.
 Header parseHeader(const char* data, std::size_t size, const std::filesystem::path& file);
 
+/// Checks the element counts against the `data_bytes` that follow the header, before anything
+/// is sized from a count: a binary record takes at least its fixed-size properties (a list at
+/// least its count), an ASCII value at least one character and a separator. Throws FileError
+/// naming the element's header line when an element cannot fit, or when an element with
+/// records has no properties.
+void checkElementSizes(const Header& h, std::uint64_t data_bytes, const std::filesystem::path& file);
+
 }  // namespace plumb::ply

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <type_traits>
@@ -69,10 +70,24 @@ inline std::uint8_t toColor(T v) {
   } else if constexpr (std::is_same_v<T, std::uint16_t>) {
     return static_cast<std::uint8_t>(v >> 8);
   } else if constexpr (std::is_floating_point_v<T>) {
+    if (std::isnan(v)) return 0;  // found by fuzz_ply: converting NaN to an integer is undefined
     const double s = std::clamp(static_cast<double>(v) * 255.0 + 0.5, 0.0, 255.0);
     return static_cast<std::uint8_t>(s);
   } else {
     return static_cast<std::uint8_t>(std::clamp<long long>(v, 0, 255));
+  }
+}
+
+/// v converted to T, clamped to T's range (NaN -> 0): out-of-range conversions of file values
+/// to integers are undefined behaviour.
+template <class T>
+T saturate(double v) {
+  if constexpr (std::is_floating_point_v<T>) {
+    return static_cast<T>(v);
+  } else {
+    if (std::isnan(v)) return T{0};
+    return static_cast<T>(std::clamp(v, static_cast<double>(std::numeric_limits<T>::lowest()),
+                                     static_cast<double>(std::numeric_limits<T>::max())));
   }
 }
 
@@ -143,7 +158,7 @@ void putValue(const Slot& s, const Columns& c, std::size_t i, double v) {
     case Target::Normal: c.nrm[i * 3 + s.comp] = static_cast<float>(v); break;
     case Target::Color:
       c.rgb[i * 3 + s.comp] = ply::withType(s.type, [&](auto tag) {
-        return toColor(static_cast<decltype(tag)>(v));
+        return toColor(saturate<decltype(tag)>(v));
       });
       break;
     case Target::Intensity: c.inten[i] = static_cast<float>(v); break;
@@ -251,6 +266,7 @@ class Reader {
       want *= 4;
     }
     out_.header = ply::parseHeader(in_.data(), in_.available(), path_);
+    ply::checkElementSizes(out_.header, in_.fileSize() - out_.header.data_offset, path_);
     in_.consume(out_.header.data_offset);
     line_ = out_.header.data_line;
     for (const Element& e : out_.header.elements) {
@@ -482,7 +498,7 @@ class Reader {
           auto fill = [&](auto& dst) {
             dst.resize(v.size());
             for (std::size_t i = 0; i < v.size(); ++i)
-              dst[i] = static_cast<typename std::decay_t<decltype(dst)>::value_type>(v[i]);
+              dst[i] = saturate<typename std::decay_t<decltype(dst)>::value_type>(v[i]);
           };
           const std::string& nm = names[k];
           if (nm == "return_index") fill(cloud.return_index);
@@ -648,7 +664,7 @@ class Reader {
       out_.triangle_element.reserve(ids.size());
       for (double id : ids) {
         auto [it, added] = element_of.emplace(id, static_cast<std::uint32_t>(element_of.size()));
-        if (added) out_.elements.push_back({"", "element " + std::to_string(static_cast<long long>(id)), ""});
+        if (added) out_.elements.push_back({"", "element " + std::to_string(saturate<long long>(id)), ""});
         out_.triangle_element.push_back(it->second);
       }
       face_ids_ = std::move(element_of);
@@ -691,7 +707,7 @@ class Reader {
       std::string key;
       long long rows = 0, cols = 0;
       if (in >> key >> rows >> cols && key == "plumb-grid" && rows > 0 && cols > 0 &&
-          static_cast<std::size_t>(rows * cols) == v.size()) {
+          rows <= INT32_MAX && cols <= INT32_MAX && static_cast<std::size_t>(rows * cols) == v.size()) {
         v.grid_rows = static_cast<std::int32_t>(rows);
         v.grid_columns = static_cast<std::int32_t>(cols);
       }

@@ -61,6 +61,25 @@ void split(std::string_view line, char delim, std::vector<std::string_view>& out
   if (!out.empty() && out.back().empty()) out.pop_back();  // trailing delimiter
 }
 
+/// Limits that keep a hostile file (one 10 MB line: 5 million "columns") from costing more
+/// than its size: real point files have a few dozen columns and lines of at most a few
+/// hundred bytes.
+constexpr std::size_t kMaxColumns = 256;
+constexpr std::size_t kMaxLineBytes = 64 << 10;
+
+/// split(), then refuses more than kMaxColumns values on the line.
+void splitChecked(std::string_view line, char delim, std::vector<std::string_view>& out,
+                  const std::filesystem::path& path, std::uint64_t line_no) {
+  split(line, delim, out);
+  if (out.size() > kMaxColumns)
+    throw FileError(path, "line has " + std::to_string(out.size()) + " values, more than the " +
+                              std::to_string(kMaxColumns) + " columns accepted",
+                    atLine(line_no));
+}
+
+/// A colour value clamped to 0..255; NaN (a "nan" in the file) is 0, not undefined behaviour.
+std::uint8_t colorByte(double v) { return std::isnan(v) ? 0 : static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0)); }
+
 bool parseNumber(std::string_view tok, bool decimal_comma, double& v) {
   if (tok.empty()) return false;
   std::string tmp;
@@ -125,12 +144,20 @@ struct Line {
   std::uint64_t offset;
 };
 
-/// Calls f(Line) for each line from byte `pos`; f returns false to stop.
+/// Calls f(Line) for each line from byte `pos`; f returns false to stop. Lines longer than
+/// kMaxLineBytes are refused.
 template <class F>
-void forEachLine(const std::string& text, std::size_t pos, std::uint64_t line_no, F&& f) {
+void forEachLine(const std::string& text, std::size_t pos, std::uint64_t line_no,
+                 const std::filesystem::path& path, F&& f) {
   while (pos < text.size()) {
     std::size_t eol = text.find('\n', pos);
     if (eol == std::string::npos) eol = text.size();
+    if (eol - pos > kMaxLineBytes) {
+      FileLocation where = atLine(line_no);
+      where.byte_offset = pos;
+      throw FileError(path, "line of " + std::to_string(eol - pos) + " bytes is longer than the " +
+                                std::to_string(kMaxLineBytes) + " bytes accepted", where);
+    }
     if (!f(Line{std::string_view(text).substr(pos, eol - pos), line_no, pos})) return;
     pos = eol + 1;
     ++line_no;
@@ -155,7 +182,7 @@ Dataset readText(const std::filesystem::path& path, Progress* progress) {
   std::uint64_t data_line = 0;
   std::vector<std::vector<double>> sample;
   std::vector<std::string_view> toks;
-  forEachLine(text, 0, 1, [&](const Line& ln) {
+  forEachLine(text, 0, 1, path, [&](const Line& ln) {
     std::string_view line = trim(ln.text);
     if (line.empty()) return true;
     if (isComment(line)) {
@@ -164,12 +191,12 @@ Dataset readText(const std::filesystem::path& path, Progress* progress) {
         split(body, detectDelimiter(body), toks);
         int xyz = 0;
         for (auto t : toks) xyz += static_cast<int>(columnFromName(std::string(t)) <= Col::Z);
-        if (xyz == 3) names.assign(toks.begin(), toks.end());
+        if (xyz == 3 && toks.size() <= kMaxColumns) names.assign(toks.begin(), toks.end());
       }
       return true;
     }
     const char d = delim ? delim : detectDelimiter(line);
-    split(line, d, toks);
+    splitChecked(line, d, toks, path, ln.number);
     std::vector<double> vals(toks.size());
     bool numeric = !toks.empty();
     for (std::size_t k = 0; k < toks.size() && numeric; ++k) numeric = parseNumber(toks[k], d == ';', vals[k]);
@@ -248,10 +275,10 @@ Dataset readText(const std::filesystem::path& path, Progress* progress) {
   std::vector<double> vals(ncols);
   const double total = static_cast<double>(text.size());
   std::uint64_t count = 0;
-  forEachLine(text, data_pos, data_line, [&](const Line& ln) {
+  forEachLine(text, data_pos, data_line, path, [&](const Line& ln) {
     std::string_view line = trim(ln.text);
     if (line.empty() || isComment(line)) return true;
-    split(line, delim, toks);
+    splitChecked(line, delim, toks, path, ln.number);
     if (toks.size() == 1 && ncols > 1) {  // PTS block count line
       double v;
       if (parseNumber(toks[0], false, v) && v == std::floor(v)) return true;
@@ -272,9 +299,9 @@ Dataset readText(const std::filesystem::path& path, Progress* progress) {
         case Col::X:
         case Col::Y:
         case Col::Z: break;
-        case Col::R: rgb[0] = static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0)); break;
-        case Col::G: rgb[1] = static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0)); break;
-        case Col::B: rgb[2] = static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0)); break;
+        case Col::R: rgb[0] = colorByte(v); break;
+        case Col::G: rgb[1] = colorByte(v); break;
+        case Col::B: rgb[2] = colorByte(v); break;
         case Col::I: c.intensity.push_back(static_cast<float>(v)); break;
         case Col::NX: n.x() = static_cast<float>(v); break;
         case Col::NY: n.y() = static_cast<float>(v); break;

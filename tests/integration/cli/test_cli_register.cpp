@@ -150,6 +150,21 @@ TEST(CliRegister, ParamsFileRoundTripAndSeedInOnePlace) {
 }
 
 // Failures exit non-zero with an explanation and never touch an existing output.
+// Issue 12: --seed is a whole number in the schemas' seed range; the error names the option
+// and the range (on main -1 became 18446744073709551615).
+TEST(CliRegister, SeedOutsideItsRangeIsRefused) {
+  const auto dir = scratchDir("cli_register_seed");
+  for (const char* seed : {"-1", "1.5", "1e300", "nan"}) {
+    const CliResult r = plumbCli(dir, std::string("register --print-params --seed ") + seed);
+    EXPECT_EQ(r.exit_code, 1) << seed << ": " << r.out << r.err;
+    EXPECT_NE(r.err.find("--seed:"), std::string::npos) << seed << ": " << r.err;
+    EXPECT_TRUE(r.err.find("[0, 9e+15]") != std::string::npos ||
+                r.err.find("whole number") != std::string::npos || r.err.find("expects a number") != std::string::npos)
+        << seed << ": " << r.err;
+  }
+  EXPECT_EQ(plumbCli(dir, "register --print-params --seed 9000000000000000").exit_code, 0);
+}
+
 TEST(CliRegister, FailuresExplainAndLeaveOutputsUntouched) {
   const fs::path dir = scratchDir("cli_register_fail");
   writeBoxPly(dir / "a.ply", {6, 4, 3}, {0, 0, 0}, 1);

@@ -80,5 +80,36 @@ TEST(CliSimulate, ErrorsAreOneLine) {
   expectRun("simulate --list-presets", true, "non-manhattan");
 }
 
+// Issue 12: every numeric option is range-checked before any work, and the error names the
+// option and the accepted range. On main `--tls nan,nan,nan` and `--tls 1e308,0,0` aborted
+// inside Embree; a negative or absurd --noise-mm and seeds -1 or 1.5 were accepted.
+TEST(CliSimulate, NumericOptionsOutsideTheirRangeAreRefused) {
+  const auto dir = test::scratchDir("cli-simulate-ranges");
+  const std::string base = "simulate --preset two-rooms -o " + (dir / "x").string() + " ";
+  struct Case {
+    const char* args;
+    const char* option;
+    const char* range;
+  };
+  const Case cases[] = {{"--tls nan,nan,nan", "--tls:", "[-1e+07, 1e+07]"},
+                        {"--tls 1e308,0,0", "--tls:", "[-1e+07, 1e+07]"},
+                        {"--tls 2,2,inf", "--tls:", "[-1e+07, 1e+07]"},
+                        {"--tls 2,2,1.5 --noise-mm -1", "--noise-mm:", "[0, 100]"},
+                        {"--tls 2,2,1.5 --noise-mm 1e9", "--noise-mm:", "[0, 100]"},
+                        {"--tls 2,2,1.5 --noise-mm nan", "--noise-mm:", "[0, 100]"},
+                        {"--tls 2,2,1.5 --seed -1", "--seed:", "[0, 9e+15]"},
+                        {"--tls 2,2,1.5 --seed 1.5", "--seed:", "whole number"},
+                        {"--tls 2,2,1.5 --perturb nan,1", "--perturb:", "[0, 180]"},
+                        {"--tls 2,2,1.5 --perturb 10,-1", "--perturb:", "[0, 1000]"},
+                        {"--tls 2,2,1.5 --tls-noise-mm 1e308", "tls-noise-mm", "[0, 100]"}};
+  for (const Case& c : cases) {
+    const test::CliResult r = test::plumbCli(dir, base + c.args);
+    EXPECT_EQ(r.exit_code, 1) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.option), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.range), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x")) << c.args << ": nothing may be written";
+  }
+}
+
 }  // namespace
 }  // namespace plumb

@@ -1,6 +1,8 @@
 # Run by the CTest test "io_sanitize" (label sanitize): configures a second build tree with
-# AddressSanitizer + UBSan, builds only the I/O test executables (test_io_ply, test_io, and
-# test_e57 / test_las when those targets exist) and runs them. Inputs: SRC, BIN, DATA.
+# AddressSanitizer + UBSan, builds only the I/O test executables (test_io_ply, test_io,
+# test_io_hostile - the hostile inputs and the fuzz crash regressions, whose undefined
+# behaviour only UBSan reports - and test_e57 / test_las when those targets exist) and runs
+# them. Inputs: SRC, BIN, DATA.
 set(tree ${BIN}/sanitize-io)
 execute_process(
   COMMAND ${CMAKE_COMMAND} -S ${SRC} -B ${tree} -G Ninja -DPLUMB_SANITIZE=ON -DPLUMB_BUILD_UI=OFF
@@ -11,7 +13,7 @@ if(rc)
   message(FATAL_ERROR "configuring the sanitizer tree failed (${rc})")
 endif()
 execute_process(COMMAND ninja -C ${tree} -t targets all OUTPUT_VARIABLE targets)
-set(tests test_io_ply test_io)
+set(tests test_io_ply test_io test_io_hostile)
 foreach(t test_e57 test_las)
   if(targets MATCHES "(^|\n)${t}:")
     list(APPEND tests ${t})

@@ -1,0 +1,57 @@
+#include "cli/option_checks.hpp"
+
+#include <sstream>
+
+#include "common/error.hpp"
+
+namespace plumb::cli {
+namespace {
+
+/// Runs f, prefixing an InputError's message with the option's name.
+template <class F>
+auto withOptionName(const ParamSpec& spec, F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    throw InputError("--" + spec.key + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+const ParamSpec& seedSpec() {
+  static const ParamSpec spec{"seed", "Seed", "", "Random seed", ParamKind::Integer, 0, 9.0e15, {}, false};
+  return spec;
+}
+
+ParamSpec coordinateSpec(const std::string& key) {
+  return {key, key, "m", "Coordinate", ParamKind::Real, -1.0e7, 1.0e7, {}, false};
+}
+
+double parseOption(const ParamSpec& spec, const std::string& text) {
+  return withOptionName(spec, [&] { return parseParamValue(spec, text); });
+}
+
+void checkOption(const ParamSpec& spec, double value) {
+  withOptionName(spec, [&] { validateParamValue(spec, value); });
+}
+
+std::vector<double> parseNumberList(const std::string& text, std::size_t count, const std::string& option) {
+  std::vector<double> v;
+  std::stringstream ss(text);
+  std::string item;
+  const std::string what = option + ": '" + text + "' is not " + std::to_string(count) + " comma-separated numbers";
+  while (std::getline(ss, item, ',')) {
+    try {
+      std::size_t used = 0;
+      v.push_back(std::stod(item, &used));
+      if (used != item.size()) throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      throw InputError(what);
+    }
+  }
+  if (v.size() != count) throw InputError(what);
+  return v;
+}
+
+}  // namespace plumb::cli
