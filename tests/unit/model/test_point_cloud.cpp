@@ -224,3 +224,39 @@ TEST(Dataset, MergedScansWithGridPosesKeepSubMillimetre) {
   EXPECT_LT(maxError(m, truth), kClaim);
   EXPECT_LT((d.bounds().min - m.bounds().min).norm(), 0.01);
 }
+
+TEST(PointCloud, AppendKeepsLasFieldsPresentOnOneSideOnly) {
+  // The LAS reader leaves an all-zero field out, so a merge of a scan that has point source
+  // IDs with one that has none must keep them (0 for the other scan), not drop the column.
+  PointCloud a, b;
+  a.positions.assign(2, Eigen::Vector3f::Zero());
+  b.positions.assign(3, Eigen::Vector3f::Ones());
+  a.point_source_id = {7, 8};
+  b.scan_angle.assign(3, 12.5f);
+  a.append(b);
+  ASSERT_EQ(a.point_source_id.size(), 5u);
+  EXPECT_EQ(a.point_source_id[1], 8);
+  EXPECT_EQ(a.point_source_id[4], 0);
+  ASSERT_EQ(a.scan_angle.size(), 5u);
+  EXPECT_EQ(a.scan_angle[0], 0.0f);
+  EXPECT_EQ(a.scan_angle[2], 12.5f);
+  EXPECT_TRUE(a.user_data.empty());  // neither side has it
+}
+
+TEST(PointCloudPrecision, BoundsContainEveryExactCoordinate) {
+  // 30 km from the offset a float steps by 2 mm: bounds from the floats alone could miss the
+  // exact extreme by up to 1 mm, and a quantizing writer (E57) would store a value outside them.
+  PointCloud c;
+  c.offset = {651000.0, 6860000.0, 40.0};
+  c.positions.resize(2);
+  c.position_residuals.resize(2);
+  PointCloud::splitLocal({30000.0007, -30000.0009, 0.0003}, c.positions[0], c.position_residuals[0]);
+  PointCloud::splitLocal({-29999.9993, 29999.9991, 0.0}, c.positions[1], c.position_residuals[1]);
+  const Bounds b = c.bounds();
+  for (std::size_t i = 0; i < 2; ++i)
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_LE(b.min[a], c.world(i)[a]);
+      EXPECT_GE(b.max[a], c.world(i)[a]);
+    }
+  EXPECT_DOUBLE_EQ(b.max.x(), 651000.0 + 30000.0007);
+}
