@@ -60,7 +60,7 @@ struct Bounds {
 class PointCloud {
  public:
   // --- attributes (public: algorithms read and fill them directly) -------------------------
-  Eigen::Vector3d offset = Eigen::Vector3d::Zero();  ///< world = offset + positions[i]
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();  ///< world = offset + positions + residuals
   Column<Eigen::Vector3f> positions;                  ///< local coordinates, metres (float part)
   /// Optional exact remainder of each local coordinate (see the precision model above): the
   /// exact local is positions[i] + position_residuals[i] evaluated in double. Not a user field

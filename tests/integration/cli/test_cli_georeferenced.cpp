@@ -91,3 +91,23 @@ TEST(CliGeoreferenced, ConvertMergesGridPosedE57Stations) {
     EXPECT_LE(maxError(dir / ("merged" + ext), truth), tolerance(ext)) << ext;
   }
 }
+
+TEST(CliGeoreferenced, RegisterOutputOntoAGridModel) {
+  // Scan to BIM where the model sits in Lambert-93: the registered export (`register -o`)
+  // must be the transform of the scan's points, without float rounding at 6.86e6.
+  const fs::path dir = scratchDir("cli_georeferenced_register");
+  const CliResult sim = plumbCli(dir, "simulate --preset house --tls-rooms --perturb 180,15 --seed 5 "
+                                      "--tls-azimuth-step 0.6 --tls-elevation-step 0.6 -o sim");
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  writeTransformFile(dir / "G.json", RigidTransform(Eigen::Matrix3d::Identity(), {651000.1234, 6860000.5678, 40.25}));
+  CliResult r = plumbCli(dir, "convert sim/model.ply grid_model.ply --transform G.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = plumbCli(dir, "register sim/indoor.e57 grid_model.ply --seed 3 --transform T.json -o registered.ply");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const RigidTransform t = readTransformFile(dir / "T.json");
+  EXPECT_GT(t.translation().norm(), 6e6);
+  const PointCloud scan = readDataset(dir / "sim/indoor.e57").merged();
+  std::vector<Eigen::Vector3d> truth;
+  for (std::size_t i = 0; i < scan.size(); ++i) truth.push_back(t.apply(scan.world(i)));
+  EXPECT_LE(maxError(dir / "registered.ply", truth), kClaim);
+}
