@@ -120,7 +120,12 @@ PcdHeader checkHeader(const std::filesystem::path& path) {
     ++line_no;
     const std::uint64_t line_start = offset;
     offset += line.size() + 1;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const bool crlf = !line.empty() && line.back() == '\r';
+    if (crlf) line.pop_back();
+    // PCL skips an empty line but not a lone CR, which crashes its PCDReader (fuzz_pcd: a SEGV).
+    if (line.empty() && crlf)
+      throw FileError(path, "blank header line holding only a carriage return (CR)",
+                      FileLocation{line_start, line_no, "PCD header"});
     if (line.empty() || line[0] == '#') continue;
     std::istringstream words(line);
     std::string key;
@@ -133,7 +138,10 @@ PcdHeader checkHeader(const std::filesystem::path& path) {
     // PCL splits header lines at spaces, tabs and CRs only, and takes the first character of
     // each TYPE word: other separators or longer TYPE words would make its layout differ from
     // the one checked here (fuzz_pcd: a NULL read inside PCL for "TYPE FF F F").
-    if (line.find_first_of("\r\v\f") != std::string::npos) fail("control character in a header line");
+    // PCD headers are ASCII: a control byte (NUL, CR, VT, FF...) or a non-ASCII byte would also
+    // let PCL split the line differently (fuzz_pcd: a SEGV inside PCL for NULs in FIELDS).
+    for (unsigned char ch : line)
+      if ((ch < 0x20 && ch != '\t') || ch >= 0x7F) fail("control or non-ASCII byte in a header line");
     auto readAll = [&](auto& vec) {
       typename std::decay_t<decltype(vec)>::value_type v;
       while (words >> v) vec.push_back(v);

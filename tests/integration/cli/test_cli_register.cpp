@@ -170,7 +170,7 @@ TEST(CliRegister, FailuresExplainAndLeaveOutputsUntouched) {
   writeBoxPly(dir / "a.ply", {6, 4, 3}, {0, 0, 0}, 1);
   writeBoxPly(dir / "b.ply", {6, 4, 3}, {0.3, -0.2, 0}, 2);
   writePlanePly(dir / "plane.ply");
-  writeAll(dir / "bad.ply", "ply\nformat ascii 1.0\nelement vertex 10\nproperty float x\nend_header\n1\n");
+  writeAll(dir / "bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n1\n");
   auto reset = [&] {
     writeAll(dir / "out.ply", "precious");
     writeAll(dir / "T.json", "precious");
