@@ -156,7 +156,8 @@ class PointCloud {
   /// A new cloud with points `indices` (all attributes).
   PointCloud subset(const std::vector<std::size_t>& indices) const;
   /// Appends another cloud (same attributes required for those present in both; attributes
-  /// present in only one side are dropped). Positions are re-expressed in this offset.
+  /// present in only one side are dropped, except the LAS fields, where a missing column means
+  /// 0 and is filled). Positions are re-expressed in this offset.
   void append(const PointCloud& other);
   /// Applies a rigid transform in world coordinates (positions, normals, sensor origins):
   /// world' = R world + t. The offset is rebased in double (offset' = R offset + t) and local

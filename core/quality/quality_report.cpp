@@ -74,20 +74,6 @@ Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> solve(
 }
 }  // namespace
 
-std::vector<WeakDirection> weakDirections(const Eigen::Matrix<double, 6, 6>& h, double ratio,
-                                          std::array<double, 6>* eigenvalues) {
-  std::vector<WeakDirection> out;
-  const auto es = solve(h, eigenvalues);
-  if (!(es.eigenvalues()(5) > 0)) return out;
-  for (int i = 0; i < 6; ++i) {
-    WeakDirection w = directionOf(es, i);
-    if (w.relative_eigenvalue >= ratio) continue;
-    w.description = describe(w);
-    out.push_back(w);
-  }
-  return out;
-}
-
 std::vector<WeakDirection> weakDirections(const RefineResult& r, const QualityParams& p,
                                           std::array<double, 6>* eigenvalues) {
   std::vector<WeakDirection> out;

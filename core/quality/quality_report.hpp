@@ -79,11 +79,9 @@ struct QualityReport {
 QualityReport assessRegistration(const GlobalRegistrationResult& global,
                                  const RefineResult* refine, const QualityParams& params = {});
 
-/// Weak directions of a 6x6 normal matrix (rotation first, rotation scaled by a length).
-std::vector<WeakDirection> weakDirections(const Eigen::Matrix<double, 6, 6>& normal_matrix,
-                                          double weak_ratio, std::array<double, 6>* eigenvalues);
-/// Weak and unconstrained directions of a refinement: weak by eigenvalue ratio (and not held
-/// by a slide resistance of at least warn_resistance), or unconstrained by slide resistance.
+/// Weak and unconstrained directions of a refinement's normal matrix (rotation first, scaled
+/// by a length): weak by eigenvalue ratio (and not held by a slide resistance of at least
+/// warn_resistance), or unconstrained by slide resistance.
 std::vector<WeakDirection> weakDirections(const RefineResult& refine, const QualityParams& p,
                                           std::array<double, 6>* eigenvalues);
 

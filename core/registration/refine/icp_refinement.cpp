@@ -86,6 +86,73 @@ struct Correspondence {
   double r;  // signed point-to-plane residual
 };
 
+/// What the slide test reads: the used source points, the target with its kd-tree and normals
+/// (all in the refinement's local frame).
+struct SlideData {
+  const Cloud& src;
+  const Cloud& tgt;
+  const pcl::KdTreeFLANN<pcl::PointXYZ>& tree;
+  const std::vector<Eigen::Vector3d>& normals;
+};
+
+/// Mean capped point-to-plane cost, min(r^2, d^2) / d^2, of every source point placed by
+/// (R, t) and then moved by (dR, dt) about `centre`; a point without a neighbour within `gate`
+/// costs 1.
+double slideCost(const SlideData& s, const Eigen::Matrix3d& R, const Eigen::Vector3d& t,
+                 const Eigen::Vector3d& centre, const Eigen::Matrix3d& dR, const Eigen::Vector3d& dt,
+                 double d, double gate) {
+  const double d2 = d * d;
+  const float gate2 = float(gate * gate);
+  return tbb::parallel_reduce(
+             tbb::blocked_range<std::size_t>(0, s.src.size(), 512), 0.0,
+             [&](const auto& range, double sum) {
+               std::vector<int> idx(1);
+               std::vector<float> nd2(1);
+               for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                 const Eigen::Vector3d x0 = R * s.src[i].getVector3fMap().cast<double>() + t;
+                 const Eigen::Vector3d x = dR * (x0 - centre) + centre + dt;
+                 const pcl::PointXYZ q(float(x.x()), float(x.y()), float(x.z()));
+                 double r2 = d2;
+                 if (s.tree.nearestKSearch(q, 1, idx, nd2) == 1 && nd2[0] <= gate2 &&
+                     s.normals[idx[0]].allFinite()) {
+                   const double r = s.normals[idx[0]].dot(x - s.tgt[idx[0]].getVector3fMap().cast<double>());
+                   r2 = std::min(r * r, d2);
+                 }
+                 sum += r2 / d2;
+               }
+               return sum;
+             },
+             std::plus<double>()) /
+         double(s.src.size());
+}
+
+/// RefineResult::direction_resistance: each eigen-direction of res.normal_matrix slid both ways
+/// by kSlideDistance (rotations scaled by res.length_scale); the smaller rise of slideCost over
+/// the overlap ratio.
+std::array<double, 6> slideResistance(const SlideData& s, const Eigen::Matrix3d& R,
+                                      const Eigen::Vector3d& t, const Eigen::Vector3d& centre,
+                                      const RefineResult& res, double final_distance) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(res.normal_matrix);
+  const double gate = std::max(final_distance, 0.15) + RefineResult::kSlideDistance;
+  auto cost = [&](const Eigen::Matrix3d& dR, const Eigen::Vector3d& dt) {
+    return slideCost(s, R, t, centre, dR, dt, final_distance, gate);
+  };
+  const double base = cost(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
+  std::array<double, 6> out{};
+  for (int k = 0; k < 6; ++k) {
+    double least = std::numeric_limits<double>::infinity();
+    for (double sign : {-1.0, 1.0}) {
+      const Eigen::Matrix<double, 6, 1> xi = sign * RefineResult::kSlideDistance * es.eigenvectors().col(k);
+      const Eigen::Vector3d w = xi.head<3>() / res.length_scale;
+      const Eigen::Matrix3d dR = w.norm() > 0 ? Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix()
+                                             : Eigen::Matrix3d::Identity();
+      least = std::min(least, cost(dR, xi.tail<3>()) - base);
+    }
+    out[k] = res.overlap > 0 ? least / res.overlap : 0.0;
+  }
+  return out;
+}
+
 std::vector<Eigen::Vector3d> gridNormals(const Cloud& c, double cell) {
   struct Acc {
     Eigen::Vector3d s = Eigen::Vector3d::Zero();
@@ -282,53 +349,16 @@ RefineResult refineRegistration(const PointCloud& source, const PointCloud& targ
     double l2 = 0.0;
     for (const auto& k : c) l2 += (k.p - centre).squaredNorm();
     res.length_scale = std::max(1e-3, std::sqrt(l2 / c.size()));
-    auto row = [&](const Correspondence& k) {
+    for (const auto& k : c) {
       Eigen::Matrix<double, 6, 1> j;
       j << (k.p - centre).cross(k.n) / res.length_scale, k.n;
-      return j;
-    };
-    for (const auto& k : c) res.normal_matrix += row(k) * row(k).transpose();
-  }
-  res.centre = centre + origin;
-  if (!c.empty()) {
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(res.normal_matrix);
-    const double d2 = p.final_distance * p.final_distance;
-    const float gate2 = float(std::pow(std::max(p.final_distance, 0.15) + RefineResult::kSlideDistance, 2));
-    // Mean capped point-to-plane cost of every used source point after (dR, dt) about the centre.
-    auto cost = [&](const Eigen::Matrix3d& dR, const Eigen::Vector3d& dt) {
-      return tbb::parallel_reduce(
-          tbb::blocked_range<std::size_t>(0, src->size(), 512), 0.0,
-          [&](const auto& range, double sum) {
-            std::vector<int> idx(1);
-            std::vector<float> nd2(1);
-            for (std::size_t i = range.begin(); i < range.end(); ++i) {
-              const Eigen::Vector3d x0 = R * (*src)[i].getVector3fMap().cast<double>() + t;
-              const Eigen::Vector3d x = dR * (x0 - centre) + centre + dt;
-              const pcl::PointXYZ q(float(x.x()), float(x.y()), float(x.z()));
-              double r2 = d2;
-              if (tree.nearestKSearch(q, 1, idx, nd2) == 1 && nd2[0] <= gate2 && normals[idx[0]].allFinite()) {
-                const double r = normals[idx[0]].dot(x - (*tgt)[idx[0]].getVector3fMap().cast<double>());
-                r2 = std::min(r * r, d2);
-              }
-              sum += r2 / d2;
-            }
-            return sum;
-          },
-          std::plus<double>()) / double(src->size());
-    };
-    const double base = cost(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
-    for (int k = 0; k < 6; ++k) {
-      double least = std::numeric_limits<double>::infinity();
-      for (double sign : {-1.0, 1.0}) {
-        const Eigen::Matrix<double, 6, 1> xi = sign * RefineResult::kSlideDistance * es.eigenvectors().col(k);
-        const Eigen::Vector3d w = xi.head<3>() / res.length_scale;
-        const Eigen::Matrix3d dR = w.norm() > 0 ? Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix()
-                                               : Eigen::Matrix3d::Identity();
-        least = std::min(least, cost(dR, xi.tail<3>()) - base);
-      }
-      res.direction_resistance[k] = res.overlap > 0 ? least / res.overlap : 0.0;
+      res.normal_matrix += j * j.transpose();
     }
   }
+  res.centre = centre + origin;
+  if (!c.empty())
+    res.direction_resistance =
+        slideResistance({*src, *tgt, tree, normals}, R, t, centre, res, p.final_distance);
   // World transform: x -> origin + delta(initial(x) - origin).
   const RigidTransform to_local(Eigen::Matrix3d::Identity(), -origin);
   const RigidTransform from_local(Eigen::Matrix3d::Identity(), origin);
