@@ -8,7 +8,7 @@ find_package(CLI11 REQUIRED)
 find_package(CGAL REQUIRED)
 
 # PCL's config asks VTK for GUISupportQt, which Debian builds against Qt5 and which would
-# poison this Qt6 project (QT_VTK_NOTES.md). Hide VTK from PCL: its targets then link no VTK.
+# poison this Qt6 project (docs/QT_VTK.md). Hide VTK from PCL: its targets then link no VTK.
 set(CMAKE_DISABLE_FIND_PACKAGE_VTK TRUE)
 find_package(PCL 1.13 REQUIRED COMPONENTS common io kdtree search features filters
              segmentation sample_consensus registration surface octree)

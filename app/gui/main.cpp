@@ -13,7 +13,7 @@
 #include "ui/view/surface_format.hpp"
 
 int main(int argc, char** argv) {
-  plumb::ui::setDefaultSurfaceFormat();  // before QApplication (QT_VTK_NOTES.md)
+  plumb::ui::setDefaultSurfaceFormat();  // before QApplication (docs/QT_VTK.md)
   QApplication app(argc, argv);
   QCoreApplication::setOrganizationName("Plumb");
   QCoreApplication::setApplicationName("plumb");

@@ -13,7 +13,7 @@ bool PlanarPolygon::isHorizontal(double tolerance_deg) const {
 }
 
 void PlanarPolygon::transform(const RigidTransform& t) {
-  // n' = R n, d' = d + n'·t (ALGORITHMS.md "Frames").
+  // n' = R n, d' = d + n'·t (docs/ALGORITHMS.md "Frames").
   normal = t.rotation() * normal;
   offset += normal.dot(t.translation());
   centroid = t.apply(centroid);

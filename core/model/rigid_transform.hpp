@@ -1,5 +1,5 @@
 #pragma once
-// A rigid transform x' = R x + t (ALGORITHMS.md "Frames"): maps SOURCE coordinates to TARGET
+// A rigid transform x' = R x + t (docs/ALGORITHMS.md "Frames"): maps SOURCE coordinates to TARGET
 // coordinates. Stored in double precision.
 #include <Eigen/Geometry>
 

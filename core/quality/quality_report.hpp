@@ -1,5 +1,5 @@
 #pragma once
-// The quality report of a registration (ALGORITHMS.md §8): the transform, RMS on matched
+// The quality report of a registration (docs/ALGORITHMS.md §8): the transform, RMS on matched
 // features and on points, overlap ratio, inlier feature counts, the runner-up hypothesis and
 // the score gap, the weakly constrained degrees of freedom (eigen-analysis of the refinement's
 // normal matrix) and a plain-language verdict a surveyor can act on.

@@ -1,5 +1,5 @@
 #pragma once
-// The OpenGL surface every Plumb view needs (QT_VTK_NOTES.md): 3.2 core profile, 24-bit depth.
+// The OpenGL surface every Plumb view needs (docs/QT_VTK.md): 3.2 core profile, 24-bit depth.
 // Must be called before the QApplication is constructed.
 
 namespace plumb::ui {

@@ -110,7 +110,7 @@ double VtkViewWidget::renderNow() {
 
 void VtkViewWidget::onMakeCurrent() {
   // Make the *context* current, not the widget: QOpenGLWidget::makeCurrent() would also bind
-  // Qt's framebuffer behind VTK's cached state (QT_VTK_NOTES.md).
+  // Qt's framebuffer behind VTK's cached state (docs/QT_VTK.md).
   if (QOpenGLContext* ctx = context(); ctx && QOpenGLContext::currentContext() != ctx)
     ctx->makeCurrent(ctx->surface());
 }

@@ -1,6 +1,6 @@
 #pragma once
 // A Qt6 QOpenGLWidget that hosts a VTK renderer through vtkGenericOpenGLRenderWindow, following
-// the verified recipe in QT_VTK_NOTES.md (VTK's QVTKOpenGLNativeWidget is Qt5-only on Debian).
+// the verified recipe in docs/QT_VTK.md (VTK's QVTKOpenGLNativeWidget is Qt5-only on Debian).
 // VTK renders into its own framebuffers; paintGL blits the result into Qt's framebuffer.
 // Mouse, wheel and key events are forwarded to a vtkGenericRenderWindowInteractor driving a
 // trackball camera.

@@ -1,5 +1,5 @@
 #pragma once
-// Façades, interior points and openings (2021 §3.1, 2023 §III-A, ALGORITHMS.md §2).
+// Façades, interior points and openings (2021 §3.1, 2023 §III-A, docs/ALGORITHMS.md §2).
 //  1. Façade selection: polygons whose plane is vertical within `vertical_tolerance_deg` and
 //     whose area is at least `min_facade_area`.
 //  2. Ray tracing: for each point P with sensor origin O, the segment O->P is intersected with

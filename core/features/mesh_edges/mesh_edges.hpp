@@ -1,5 +1,5 @@
 #pragma once
-// Exact sharp edges of a BIM mesh (ALGORITHMS.md §7, beyond the 2023 paper): vertices are
+// Exact sharp edges of a BIM mesh (docs/ALGORITHMS.md §7, beyond the 2023 paper): vertices are
 // welded, T-junctions split (single-triangle edges cut at vertices lying on them), an edge is sharp when the dihedral angle between its two
 // triangles exceeds a threshold (or it borders only one triangle); edges between coplanar
 // triangles disappear (coplanar triangles merged). Sharp edges are then chained into maximal

@@ -1,5 +1,5 @@
 #pragma once
-// Planar polygon extraction (2021 §2, ALGORITHMS.md §1): detect planes, split each plane's
+// Planar polygon extraction (2021 §2, docs/ALGORITHMS.md §1): detect planes, split each plane's
 // inliers into connected parts, and outline each part with a 2D alpha shape (outer ring +
 // holes). Three detectors share this entry point:
 //  - Msac: MSAC (eq. 2) on the whole cloud, refit on inliers, remove, repeat.

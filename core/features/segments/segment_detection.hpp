@@ -1,6 +1,6 @@
 #pragma once
 // 3D line segments from an unorganized point cloud, after Lu, Liu, Li 2019 ("Fast 3D line
-// segment detection from unorganized point cloud", ALGORITHMS.md §7): normals, region growing
+// segment detection from unorganized point cloud", docs/ALGORITHMS.md §7): normals, region growing
 // into planar patches, patch merging, rasterised contours in each patch plane, splitting into
 // straight pieces, least-squares lines lifted back to 3D, short/unstructured ones dropped,
 // collinear ones merged. Own implementation (no OpenCV). Differences, for speed and accuracy:

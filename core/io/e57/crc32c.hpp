@@ -1,5 +1,5 @@
 #pragma once
-// CRC-32C (Castagnoli), as used for E57 page checksums (E57_FACTS.md §3): reflected polynomial
+// CRC-32C (Castagnoli), as used for E57 page checksums (docs/E57_FORMAT.md §3): reflected polynomial
 // 0x82F63B78, init 0xFFFFFFFF, final XOR 0xFFFFFFFF; check value of "123456789" is 0xE3069283.
 // Two implementations that must agree: the SSE4.2 `crc32` instruction (used when the CPU has
 // it, detected at run time) and a portable slicing-by-8 table.

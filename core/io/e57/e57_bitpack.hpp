@@ -1,5 +1,5 @@
 #pragma once
-// Decoder of one bytestream of the bit-pack codec (E57_FACTS.md §9). Integer/ScaledInteger
+// Decoder of one bytestream of the bit-pack codec (docs/E57_FORMAT.md §9). Integer/ScaledInteger
 // values of any width 0..64 bits are packed LSB-first as one continuous bit stream and decode
 // to raw + minimum (times scale plus offset for ScaledInteger). Float streams are raw
 // little-endian IEEE-754 (4 or 8 bytes). Packets append bytes as they arrive; buffers break

@@ -1,5 +1,5 @@
 #pragma once
-// The 48-byte E57 file header (E57_FACTS.md §2).
+// The 48-byte E57 file header (docs/E57_FORMAT.md §2).
 #include <array>
 #include <cstdint>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Writes one CompressedVector binary section (E57_FACTS.md §7-9): a 32-byte section header,
+// Writes one CompressedVector binary section (docs/E57_FORMAT.md §7-9): a 32-byte section header,
 // then data packets of at most 64 KiB, each holding the same number R of records (R a multiple
 // of 64, so every field's buffer is a whole number of 8-byte words and no value straddles two
 // packets). Values are bit-packed LSB-first; the last packet pads each stream with zero bits

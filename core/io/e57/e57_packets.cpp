@@ -117,7 +117,7 @@ void CompressedVectorReader::readNextPacket() {
 
 void CompressedVectorReader::checkPacket(std::uint8_t type, std::size_t length, std::uint64_t at) {
   if (type > 2) fail("invalid packet type " + std::to_string(type), at);
-  // E57_FACTS.md section 8: lengths are multiples of 4; an index packet has a 16-byte header,
+  // docs/E57_FORMAT.md section 8: lengths are multiples of 4; an index packet has a 16-byte header,
   // a data packet 6 bytes before its buffers. A section of zeros fails here at once instead of
   // being walked as 1-byte packets.
   static const std::size_t kMinLength[3] = {16, 8, 4};

@@ -1,5 +1,5 @@
 #pragma once
-// Reads the records of one CompressedVector binary section (E57_FACTS.md §7-8): validates the
+// Reads the records of one CompressedVector binary section (docs/E57_FORMAT.md §7-8): validates the
 // 32-byte section header, walks the packets (data / index / empty) in the logical stream, and
 // feeds every data packet's buffers to one FieldDecoder per prototype field. Memory stays
 // bounded: only the bytes not yet decoded are buffered, and the record count is checked

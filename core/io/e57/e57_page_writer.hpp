@@ -1,5 +1,5 @@
 #pragma once
-// Writes the E57 logical byte stream as 1024-byte pages with their CRC-32C (E57_FACTS.md §3),
+// Writes the E57 logical byte stream as 1024-byte pages with their CRC-32C (docs/E57_FORMAT.md §3),
 // streaming: one page is buffered, plus copies of the few pages the caller asked to retain
 // because it will patch them later (the file header, section headers). Patching a page that
 // was already written recomputes its CRC and rewrites it in place (pitfall 3).

@@ -1,5 +1,5 @@
 #pragma once
-// The E57 paged file layer (E57_FACTS.md §1-4): the file is a sequence of 1024-byte pages,
+// The E57 paged file layer (docs/E57_FORMAT.md §1-4): the file is a sequence of 1024-byte pages,
 // each 1020 bytes of payload followed by a big-endian CRC-32C of that payload. Offsets stored
 // in the file are physical; lengths are logical (CRCs not counted). PagedReader reads logical
 // bytes and verifies the CRC of every page it touches (once per page).

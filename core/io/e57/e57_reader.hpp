@@ -1,5 +1,5 @@
 #pragma once
-// E57 (ASTM E2807) point reader. Rules (see also E57_FACTS.md):
+// E57 (ASTM E2807) point reader. Rules (see also docs/E57_FORMAT.md):
 // - Every data3D entry becomes one Scan: points in the scan's own frame (Scan.cloud), the
 //   pose (quaternion + translation) in Scan.pose (has_pose false and identity when absent).
 // - Positions: cartesianX/Y/Z, or sphericalRange/Azimuth/Elevation converted with

@@ -13,7 +13,7 @@
 // Classification, the LAS fields and custom scalar fields have no standard E57 field and
 // are not written.
 // The file is streamed (one packet and one page in memory), has no index packets and writes
-// empty scans in the form both libE57Format 3.x and E57RefImpl tools read (E57_FACTS.md
+// empty scans in the form both libE57Format 3.x and E57RefImpl tools read (docs/E57_FORMAT.md
 // pitfall 8), and is replaced atomically.
 #include <filesystem>
 

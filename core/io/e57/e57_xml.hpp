@@ -1,5 +1,5 @@
 #pragma once
-// The XML section of an E57 file (E57_FACTS.md §5-6), reduced to what the point reader needs:
+// The XML section of an E57 file (docs/E57_FORMAT.md §5-6), reduced to what the point reader needs:
 // file-level facts, and for every data3D scan its pose, limits and point prototype.
 #include <Eigen/Geometry>
 

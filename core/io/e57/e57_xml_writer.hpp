@@ -1,5 +1,5 @@
 #pragma once
-// Builds the XML section of a written E57 file (E57_FACTS.md §5-6).
+// Builds the XML section of a written E57 file (docs/E57_FORMAT.md §5-6).
 #include <cstdint>
 #include <optional>
 #include <string>

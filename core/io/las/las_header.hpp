@@ -1,5 +1,5 @@
 #pragma once
-// The LAS Public Header Block (ASPRS LAS 1.4 R16, section 2 of shared/docs/LAS_FACTS.md):
+// The LAS Public Header Block (ASPRS LAS 1.4 R16, section 2 of docs/LAS_FORMAT.md):
 // parsing with every check of the reader checklist (section 5), and serialisation for the
 // writer. Internal to io/las; readers outside use las_reader.hpp.
 #include <array>

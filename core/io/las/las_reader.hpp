@@ -1,7 +1,7 @@
 #pragma once
 // LAS 1.0-1.4 reader, point data record formats 0-10 (uncompressed).
 //
-// Rules (see also shared/docs/LAS_FACTS.md):
+// Rules (see also docs/LAS_FORMAT.md):
 // - Positions: world = record_int32 * scale + header offset, computed in double. The cloud's
 //   double `offset` is the centre of the header bounds rounded to 1 m (the first point
 //   rounded to 1 m when the header bounds are absent or do not contain it), so float local

@@ -2,7 +2,7 @@
 // Greedy direction clustering (2021 Alg. 1 for plane normals weighted by inlier count, 2023
 // Alg. 1 for segment directions weighted by length), with ONE angle tolerance theta: an item
 // joins a cluster when |d·c| >= cos(theta), and seeds are mutually farther than theta
-// (ALGORITHMS.md §3: the printed versions mix 1-|cos| with an angle and omit |.| in seeding).
+// (docs/ALGORITHMS.md §3: the printed versions mix 1-|cos| with an angle and omit |.| in seeding).
 #include <Eigen/Core>
 
 #include <vector>

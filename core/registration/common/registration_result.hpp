@@ -1,5 +1,5 @@
 #pragma once
-// What every global registration method returns (ALGORITHMS.md §8): the chosen transform, its
+// What every global registration method returns (docs/ALGORITHMS.md §8): the chosen transform, its
 // score, the runner-up hypothesis and the score gap (ambiguity), inlier counts and a status
 // that makes failures explicit. A failed result never carries a transform to be trusted.
 #include <optional>

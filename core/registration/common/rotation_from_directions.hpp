@@ -1,7 +1,7 @@
 #pragma once
 // Rotation from two associated direction pairs (2021 eqs. 12-19, 2023 eq. 10) and the
 // enumeration of every rotation consistent with an association of direction clusters
-// (ALGORITHMS.md §4 "beyond the paper": all pairings, all signs, optional up/down flip).
+// (docs/ALGORITHMS.md §4 "beyond the paper": all pairings, all signs, optional up/down flip).
 #include <Eigen/Core>
 
 #include <optional>
@@ -11,7 +11,7 @@
 namespace plumb {
 
 /// Orthonormal frame [x y z] with x = u, y = v - (v·u)u normalised (eq. 12-13 as corrected in
-/// ALGORITHMS.md §4), z = x × y (eq. 14-15). nullopt when u and v are nearly parallel.
+/// docs/ALGORITHMS.md §4), z = x × y (eq. 14-15). nullopt when u and v are nearly parallel.
 std::optional<Eigen::Matrix3d> frameFromDirections(const Eigen::Vector3d& u,
                                                    const Eigen::Vector3d& v);
 

@@ -1,6 +1,6 @@
 #pragma once
 // Matching indoor openings to outdoor openings through a wall of unknown thickness (beyond the
-// 2023 paper, ALGORITHMS.md §6). The paper scores a hypothesis with the global robust segment
+// 2023 paper, docs/ALGORITHMS.md §6). The paper scores a hypothesis with the global robust segment
 // distance (2023 eqs. 7-8) between opening edges placed with zero façade thickness, which
 // only lets the openings of ONE façade match (the indoor faces of the other walls stay a
 // wall thickness away from their façades) and so cannot tell apart shifts by one window

@@ -36,7 +36,7 @@ const ParamSchema<OpeningRegistrationParams>& OpeningRegistrationParams::schema(
 namespace {
 
 /// Yaw-only rotation taking horizontal direction `from` onto `to` (scans are Z-up,
-/// ALGORITHMS.md "Frames"): unlike Quaternion::FromTwoVectors it never picks a tilted axis for
+/// docs/ALGORITHMS.md "Frames"): unlike Quaternion::FromTwoVectors it never picks a tilted axis for
 /// opposite vectors.
 Eigen::Matrix3d yawBetween(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
   const double yaw = std::atan2(to.y(), to.x()) - std::atan2(from.y(), from.x());

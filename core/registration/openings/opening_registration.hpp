@@ -1,5 +1,5 @@
 #pragma once
-// Indoor/outdoor registration with openings and planes (2023 §III-B, ALGORITHMS.md §6).
+// Indoor/outdoor registration with openings and planes (2023 §III-B, docs/ALGORITHMS.md §6).
 // Hypotheses (all enumerated, or drawn at random with the seed beyond `max_hypotheses`):
 //  - the paper's façade + corner pair: a source (indoor) opening's wall onto a target
 //    (outdoor) opening's façade, rotated about the vertical (scans are Z-up) so the planes

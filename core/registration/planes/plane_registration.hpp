@@ -1,5 +1,5 @@
 #pragma once
-// Plane-based registration (2021 §3.2-3.4, ALGORITHMS.md §4), indoor/indoor and
+// Plane-based registration (2021 §3.2-3.4, docs/ALGORITHMS.md §4), indoor/indoor and
 // indoor/outdoor:
 //  1. Cluster polygon normals (2021 Alg. 1, one angle tolerance).
 //  2. Rotations from cluster frames (eqs. 11-19), enumerating every association and sign

@@ -1,5 +1,5 @@
 #pragma once
-// Local refinement after every global method (ALGORITHMS.md §8): trimmed point-to-plane ICP
+// Local refinement after every global method (docs/ALGORITHMS.md §8): trimmed point-to-plane ICP
 // (PCL kd-tree and normals, linearised least squares after Low 2004) or PCL GICP, run
 // coarse-to-fine over a shrinking correspondence distance. For a BIM target the caller passes
 // points sampled on the model (sampleMeshSurface) with the mesh normals.

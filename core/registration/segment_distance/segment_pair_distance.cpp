@@ -26,7 +26,7 @@ SegmentPairMeasure measureSegmentPair(const Eigen::Vector3d& a1, const Eigen::Ve
   d1 /= l1;
   d2 /= l2;
   // Bisector line through the barycentre of the 4 endpoints (Fig. 1); direction
-  // normalize(d1 + s d2) (ALGORITHMS.md §5 fix of the paper's (d_i + d_j)/2).
+  // normalize(d1 + s d2) (docs/ALGORITHMS.md §5 fix of the paper's (d_i + d_j)/2).
   const double s = d1.dot(d2) >= 0 ? 1.0 : -1.0;
   Eigen::Vector3d v = d1 + s * d2;
   const double vn = v.norm();

@@ -1,6 +1,6 @@
 #pragma once
 // Distance and overlap between two 3D segments (2023 §II, eqs. 1-6) with the fixes of
-// ALGORITHMS.md §5: the bisector direction is normalize(d_i + s d_j), s = sign(d_i·d_j), and
+// docs/ALGORITHMS.md §5: the bisector direction is normalize(d_i + s d_j), s = sign(d_i·d_j), and
 // the relative overlap is clamped to [0, 1].
 #include <Eigen/Core>
 

@@ -97,7 +97,7 @@ SegmentMatch SegmentSetIndex::match(const Eigen::Vector3d& a, const Eigen::Vecto
       m.distance = pm.distance;
     }
   }
-  m.cost = std::max(0.0, d2 - sum);  // eq. 7, clamped at 0 (ALGORITHMS.md §5)
+  m.cost = std::max(0.0, d2 - sum);  // eq. 7, clamped at 0 (docs/ALGORITHMS.md §5)
   return m;
 }
 

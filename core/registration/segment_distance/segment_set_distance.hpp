@@ -1,7 +1,7 @@
 #pragma once
 // Global robust distance between two segment sets (2023 §II, eqs. 7-8), evaluated through a
 // uniform-grid spatial index on the target set so that one evaluation costs about
-// O(|S1| * neighbours) instead of O(|S1| |S2|) (ALGORITHMS.md §5). This is the inner loop of
+// O(|S1| * neighbours) instead of O(|S1| |S2|) (docs/ALGORITHMS.md §5). This is the inner loop of
 // the segments and openings RANSACs.
 #include <Eigen/Core>
 
@@ -40,7 +40,7 @@ class SegmentSetIndex {
   const SegmentDistanceParams& params() const { return params_; }
 
   /// Eq. 7 for one (already transformed) source segment, clamped at 0 (the sum can exceed d^2
-  /// when a long segment is covered by several short ones: ALGORITHMS.md §5).
+  /// when a long segment is covered by several short ones: docs/ALGORITHMS.md §5).
   SegmentMatch match(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
 
   /// Eq. 8: sum over the source segments, mapped by `t`, of eq. 7. Lower is better; the value

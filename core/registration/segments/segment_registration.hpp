@@ -1,5 +1,5 @@
 #pragma once
-// Scan-to-BIM registration with 3D segments (2023 §IV, ALGORITHMS.md §7).
+// Scan-to-BIM registration with 3D segments (2023 §IV, docs/ALGORITHMS.md §7).
 //  1. Direction clustering of both sets (2023 Alg. 1, one angle tolerance).
 //  2. Rotations from associated cluster directions (eq. 10), enumerating every association
 //     and sign (any initial pose; not only the smallest-angle association of eq. 9).

@@ -10,7 +10,7 @@
 using namespace plumb::e57;
 
 TEST(E57Crc, CheckValue) {
-  // The CRC-32C check value from E57_FACTS.md §3.
+  // The CRC-32C check value from docs/E57_FORMAT.md §3.
   const char* s = "123456789";
   EXPECT_EQ(crc32cTable(s, 9), 0xE3069283u);
   EXPECT_EQ(crc32c(s, 9), 0xE3069283u);

@@ -205,7 +205,7 @@ TEST(E57Files, ColouredCubeDouble) {
 }
 
 TEST(E57Files, ColouredCubeFloat) {
-  // libE57Format layout: 3 data packets then an index packet (E57_FACTS.md §8).
+  // libE57Format layout: 3 data packets then an index packet (docs/E57_FORMAT.md §8).
   const Dataset d = read("libe57format_self_ColouredCubeFloat.e57");
   ASSERT_EQ(d.scans.size(), 1u);
   expectScan(d.scans[0], 7680, V(-0.5, -0.5, -0.5), V(0.5, 0.5, 0.5), {"red", "green", "blue"});

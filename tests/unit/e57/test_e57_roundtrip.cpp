@@ -1,5 +1,5 @@
 // read -> write -> read keeps every point (to the stored precision), poses, names, GUIDs and
-// attributes; written files follow the interoperability rules of E57_FACTS.md.
+// attributes; written files follow the interoperability rules of docs/E57_FORMAT.md.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -176,7 +176,7 @@ TEST(E57RoundTrip, SyntheticGeoreferencedScansWithPoses) {
   EXPECT_NE(text.find("valid=20776 (of 20777)"), std::string::npos) << text;
   EXPECT_NE(text.find("recordCount=0"), std::string::npos) << text;
 
-  // File structure (E57_FACTS.md §2, §7, pitfalls 5 and 8).
+  // File structure (docs/E57_FORMAT.md §2, §7, §10 pitfalls 5 and 8).
   const std::string bytes = plumb::test::readAll(dir / "s.e57");
   EXPECT_EQ(bytes.size() % 1024, 0u);
   EXPECT_EQ(u64(bytes, 16), bytes.size());

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Independent LAS reader/writer for the lossless-conversion tests (standard library only,
-written from shared/docs/LAS_FACTS.md; no code shared with core/io/las).
+written from docs/LAS_FORMAT.md; no code shared with core/io/las).
 
   las_fields.py make OUT.las     writes LAS 1.4 PDRF 6 with every non-coordinate field varied
                                  (5 points, listed in the docstring of make())

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent LAS header parser used to verify what tests/unit/las expects.
 
-Written straight from the ASPRS LAS 1.4 R16 tables in shared/docs/LAS_FACTS.md with the
+Written straight from the ASPRS LAS 1.4 R16 tables in docs/LAS_FORMAT.md with the
 standard library only (struct), sharing no code with core/io/las. Usage:
 
     python3 las_header.py FILE [FILE...]          # header, VLRs, EVLRs, point summary

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes tests/unit/las/data/format_<N>.las for every point format 0..10 (shared/data/las has
-only 1, 3, 4, 6, 7), from the record tables of shared/docs/LAS_FACTS.md, with the standard
+only 1, 3, 4, 6, 7), from the record tables of docs/LAS_FORMAT.md, with the standard
 library only. test_las_formats.cpp checks the reader against the values below.
 
 Each file holds 3 points, i = 0, 1, 2:
