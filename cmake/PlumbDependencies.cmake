@@ -6,6 +6,7 @@ find_package(nlohmann_json 3.11 REQUIRED)
 find_package(pugixml REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(CGAL REQUIRED)
+find_package(PROJ 9 REQUIRED CONFIG)  # coordinate systems: EPSG codes to WKT (LAS 1.4)
 
 # PCL's config asks VTK for GUISupportQt, which Debian builds against Qt5 and which would
 # poison this Qt6 project (docs/QT_VTK.md). Hide VTK from PCL: its targets then link no VTK.

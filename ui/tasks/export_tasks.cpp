@@ -17,6 +17,12 @@ void logResult(AppContext& app, Task* task, const QString& what, const QString& 
     else app.log.error(QObject::tr("Cannot write %1: %2").arg(path, msg));
   });
 }
+/// What the writer had to convert or could not write (a dropped coordinate system, rescaled
+/// intensities, skipped points): warnings in the log, as plumb-cli prints them as notes.
+void logWriterNotes(AppContext& app, const QString& path, const std::vector<std::string>& notes) {
+  for (const auto& n : notes)
+    app.log.warning(QObject::tr("%1: %2").arg(path, QString::fromStdString(n)));
+}
 }  // namespace
 
 Task* exportRegisteredDataset(AppContext& app, const Layer& layer, const QString& path) {
@@ -25,14 +31,19 @@ Task* exportRegisteredDataset(AppContext& app, const Layer& layer, const QString
   const auto data = static_cast<const DatasetLayer&>(layer).sharedDataset();
   const RigidTransform T = layerTransform(layer);
   Task* task = app.tasks.run(QObject::tr("Exporting %1").arg(layer.name()),
-                             [data, T, path](Progress& progress) -> Task::Apply {
+                             [&app, data, T, path](Progress& progress) -> Task::Apply {
                                Dataset moved = *data;
                                for (auto& scan : moved.scans) {
                                  scan.pose = T * scan.pose;
                                  scan.has_pose = true;
                                }
-                               writeDataset(path.toStdString(), moved, {}, &progress);
-                               return {};
+                               WriteReport report;
+                               WriteOptions options;
+                               options.report = &report;
+                               writeDataset(path.toStdString(), moved, options, &progress);
+                               return [&app, path, notes = report.notes] {
+                                 logWriterNotes(app, path, notes);
+                               };
                              });
   logResult(app, task, QObject::tr("Registered %1").arg(layer.name()), path);
   return task;

@@ -9,6 +9,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "io/las/las_bytes.hpp"
+#include "io/las/las_crs.hpp"
 #include "io/las/las_header.hpp"
 #include "io/las/las_point_fields.hpp"
 #include "io/las/las_vlr.hpp"
@@ -37,15 +38,6 @@ void checkScanRange(const std::filesystem::path& path, const Scan& scan, double 
   }
 }
 
-// GeoKeyDirectory with one ProjectedCSTypeGeoKey (or GeographicTypeGeoKey for codes < 5000,
-// the EPSG geographic range).
-std::vector<std::uint8_t> geoKeys(int code) {
-  const std::uint16_t words[] = {1, 1, 0, 1, static_cast<std::uint16_t>(code < 5000 ? 2048 : 3072),
-                                 0, 1, static_cast<std::uint16_t>(code)};
-  std::vector<std::uint8_t> out(sizeof words);
-  std::memcpy(out.data(), words, sizeof words);
-  return out;
-}
 }  // namespace
 
 void writeLas(const std::filesystem::path& path, const Dataset& data,
@@ -114,24 +106,9 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
     vlrs.insert(vlrs.end(), v.begin(), v.end());
     ++vlr_count;
   };
-  const std::string& crs = data.coordinate_system;
-  if (!crs.empty()) {
-    if (crs.rfind("EPSG:", 0) == 0 && crs.find('[') == std::string::npos) {
-      int code = 0;
-      try {
-        code = std::stoi(crs.substr(5));
-      } catch (...) {
-      }
-      if (!v14 && code > 0 && code < 32767) {
-        const auto keys = geoKeys(code);
-        addVlr("LASF_Projection", 34735, "GeoTIFF GeoKeyDirectoryTag", keys);
-      }
-    } else if (crs.size() + 1 <= 65535) {
-      std::vector<std::uint8_t> wkt(crs.begin(), crs.end());
-      wkt.push_back(0);
-      addVlr("LASF_Projection", 2112, "OGC coordinate system WKT", wkt);
-    }
-  }
+  std::vector<std::string> crs_notes;
+  if (const auto crs = crsRecord(data.coordinate_system, v14, crs_notes))
+    addVlr("LASF_Projection", crs->record_id, crs->description, crs->payload);
   if (!extras.empty()) {
     if (extras.size() * 192 > 65535) throw InputError("too many scalar fields for LAS extra bytes");
     std::vector<std::uint8_t> desc;
@@ -178,6 +155,7 @@ void writeLas(const std::filesystem::path& path, const Dataset& data,
   out.write(reinterpret_cast<const char*>(vlrs.data()), static_cast<std::streamsize>(vlrs.size()));
 
   WriteReport report;
+  report.notes = std::move(crs_notes);
   RecordFields fields(cloud, layout, intensityMap(cloud, knownIntensityLimits(data), report.notes),
                       extras);
   std::array<std::int32_t, 3> lo, hi;

@@ -19,9 +19,10 @@
 // - The PointCloud columns scan_angle, user_data, point_source_id, classification_flags,
 //   scanner_channel, scan_flags (or ScalarFields of those names) go to their LAS fields; every other
 //   ScalarField is written as a float extra byte described by an Extra Bytes VLR.
-// - coordinate_system: WKT text goes to an OGC WKT VLR (LASF_Projection 2112), "EPSG:<code>"
-//   to GeoTIFF keys for LAS 1.2 (LAS 1.4 format 7 allows WKT only, so an EPSG code alone
-//   cannot be written there and is dropped).
+// - coordinate_system: see las_crs.hpp. WKT text goes to an OGC WKT VLR (LASF_Projection
+//   2112); "EPSG:<code>" to GeoTIFF keys in LAS 1.2 and to the code's WKT (from PROJ) in
+//   LAS 1.4, whose formats 6-10 allow WKT only; what cannot be written is said in
+//   WriteReport::notes.
 // - Written atomically through a temporary file.
 #include <filesystem>
 #include <optional>

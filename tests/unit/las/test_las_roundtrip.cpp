@@ -140,8 +140,55 @@ TEST(LasRoundTrip, GeoreferencedSyntheticCloudKeepsTenthOfMillimetre) {
     EXPECT_EQ(b.colors, c.colors);
     EXPECT_EQ(b.intensity, c.intensity);
     EXPECT_EQ(b.timestamps, c.timestamps);
-    // EPSG codes go to GeoTIFF keys in 1.2; format 7 allows WKT only (documented).
-    EXPECT_EQ(back.coordinate_system, minor == 2 ? "EPSG:2154" : "");
+    // EPSG codes go to GeoTIFF keys in 1.2; format 7 allows WKT only: the code's WKT.
+    if (minor == 2) {
+      EXPECT_EQ(back.coordinate_system, "EPSG:2154");
+    } else {
+      EXPECT_NE(back.coordinate_system.find("Lambert-93"), std::string::npos)
+          << back.coordinate_system;
+      EXPECT_NE(back.coordinate_system.find("AUTHORITY[\"EPSG\",\"2154\"]"), std::string::npos);
+    }
+  }
+}
+
+TEST(LasRoundTrip, CoordinateSystemsAreWrittenOrTheReportSaysWhyNot) {
+  PointCloud c;
+  c.positions = {{1, 2, 3}, {4, 5, 6}};
+  const auto dir = test::scratchDir("las_roundtrip_crs");
+  struct Case {
+    std::string crs;
+    int minor;
+    std::string read_back_contains;  ///< "" when nothing may be written
+  };
+  const Case cases[] = {
+      {"EPSG:4326", 2, "EPSG:4326"},          // geographic: GeographicTypeGeoKey
+      {"EPSG:4326", 4, "GEOGCS[\"WGS 84\""},   // 1.4: WKT from PROJ
+      {"EPSG:32631", 4, "UTM zone 31N"},
+      {"EPSG:999999", 4, ""},                 // no such code
+      {"EPSG:2154abc", 2, ""},                // not a code
+      {"Lambert 93, NGF heights", 4, ""},     // free text is not WKT
+  };
+  for (const Case& k : cases) {
+    Dataset d = Dataset::fromCloud(c);
+    d.coordinate_system = k.crs;
+    LasWriteOptions o;
+    o.version_minor = k.minor;
+    WriteReport report;
+    o.report = &report;
+    const auto path = dir / "crs.las";
+    writeLas(path, d, o);
+    const Dataset back = readLas(path);
+    ASSERT_EQ(back.scans[0].cloud.size(), 2u) << k.crs;
+    bool noted = false;
+    for (const auto& n : report.notes) noted |= n.find("was not written") != std::string::npos;
+    if (k.read_back_contains.empty()) {
+      EXPECT_EQ(back.coordinate_system, "") << k.crs;
+      EXPECT_TRUE(noted) << k.crs << ": a dropped coordinate system must be reported";
+    } else {
+      EXPECT_NE(back.coordinate_system.find(k.read_back_contains), std::string::npos)
+          << k.crs << " 1." << k.minor << " read back as " << back.coordinate_system;
+      EXPECT_FALSE(noted) << k.crs;
+    }
   }
 }
 
