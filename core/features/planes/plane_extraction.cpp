@@ -22,6 +22,10 @@ const ParamSchema<PlaneExtractionParams>& PlaneExtractionParams::schema() {
                    "select the threshold with the lowest NFA (2021 eqs. 3-6)")
           .integer(&P::threshold_candidates, "threshold-candidates", "Threshold candidates", "", 2, 20,
                    "thresholds tried by the a-contrario selection", true)
+          .real(&P::threshold_range_min, "threshold-min", "Smallest threshold candidate", "m",
+                0.001, 1.0, "lower end of the a-contrario candidates", true)
+          .real(&P::threshold_range_max, "threshold-max", "Largest threshold candidate", "m",
+                0.001, 1.0, "upper end of the a-contrario candidates", true)
           .integer(&P::min_inliers, "min-inliers", "Minimum plane size", "points", 3, 1e7,
                    "detection stops when the best plane has fewer inliers")
           .integer(&P::max_planes, "max-planes", "Maximum planes", "", 1, 10000, "")
@@ -60,6 +64,10 @@ namespace {
 
 void validate(const PlaneExtractionParams& p) {
   for (const auto& f : PlaneExtractionParams::schema().fields()) validateParamValue(f.spec, f.get(p));
+  if (!(p.threshold_range_min < p.threshold_range_max))
+    throw InputError("planes: threshold-min (" + std::to_string(p.threshold_range_min) +
+                     " m) must be below threshold-max (" + std::to_string(p.threshold_range_max) +
+                     " m)");
 }
 
 std::vector<planes_detail::DetectedPlane> detect(const PointCloud& cloud, PlaneDetector d,
@@ -98,7 +106,8 @@ PlaneExtractionResult extractPlanes(const PointCloud& cloud, const PlaneExtracti
     const int m = params.threshold_candidates;
     double best_nfa = std::numeric_limits<double>::infinity();
     for (int k = 0; k < m; ++k) {
-      const double sigma = 0.005 * std::pow(0.1 / 0.005, double(k) / (m - 1));
+      const double lo = params.threshold_range_min, hi = params.threshold_range_max;
+      const double sigma = lo * std::pow(hi / lo, double(k) / (m - 1));
       Progress sub = progress ? progress->sub(0.8 * k / m, 0.8 * (k + 1) / m) : Progress();
       auto cand = detect(cloud, result.detector_used, sigma, params, progress ? &sub : nullptr);
       const double nfa = planes_detail::logNfa(double(cloud.size()), params.min_inliers,

@@ -33,9 +33,15 @@ struct PlaneExtractionParams {
   /// Inlier distance t of eq. (2), metres, [0.001, 1]. Ignored when auto_threshold is set.
   double distance_threshold = 0.02;
   /// Select the threshold by the a-contrario NFA criterion (2021 eqs. 3-6) among
-  /// `threshold_candidates` values spread geometrically over [0.005, 0.1] m.
+  /// `threshold_candidates` values spread geometrically over
+  /// [threshold_range_min, threshold_range_max]. Off by default: as printed, the criterion
+  /// picks the smallest candidate whatever the noise (docs/ALGORITHMS.md §1, measured).
   bool auto_threshold = false;
   int threshold_candidates = 6;  ///< [2, 20]
+  /// Range of the a-contrario candidates, metres, [0.001, 1]: 5 mm (below it TLS range noise
+  /// splits walls) to 10 cm (above it a door leaf merges with its wall). min < max.
+  double threshold_range_min = 0.005;
+  double threshold_range_max = 0.1;
   /// Smallest plane (min_size of eq. 3), points, [3, 1e7]. Detection stops below it.
   int min_inliers = 300;
   int max_planes = 60;  ///< [1, 10000]

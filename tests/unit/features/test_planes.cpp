@@ -166,11 +166,27 @@ TEST(Planes, AContrarioPicksAThresholdAndFindsTheRoom) {
   p.auto_threshold = true;
   p.threshold_candidates = 4;
   const auto r = extractPlanes(cloud, p);
-  EXPECT_GE(r.distance_threshold_used, 0.005);
-  EXPECT_LE(r.distance_threshold_used, 0.1);
+  // One of the four candidates 5, 13.6, 36.8, 100 mm, exactly.
+  bool candidate = false;
+  for (double c : {0.005, 0.005 * std::pow(20.0, 1.0 / 3), 0.005 * std::pow(20.0, 2.0 / 3), 0.1})
+    candidate |= std::abs(r.distance_threshold_used - c) < 1e-12;
+  EXPECT_TRUE(candidate) << r.distance_threshold_used;
   int found = 0;
   for (const auto& f : roomFaces(spec, Eigen::Vector3d::Zero())) found += match(r.planes, f) >= 0;
   EXPECT_EQ(found, 6);
+}
+
+TEST(Planes, AContrarioRangeMustBeOrdered) {
+  PlaneExtractionParams p;
+  p.auto_threshold = true;
+  p.threshold_range_min = 0.05;
+  p.threshold_range_max = 0.01;
+  try {
+    extractPlanes(test::makeRoom(smallRoom()), p);
+    FAIL() << "an inverted candidate range must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("threshold-min"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Planes, InvalidParamsAreRejected) {
