@@ -8,17 +8,21 @@ namespace plumb::ui {
 
 namespace {
 
-// Viridis sampled at 9 stops (matplotlib's published table, every 32nd entry).
-constexpr std::array<std::array<double, 3>, 9> kViridis = {{
-    {0.267, 0.005, 0.329},
-    {0.283, 0.141, 0.458},
-    {0.254, 0.265, 0.530},
-    {0.207, 0.372, 0.553},
-    {0.164, 0.471, 0.558},
-    {0.128, 0.567, 0.551},
-    {0.135, 0.659, 0.518},
-    {0.478, 0.821, 0.318},
-    {0.993, 0.906, 0.144},
+// Viridis at t = 0, 0.1, ..., 1 (matplotlib's published values). An earlier 9-stop table
+// left out t = 0.7 and 0.9 and spread the rest evenly: mid-range colours were off by up to
+// 25 levels (viridis(0.5) came out (42, 120, 142) instead of (33, 145, 140)).
+constexpr std::array<std::array<double, 3>, 11> kViridis = {{
+    {0.267004, 0.004874, 0.329415},
+    {0.282623, 0.140926, 0.457517},
+    {0.253935, 0.265254, 0.529983},
+    {0.206756, 0.371758, 0.553117},
+    {0.163625, 0.471133, 0.558148},
+    {0.127568, 0.566949, 0.550556},
+    {0.134692, 0.658636, 0.517649},
+    {0.266941, 0.748751, 0.440573},
+    {0.477504, 0.821444, 0.318195},
+    {0.741388, 0.873449, 0.149561},
+    {0.993248, 0.906157, 0.143936},
 }};
 
 std::uint8_t toByte(double v) {
