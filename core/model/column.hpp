@@ -1,11 +1,12 @@
 #pragma once
 // Storage of a per-point attribute column: a std::vector with two differences that matter for
 // clouds of tens of millions of points.
-// - resize(n) leaves new values of trivial types uninitialised (default-initialised) instead of
-//   zeroing them. Readers size a column and then write every value, so zeroing first would
-//   only add a pass over memory the kernel has just zeroed: for a 10M-point PLY read that pass
-//   was 70 MB of extra writes and ~7% of the CPU time (perf, tests/bench/ply). resize(n, value),
-//   assign() and push_back() behave as usual; code that needs zeros must say resize(n, 0).
+// - resize(n) value-initialises (zeros) like any std::vector. Readers, which size a column and
+//   then write every value, call resizeForOverwrite(column, n) instead: new values of trivial
+//   types stay uninitialised. Zeroing first would only add a pass over memory the kernel has
+//   just zeroed: for a 10M-point PLY read that pass was 70 MB of extra writes and ~7% of the
+//   CPU time (perf, tests/bench/ply). The uninitialised sizing is explicit and local to the
+//   call, so no other code can read garbage by accident.
 // - Blocks of 4 MiB and more are mapped 2 MiB-aligned and marked for transparent huge pages
 //   (Linux, THP in "madvise" or "always" mode): the first touch of a huge column takes one
 //   page fault per 2 MiB instead of 512, and no partial 2 MiB at either end falls back to
@@ -24,10 +25,13 @@ inline constexpr std::size_t kLargeBytes = std::size_t{4} << 20;
 /// A 2 MiB-aligned anonymous mapping of `bytes` (throws std::bad_alloc).
 void* allocateLarge(std::size_t bytes);
 void freeLarge(void* p, std::size_t bytes) noexcept;
+/// Set only inside resizeForOverwrite on this thread: construct() then default-initialises.
+inline thread_local bool overwrite_next_resize = false;
 }  // namespace column_memory
 
-/// std::allocator whose value-initialising construct() default-initialises instead, and which
-/// maps large blocks 2 MiB-aligned for huge pages. Stateless: all instances are equal.
+/// std::allocator whose value-initialising construct() default-initialises inside
+/// resizeForOverwrite, and which maps large blocks 2 MiB-aligned for huge pages. Stateless:
+/// all instances are equal.
 template <class T>
 struct DefaultInitAllocator : std::allocator<T> {
   using value_type = T;
@@ -51,7 +55,14 @@ struct DefaultInitAllocator : std::allocator<T> {
 
   template <class U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
-    ::new (static_cast<void*>(p)) U;
+    if (column_memory::overwrite_next_resize) {
+      ::new (static_cast<void*>(p)) U;
+    } else if constexpr (requires { U::Zero(); }) {
+      ::new (static_cast<void*>(p)) U;  // Eigen's value-initialisation leaves values unset
+      *p = U::Zero();
+    } else {
+      ::new (static_cast<void*>(p)) U();
+    }
   }
   template <class U, class... Args>
   void construct(U* p, Args&&... args) {
@@ -66,5 +77,22 @@ bool operator==(const DefaultInitAllocator<T>&, const DefaultInitAllocator<U>&) 
 
 template <class T>
 using Column = std::vector<T, DefaultInitAllocator<T>>;
+
+/// Resizes `column` to n leaving new values of trivial types uninitialised: for readers that
+/// write every value right after. Anything else uses resize (zeros).
+template <class T>
+void resizeForOverwrite(Column<T>& column, std::size_t n) {
+  struct Scope {
+    Scope() { column_memory::overwrite_next_resize = true; }
+    ~Scope() { column_memory::overwrite_next_resize = false; }
+  } scope;
+  column.resize(n);
+}
+
+/// Any other vector (a column not stored as Column<T>): an ordinary, zeroing resize.
+template <class T, class A>
+void resizeForOverwrite(std::vector<T, A>& v, std::size_t n) {
+  v.resize(n);
+}
 
 }  // namespace plumb

@@ -3,34 +3,42 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string_view>
 
 #include "common/error.hpp"
 
 namespace plumb {
 
 namespace {
-// Applies f to every optional per-point attribute vector (not positions, not scalar fields).
-template <class Cloud, class F>
-void forEachAttribute(Cloud& c, F&& f) {
-  f(c.normals, "normals");
-  f(c.colors, "colors");
-  f(c.intensity, "intensity");
-  f(c.return_index, "return_index");
-  f(c.return_count, "return_count");
-  f(c.timestamps, "timestamps");
-  f(c.row, "row");
-  f(c.column, "column");
-  f(c.classification, "classification");
-  f(c.sensor_origins, "sensor_origins");
-  f(c.scan_id, "scan_id");
-  f(c.scan_angle, "scan_angle");
-  f(c.user_data, "user_data");
-  f(c.point_source_id, "point_source_id");
-  f(c.classification_flags, "classification_flags");
-  f(c.scanner_channel, "scanner_channel");
-  f(c.scan_flags, "scan_flags");
-  f(c.color_invalid, "color_invalid");
-  f(c.position_residuals, "position_residuals");
+/// What a cloud without an attribute means for its points: nothing known, or 0 (the LAS
+/// fields, which readers leave out when they are 0 for every point).
+enum class Absent { Unknown, Zero };
+
+// Calls f(name, absent, c.attr...) for every optional per-point attribute vector (not
+// positions, not scalar fields) of one or more clouds, the same attribute of each cloud
+// together: the one list every per-point operation (filter, subset, append, validate,
+// memoryBytes) goes through, so a new attribute cannot be forgotten by one of them.
+template <class F, class... Clouds>
+void forEachAttribute(F&& f, Clouds&... c) {
+  f("normals", Absent::Unknown, c.normals...);
+  f("colors", Absent::Unknown, c.colors...);
+  f("intensity", Absent::Unknown, c.intensity...);
+  f("return_index", Absent::Unknown, c.return_index...);
+  f("return_count", Absent::Unknown, c.return_count...);
+  f("timestamps", Absent::Unknown, c.timestamps...);
+  f("row", Absent::Unknown, c.row...);
+  f("column", Absent::Unknown, c.column...);
+  f("classification", Absent::Unknown, c.classification...);
+  f("sensor_origins", Absent::Unknown, c.sensor_origins...);
+  f("scan_id", Absent::Unknown, c.scan_id...);
+  f("scan_angle", Absent::Zero, c.scan_angle...);
+  f("user_data", Absent::Zero, c.user_data...);
+  f("point_source_id", Absent::Zero, c.point_source_id...);
+  f("classification_flags", Absent::Zero, c.classification_flags...);
+  f("scanner_channel", Absent::Zero, c.scanner_channel...);
+  f("scan_flags", Absent::Zero, c.scan_flags...);
+  f("color_invalid", Absent::Zero, c.color_invalid...);
+  f("position_residuals", Absent::Zero, c.position_residuals...);
 }
 }  // namespace
 
@@ -119,9 +127,9 @@ std::vector<std::string> PointCloud::fieldNames() const {
 
 std::size_t PointCloud::memoryBytes() const {
   std::size_t bytes = positions.size() * sizeof(Eigen::Vector3f);
-  forEachAttribute(*this, [&](const auto& v, const char*) {
+  forEachAttribute([&](const char*, Absent, const auto& v) {
     bytes += v.size() * sizeof(typename std::decay_t<decltype(v)>::value_type);
-  });
+  }, *this);
   for (const auto& f : scalar_fields) bytes += f.values.size() * sizeof(float);
   return bytes;
 }
@@ -130,13 +138,13 @@ void PointCloud::reserve(std::size_t n) { positions.reserve(n); }
 
 void PointCloud::validate(bool strict) const {
   const std::size_t n = size();
-  forEachAttribute(*this, [&](const auto& v, const char* name) {
+  forEachAttribute([&](const char* name, Absent, const auto& v) {
     if (!v.empty() && v.size() != n && strict) {
       std::ostringstream msg;
       msg << "attribute '" << name << "' has " << v.size() << " values for " << n << " points";
       throw InputError(msg.str());
     }
-  });
+  }, *this);
   for (const auto& f : scalar_fields)
     if (f.values.size() != n && strict)
       throw InputError("scalar field '" + f.name + "' has " + std::to_string(f.values.size()) +
@@ -152,7 +160,7 @@ void PointCloud::filter(const std::vector<bool>& keep) {
       if (keep[i]) v[j++] = v[i];
     v.resize(j);
   };
-  forEachAttribute(*this, [&](auto& v, const char*) { compact(v); });
+  forEachAttribute([&](const char*, Absent, auto& v) { compact(v); }, *this);
   for (auto& f : scalar_fields) compact(f.values);
   compact(positions);
   grid_rows = grid_columns = 0;  // a filtered grid is no longer a full grid
@@ -168,25 +176,8 @@ PointCloud PointCloud::subset(const std::vector<std::size_t>& indices) const {
     for (std::size_t k = 0; k < indices.size(); ++k) dst[k] = src[indices[k]];
   };
   pick(positions, out.positions);
-  pick(position_residuals, out.position_residuals);
-  pick(normals, out.normals);
-  pick(colors, out.colors);
-  pick(intensity, out.intensity);
-  pick(return_index, out.return_index);
-  pick(return_count, out.return_count);
-  pick(timestamps, out.timestamps);
-  pick(row, out.row);
-  pick(column, out.column);
-  pick(classification, out.classification);
-  pick(sensor_origins, out.sensor_origins);
-  pick(scan_id, out.scan_id);
-  pick(scan_angle, out.scan_angle);
-  pick(user_data, out.user_data);
-  pick(point_source_id, out.point_source_id);
-  pick(classification_flags, out.classification_flags);
-  pick(scanner_channel, out.scanner_channel);
-  pick(scan_flags, out.scan_flags);
-  pick(color_invalid, out.color_invalid);
+  forEachAttribute([&](const char*, Absent, const auto& src, auto& dst) { pick(src, dst); }, *this,
+                   out);
   for (const auto& f : scalar_fields) {
     ScalarField g{f.name, {}};
     pick(f.values, g.values);
@@ -229,29 +220,18 @@ void PointCloud::append(const PointCloud& other) {
     }
     mine.insert(mine.end(), theirs.begin(), theirs.end());
   };
-  join(normals, other.normals);
-  join(colors, other.colors);
-  join(intensity, other.intensity);
-  join(return_index, other.return_index);
-  join(return_count, other.return_count);
-  join(timestamps, other.timestamps);
-  join(row, other.row);
-  join(column, other.column);
-  join(classification, other.classification);
   const std::size_t origins0 = sensor_origins.size();
-  join(sensor_origins, other.sensor_origins);
+  forEachAttribute(
+      [&](const char* name, Absent absent, auto& mine, const auto& theirs) {
+        if (std::string_view(name) == "position_residuals") return;  // appendPositions
+        // LAS fields: a cloud without one of them has 0 there, so merging keeps the column and
+        // fills the side that lacks it with zeros; any other attribute needs both sides.
+        if (absent == Absent::Zero) joinZeroDefault(mine, theirs, n0, n1);
+        else join(mine, theirs);
+      },
+      *this, other);
   for (std::size_t i = origins0; i < sensor_origins.size(); ++i)  // re-expressed in this offset
     sensor_origins[i] = (sensor_origins[i].cast<double>() + shift).cast<float>();
-  join(scan_id, other.scan_id);
-  // LAS fields: a cloud without one of them has 0 there (the reader leaves all-zero fields out),
-  // so merging keeps the column and fills the side that lacks it with zeros.
-  joinZeroDefault(scan_angle, other.scan_angle, n0, n1);
-  joinZeroDefault(user_data, other.user_data, n0, n1);
-  joinZeroDefault(point_source_id, other.point_source_id, n0, n1);
-  joinZeroDefault(classification_flags, other.classification_flags, n0, n1);
-  joinZeroDefault(scanner_channel, other.scanner_channel, n0, n1);
-  joinZeroDefault(scan_flags, other.scan_flags, n0, n1);
-  joinZeroDefault(color_invalid, other.color_invalid, n0, n1);
   std::vector<ScalarField> fields;
   for (auto& f : scalar_fields) {
     const ScalarField* g = other.findScalarField(f.name);

@@ -1,6 +1,5 @@
 #include "io/e57/e57_scan_reader.hpp"
 
-#include <sys/mman.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -98,27 +97,6 @@ std::string limitsText(const Limits& l) {
   std::ostringstream s;
   s << l.minimum << " .. " << l.maximum;
   return s.str();
-}
-
-// Large attribute arrays: ask for transparent huge pages before the memory is first touched
-// (Linux THP in "madvise" mode). Page faults on fresh memory were a third of the read time.
-void adviseHugePages(const void* p, std::size_t bytes) {
-#ifdef MADV_HUGEPAGE
-  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
-  if (bytes < 2 * kHuge) return;
-  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
-  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(kHuge - 1);
-  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#else
-  (void)p, (void)bytes;
-#endif
-}
-
-template <class V>
-void allocate(V& v, std::size_t n) {
-  v.reserve(n);
-  adviseHugePages(v.data(), n * sizeof(typename V::value_type));
-  v.resize(n);
 }
 
 constexpr std::size_t kBlock = 4096;  // records per block: the double columns stay in L2 cache
@@ -228,25 +206,27 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
   const bool has_time = col[TimeStamp] >= 0;
   const bool has_class = col[Classification] >= 0;
   const bool has_origins = col[SensorX] >= 0 && col[SensorY] >= 0 && col[SensorZ] >= 0;
-  allocate(cloud.positions, n_records);
+  // Every kept record writes every column it has, and the columns are trimmed to the records
+  // kept: nothing is zeroed first (Column<T> maps large columns on transparent huge pages).
+  resizeForOverwrite(cloud.positions, n_records);
   // Double and ScaledInteger coordinates keep their exact value through position residuals
   // (dropped at the end when negligible); single-precision floats need none.
   const FieldSpec& first_axis = info.fields[cartesian ? col[X] : col[Range]];
   const bool exact_locals = !(first_axis.type == FieldType::Float && first_axis.single);
-  if (exact_locals) allocate(cloud.position_residuals, n_records);
-  if (has_intensity) allocate(cloud.intensity, n_records);
-  if (colors) allocate(cloud.colors, n_records);
-  if (colors && col[ColorInvalid] >= 0) allocate(cloud.color_invalid, n_records);
-  if (has_normals) allocate(cloud.normals, n_records);
-  if (has_grid) allocate(cloud.row, n_records), allocate(cloud.column, n_records);
-  if (has_returns) allocate(cloud.return_index, n_records), allocate(cloud.return_count, n_records);
-  if (has_time) allocate(cloud.timestamps, n_records);
-  if (has_class) allocate(cloud.classification, n_records);
-  if (has_origins) allocate(cloud.sensor_origins, n_records);
+  if (exact_locals) resizeForOverwrite(cloud.position_residuals, n_records);
+  if (has_intensity) resizeForOverwrite(cloud.intensity, n_records);
+  if (colors) resizeForOverwrite(cloud.colors, n_records);
+  if (colors && col[ColorInvalid] >= 0) resizeForOverwrite(cloud.color_invalid, n_records);
+  if (has_normals) resizeForOverwrite(cloud.normals, n_records);
+  if (has_grid) resizeForOverwrite(cloud.row, n_records), resizeForOverwrite(cloud.column, n_records);
+  if (has_returns) resizeForOverwrite(cloud.return_index, n_records), resizeForOverwrite(cloud.return_count, n_records);
+  if (has_time) resizeForOverwrite(cloud.timestamps, n_records);
+  if (has_class) resizeForOverwrite(cloud.classification, n_records);
+  if (has_origins) resizeForOverwrite(cloud.sensor_origins, n_records);
   const bool flag_direction = options.keep_direction_only && state_col >= 0;
   for (std::size_t f : others) cloud.scalar_fields.push_back({info.fields[f].name, {}});
   if (flag_direction) cloud.scalar_fields.push_back({"direction_only", {}});
-  for (auto& f : cloud.scalar_fields) allocate(f.values, n_records);
+  for (auto& f : cloud.scalar_fields) resizeForOverwrite(f.values, n_records);
 
   std::vector<std::vector<double>> cols;
   std::vector<std::uint32_t> sel;  // kept records of the block

@@ -45,14 +45,15 @@ PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, P
   raw_min_.fill(std::numeric_limits<std::int32_t>::max());
   raw_max_.fill(std::numeric_limits<std::int32_t>::min());
   const std::size_t n = h.point_count;
-  cloud.positions.resize(n);
-  cloud.position_residuals.resize(n);  // scaled integers: exact locals (dropped when negligible)
-  cloud.intensity.resize(n);
-  cloud.return_index.resize(n);
-  cloud.return_count.resize(n);
-  cloud.classification.resize(n);
-  if (layout_.gps_at >= 0) cloud.timestamps.resize(n);
-  if (layout_.rgb_at >= 0) cloud.colors.resize(n);
+  // Every record writes every one of these columns (decode), so they are not zeroed first.
+  resizeForOverwrite(cloud.positions, n);
+  resizeForOverwrite(cloud.position_residuals, n);  // scaled integers: exact locals
+  resizeForOverwrite(cloud.intensity, n);
+  resizeForOverwrite(cloud.return_index, n);
+  resizeForOverwrite(cloud.return_count, n);
+  resizeForOverwrite(cloud.classification, n);
+  if (layout_.gps_at >= 0) resizeForOverwrite(cloud.timestamps, n);
+  if (layout_.rgb_at >= 0) resizeForOverwrite(cloud.colors, n);
   total_ = n;  // the LAS field columns are allocated by decodeAuxiliary when needed
   auto add = [&](const std::string& name) {
     cloud.scalar_fields.push_back({name, Column<float>(n, 0.0f)});

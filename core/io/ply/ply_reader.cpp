@@ -467,19 +467,19 @@ class Reader {
       return s.target == Target::Position && s.type == Type::Float64;
     });
 
-    // Size the columns. Column<T> leaves the values uninitialised (every record writes every
-    // column) and maps large columns on huge pages, so the threads that convert the records
+    // Size the columns. resizeForOverwrite leaves the values uninitialised (every record writes
+    // every column) and Column<T> maps large columns on huge pages, so the threads that convert the records
     // touch them first, window by window: the kernel's zeroing is spread evenly over the
     // threads and each huge page is still in cache when the converted values overwrite its
     // zeros (zeroing colours and intensity in a pass of their own first cost 70 MB of extra
     // memory traffic and 22% of the read time on 10M points).
-    cloud.positions.resize(n);
-    if (double_coords) cloud.position_residuals.resize(n);
-    if (has_normals) cloud.normals.resize(n);
-    if (has_colors) cloud.colors.resize(n);
-    if (ii >= 0) cloud.intensity.resize(n);
-    for (auto& f : cloud.scalar_fields) f.values.resize(n);
-    for (auto& v : extra_values) v.resize(n);
+    resizeForOverwrite(cloud.positions, n);
+    if (double_coords) resizeForOverwrite(cloud.position_residuals, n);
+    if (has_normals) resizeForOverwrite(cloud.normals, n);
+    if (has_colors) resizeForOverwrite(cloud.colors, n);
+    if (ii >= 0) resizeForOverwrite(cloud.intensity, n);
+    for (auto& f : cloud.scalar_fields) resizeForOverwrite(f.values, n);
+    for (auto& v : extra_values) resizeForOverwrite(v, n);
     Columns c;
     c.pos = cloud.positions.empty() ? nullptr : cloud.positions[0].data();
     c.res = cloud.position_residuals.empty() ? nullptr : cloud.position_residuals[0].data();

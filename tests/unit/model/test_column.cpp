@@ -1,6 +1,7 @@
 // Column<T> (core/model/column.hpp): a std::vector whose large blocks are 2 MiB-aligned
 // mappings; values survive growth across the small/large boundary, copies and moves, and
-// resize(n, value) still fills.
+// resize(n, value) still fills; resize(n) zeros new values like any vector, and only the
+// readers' explicit resizeForOverwrite skips the zeroing.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -52,6 +53,31 @@ TEST(Column, CopiesMovesAndFilledResize) {
   EXPECT_EQ(c.data(), data);  // a move keeps the block (the allocators compare equal)
   c.assign(3, 2.f);
   EXPECT_EQ(c, (Column<float>{2.f, 2.f, 2.f}));
+}
+
+TEST(Column, ResizeZerosNewValuesEvenInReusedCapacity) {
+  // A shrink then a regrow reuses the capacity that still holds the old 7s: resize(n) must
+  // hand back zeros, as std::vector does (it handed back the 7s before).
+  Column<float> c(100, 7.f);
+  c.resize(10);
+  c.resize(100);
+  for (std::size_t i = 10; i < 100; ++i) ASSERT_EQ(c[i], 0.f) << i;
+  Column<Eigen::Vector3f> v(5, Eigen::Vector3f(1, 2, 3));
+  v.resize(1);
+  v.resize(5);
+  EXPECT_EQ(v[4], Eigen::Vector3f::Zero());
+}
+
+TEST(Column, ResizeForOverwriteIsLocalToTheCall) {
+  Column<std::uint32_t> c;
+  resizeForOverwrite(c, 1000);
+  ASSERT_EQ(c.size(), 1000u);
+  for (std::uint32_t i = 0; i < 1000; ++i) c[i] = i + 1;  // a reader writes every value
+  EXPECT_EQ(c[999], 1000u);
+  EXPECT_FALSE(column_memory::overwrite_next_resize);  // the scope ended with the call
+  c.resize(10);
+  c.resize(1000);  // an ordinary resize afterwards zeros again
+  for (std::size_t i = 10; i < 1000; ++i) ASSERT_EQ(c[i], 0u) << i;
 }
 
 TEST(Column, PointCloudColumnsUseIt) {
