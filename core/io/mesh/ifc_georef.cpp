@@ -224,6 +224,12 @@ bool moveTopLevel(const Index& ix, std::string_view text, const Eigen::Vector3d&
 
 }  // namespace
 
+double lengthUnit(std::string_view text) {
+  const Index ix = buildIndex(text);
+  const auto project = ix.by_id.find(ix.project);
+  return project == ix.by_id.end() ? 1.0 : lengthScale(ix, project->second);
+}
+
 std::optional<Shift> plan(std::string_view text) {
   const Index ix = buildIndex(text);
   const auto project = ix.by_id.find(ix.project);

@@ -19,8 +19,8 @@
 // user's file.
 // Not handled (imported as before, in float): large translations below the top level (an
 // IfcBuilding placed relative to a site at the origin), coordinates written directly in the
-// geometry, IfcAxis2Placement2D world systems. IfcMapConversion (IFC4) is not read by assimp
-// 5.2 at all: models stay in the project's engineering coordinates and nothing is lost there.
+// geometry, IfcAxis2Placement2D world systems. IfcMapConversion (IFC4), which assimp 5.2 does
+// not read, is applied after the import (ifc_map_conversion.hpp).
 #include <Eigen/Core>
 
 #include <optional>
@@ -36,5 +36,9 @@ struct Shift {
 
 /// The shift to take out of an IFC file's text, or nullopt (small, absent or not understood).
 std::optional<Shift> plan(std::string_view ifc_text);
+
+/// The project's length unit in metres as assimp applies it (IfcSIUnit prefix; 1 when the
+/// file has no project or no SI length unit).
+double lengthUnit(std::string_view ifc_text);
 
 }  // namespace plumb::ifc_georef

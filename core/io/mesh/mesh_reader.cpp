@@ -10,6 +10,7 @@
 #include "common/error.hpp"
 #include "io/mesh/file_extension.hpp"
 #include "io/mesh/ifc_georef.hpp"
+#include "io/mesh/ifc_map_conversion.hpp"
 #include "io/mesh/import_failure.hpp"
 #include "io/mesh/import_process.hpp"
 #include "io/mesh/mesh_io.hpp"
@@ -43,11 +44,24 @@ class TempIfc {
   std::filesystem::path path_;
 };
 
-std::optional<ifc_georef::Shift> georefShift(const std::filesystem::path& path) {
-  if (lowerExtension(path) != ".ifc") return std::nullopt;
+/// What an IFC's text says about its place in the world, beyond what assimp applies.
+struct IfcPlacement {
+  std::optional<ifc_georef::Shift> shift;              ///< taken out before, added back after
+  std::optional<ifc_georef::MapConversion> map;        ///< applied after the import
+};
+
+IfcPlacement ifcPlacement(const std::filesystem::path& path) {
+  if (lowerExtension(path) != ".ifc") return {};
   std::ifstream in(path, std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return ifc_georef::plan(text);
+  IfcPlacement p;
+  p.shift = ifc_georef::plan(text);
+  try {
+    p.map = ifc_georef::readMapConversion(text, ifc_georef::lengthUnit(text));
+  } catch (const InputError& e) {
+    throw FileError(path, e.what());
+  }
+  return p;
 }
 
 unsigned long long defaultMemoryMib() {
@@ -97,7 +111,8 @@ BimModel readMesh(const std::filesystem::path& path, Progress* progress, const I
   reportProgress(progress, 0.0, "importing model");
   const auto helper = helperOrThrow(path);
   const import_failure::Limits used{limits.seconds, limits.memory_mib ? limits.memory_mib : defaultMemoryMib()};
-  const auto shift = georefShift(path);
+  const IfcPlacement placement = ifcPlacement(path);
+  const auto& shift = placement.shift;
   std::optional<TempIfc> copy;
   import_process::Outcome outcome;
   try {
@@ -110,6 +125,7 @@ BimModel readMesh(const std::filesystem::path& path, Progress* progress, const I
   model.source = path;
   if (shift)
     for (auto& v : model.mesh.vertices) v += shift->metres;
+  if (placement.map) ifc_georef::applyMapConversion(*placement.map, model.mesh);
   reportProgress(progress, 1.0, "importing model");
   return model;
 }

@@ -3,12 +3,15 @@
 // Lambert-93) keep the 0.1 mm the point clouds are held to.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "common/error.hpp"
 #include "io/mesh/ifc_georef.hpp"
+#include "io/mesh/ifc_map_conversion.hpp"
 #include "io/mesh/mesh_io.hpp"
 #include "support/test_support.hpp"
 
@@ -104,4 +107,68 @@ TEST(IfcGeoref, PlanLeavesSharedPointsAloneAndKeepsLines) {
   EXPECT_NE(out.find("#12=IFCCARTESIANPOINT((0.,0.,0.));\n#13=IFCAXIS2PLACEMENT3D(#12,$,$);"), std::string::npos) << out;
   // A model near the origin is left alone.
   EXPECT_FALSE(ifc_georef::plan(std::string(text).replace(text.find("500000.,6000000.,10."), 20, "5.,6.,1.")));
+}
+
+namespace {
+constexpr const char* kOpenHouseContext =
+    "#11=IFCGEOMETRICREPRESENTATIONCONTEXT('Plan','Model',3,1.E-005,#10,#6);";
+
+/// IfcOpenHouse (millimetres) with an IfcMapConversion of its model context #11 to Lambert-93.
+std::filesystem::path withMapConversion(const std::string& conversion_args, const std::string& name) {
+  return edited("ifc/IfcOpenHouse_IFC4.ifc", kOpenHouseContext, kOpenHouseContext,
+                "#900001=IFCPROJECTEDCRS('EPSG:2154','RGF93 v1 / Lambert-93',$,$,$,$,$);\n"
+                "#900002=IFCMAPCONVERSION(#11,#900001," + conversion_args + ");",
+                name);
+}
+}  // namespace
+
+TEST(IfcGeoref, MapConversionPlacesTheModelInTheGrid) {
+  // Eastings/Northings/OrthogonalHeight in metres, x axis turned 30 degrees, Scale 0.001
+  // (millimetre project units to metres: the imported model is already in metres, so the
+  // horizontal factor is 1).
+  const auto path =
+      withMapConversion("651234.5678,6861234.4321,35.25,0.8660254037844387,0.5,0.001", "openhouse_map.ifc");
+  const BimModel original = readMesh(test::sharedData("ifc/IfcOpenHouse_IFC4.ifc"));
+  const BimModel mapped = readMesh(path);
+  ASSERT_EQ(mapped.mesh.vertices.size(), original.mesh.vertices.size());
+  const double a = std::atan2(0.5, 0.8660254037844387);
+  double worst = 0;
+  for (std::size_t i = 0; i < original.mesh.vertices.size(); ++i) {
+    const Eigen::Vector3d& v = original.mesh.vertices[i];
+    const Eigen::Vector3d want(651234.5678 + std::cos(a) * v.x() - std::sin(a) * v.y(),
+                               6861234.4321 + std::sin(a) * v.x() + std::cos(a) * v.y(), 35.25 + v.z());
+    worst = std::max(worst, (mapped.mesh.vertices[i] - want).norm());
+  }
+  EXPECT_LE(worst, 1e-6);  // double arithmetic on the same imported vertices
+  EXPECT_GT(mapped.mesh.bounds().min.x(), 651000.0);
+  EXPECT_GT(mapped.mesh.bounds().min.y(), 6861000.0);
+}
+
+TEST(IfcGeoref, MapConversionReadsDefaultsAndRefusesAZeroAxis) {
+  const std::string head = "ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n"
+                           "#10=IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-5,$,$);\n"
+                           "#20=IFCPROJECTEDCRS('EPSG:32631',$,$,$,$,$,$);\n";
+  const auto m = ifc_georef::readMapConversion(head + "#30=IFCMAPCONVERSION(#10,#20,500000.,5000000.,12.,$,$,$);\nENDSEC;\n", 1.0);
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->origin, Eigen::Vector3d(500000.0, 5000000.0, 12.0));
+  EXPECT_EQ(m->rotation_rad, 0.0);
+  EXPECT_EQ(m->scale, 1.0);
+  EXPECT_EQ(m->crs, "EPSG:32631");
+  EXPECT_EQ(m->line, 7u);
+  EXPECT_FALSE(ifc_georef::readMapConversion(head + "ENDSEC;\n", 1.0));
+  try {
+    ifc_georef::readMapConversion(head + "#30=IFCMAPCONVERSION(#10,#20,1.,2.,3.,0.,0.,1.);\nENDSEC;\n", 1.0);
+    FAIL() << "a zero x axis must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("#30 (line 7)"), std::string::npos) << e.what();
+  }
+  // Through readMesh the same fault names the file.
+  const auto bad = withMapConversion("651234.5,6861234.4,35.,0.,0.,1.", "openhouse_bad_map.ifc");
+  try {
+    readMesh(bad);
+    FAIL() << "a zero x axis must be refused";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("openhouse_bad_map.ifc"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("x axis"), std::string::npos) << e.what();
+  }
 }
