@@ -8,6 +8,7 @@
 
 #include <iostream>
 
+#include "common/atomic_file.hpp"
 #include "ui/main_window.hpp"
 #include "ui/startup_run.hpp"
 #include "ui/view/surface_format.hpp"
@@ -15,6 +16,9 @@
 int main(int argc, char** argv) {
   plumb::ui::setDefaultSurfaceFormat();  // before QApplication (docs/QT_VTK.md)
   QApplication app(argc, argv);
+  // A session ended by SIGTERM/SIGINT/SIGHUP (logout, kill) during an export leaves no
+  // temporary file next to the user's data, as with plumb-cli.
+  plumb::removeTemporaryFilesOnSignals();
   QCoreApplication::setOrganizationName("Plumb");
   QCoreApplication::setApplicationName("plumb");
   QCoreApplication::setApplicationVersion(PLUMB_VERSION);
