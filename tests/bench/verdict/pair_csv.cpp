@@ -27,7 +27,7 @@ void writePairCsv(const std::string& path, const std::vector<PairRecord>& record
   std::ofstream f(path);
   if (!f) throw std::runtime_error("cannot write " + path);
   f << "suite,pair,group,seed,verdict_level,status,success,correct,confident_wrong,"
-       "rotation_error_deg,translation_error_m,oracle_agreement,seconds";
+       "rotation_error_deg,translation_error_m,oracle_agreement,oracle_wall_agreement,seconds";
   for (const auto& k : keys) f << "," << quoted(k);
   f << "\n";
   for (const auto& r : records) {
@@ -35,6 +35,7 @@ void writePairCsv(const std::string& path, const std::vector<PairRecord>& record
       << quoted(levelName(r.level)) << "," << quoted(r.status) << "," << r.success << ","
       << r.correct << "," << r.confident_wrong << "," << optional(r.rotation_error_deg) << ","
       << optional(r.translation_error_m) << "," << optional(r.oracle_agreement) << ","
+      << optional(r.oracle_wall_agreement) << ","
       << r.seconds;
     for (const auto& k : keys) {
       const auto it = r.figures.find(k);

@@ -23,8 +23,9 @@ struct PairRecord {
   std::optional<double> rotation_error_deg, translation_error_m;
   bool correct = false;          ///< the suite's own definition of a right outcome
   bool confident_wrong = false;  ///< usable, and wrong
-  /// Genuine-match oracle: best range agreement of a reported placement (wrong pairs only).
-  std::optional<double> oracle_agreement;
+  /// Genuine-match oracle (wrong pairs only): range agreement of all rays and of the wall
+  /// rays at the reported placement that agrees best (placement_oracle.hpp).
+  std::optional<double> oracle_agreement, oracle_wall_agreement;
   std::map<std::string, double> figures;  ///< flattened numeric leaves of the report JSON
   double seconds = 0.0;
 };

@@ -17,13 +17,15 @@ std::string figure(const PairRecord& r, const std::string& key, double scale = 1
 
 void printOffender(const PairRecord& r) {
   std::printf("    %-12s %-48s pose %d: %-15s status %-10s rms %s mm, overlap %s, inliers %s/%s, "
-              "least resistance %s, runner-up gap %s, oracle %s\n",
+              "least resistance %s, runner-up gap %s, oracle %s / walls %s\n",
               r.suite.c_str(), r.pair.c_str(), r.seed, levelName(r.level).c_str(),
               r.status.c_str(), figure(r, "points.rms_m", 1000).c_str(),
               figure(r, "points.overlap_ratio").c_str(), figure(r, "features.inliers").c_str(),
               figure(r, "features.source").c_str(), figure(r, "direction_resistance.min").c_str(),
               figure(r, "runner_up.relative_gap").c_str(),
-              r.oracle_agreement ? std::to_string(*r.oracle_agreement).substr(0, 4).c_str() : "-");
+              r.oracle_agreement ? std::to_string(*r.oracle_agreement).substr(0, 4).c_str() : "-",
+              r.oracle_wall_agreement ? std::to_string(*r.oracle_wall_agreement).substr(0, 4).c_str()
+                                      : "-");
 }
 
 /// Prints the records matching `bad` under a heading; returns how many.

@@ -44,14 +44,17 @@ const SideData& targetOf(SurveyCatalogue& data, const WrongPair& p) {
   return data.indoor(p.target);
 }
 
-/// Best range agreement over the placements the report names; placement maps the moved
-/// source to the target, so the source building's frame maps by placement * pose.
-double bestAgreement(SurveyCatalogue& data, const WrongPair& p, const RigidTransform& pose,
-                     const PairOutcome& o) {
-  double best = 0.0;
-  for (const auto& t : reportedPlacements(o))
-    best = std::max(best, rangeAgreement(data.bareScene(p.source), data.bareScene(p.target),
-                                         data.building(p.source).stations, t * pose));
+/// The agreement of the placement the report names that agrees best (genuine first, then
+/// by wall agreement); a placement maps the moved source to the target, so the source
+/// building's frame maps by placement * pose.
+Agreement bestAgreement(SurveyCatalogue& data, const WrongPair& p, const RigidTransform& pose,
+                        const PairOutcome& o) {
+  Agreement best;
+  for (const auto& t : reportedPlacements(o)) {
+    const Agreement a = rangeAgreement(data.bareScene(p.source), data.bareScene(p.target),
+                                       data.building(p.source).stations, t * pose);
+    if (std::make_pair(a.genuine(), a.walls) > std::make_pair(best.genuine(), best.walls)) best = a;
+  }
   return best;
 }
 
@@ -88,15 +91,18 @@ std::vector<PairRecord> runWrongPairSuite(SurveyCatalogue& data, const std::vect
     for (int i = 0; i < poses; ++i) {
       const PairOutcome o = registerMoved(source, cases[i], target, data.params());
       PairRecord r = recordOf("wrong-pair", p.name(), i, o);
-      r.oracle_agreement = bestAgreement(data, p, cases[i], o);
-      const bool genuine = *r.oracle_agreement >= kGenuineAgreement;
+      const Agreement a = bestAgreement(data, p, cases[i], o);
+      r.oracle_agreement = a.all;
+      r.oracle_wall_agreement = a.walls;
+      const bool genuine = a.genuine();
       r.group = genuine ? "wrong: genuine match" : "wrong: clear mismatch";
       r.confident_wrong = r.level == Level::Usable;
       // A clear mismatch must end failed; a genuine match may be ambiguous (not usable).
       r.correct = genuine ? r.level != Level::Usable : r.level == Level::FailedOrAmbiguous;
-      std::printf("  [wrong-pair] %-48s pose %d: %-19s %-12s oracle %.2f  %.1f s (%s)\n",
-                  p.name().c_str(), i, levelName(r.level).c_str(), r.status.c_str(),
-                  *r.oracle_agreement, r.seconds, stageSeconds(o.report).c_str());
+      std::printf("  [wrong-pair] %-48s pose %d: %-19s %-12s oracle %.2f / walls %.2f  %.1f s "
+                  "(%s)\n",
+                  p.name().c_str(), i, levelName(r.level).c_str(), r.status.c_str(), a.all,
+                  a.walls, r.seconds, stageSeconds(o.report).c_str());
       std::fflush(stdout);
       out.push_back(std::move(r));
     }
