@@ -156,25 +156,27 @@ int main(int argc, char** argv) try {
   const PipelineParams params = test::acceptanceParams();
   SurveyCatalogue data(params, o.max_stations, o.tls_step);
   std::vector<PairRecord> all;
-  auto append = [&](std::vector<PairRecord> v, const char* suite, double seconds) {
-    std::printf("  -- %s: %zu registrations in %.1f s\n", suite, v.size(), seconds);
+  // `t0`: when the suite started (read after the suite ran: arguments have no order).
+  auto append = [&](std::vector<PairRecord> v, const char* suite,
+                    std::chrono::steady_clock::time_point t0) {
+    std::printf("  -- %s: %zu registrations in %.1f s\n", suite, v.size(), since(t0));
     for (auto& r : v) all.push_back(std::move(r));
   };
   if (o.suites.count("right")) {
     const auto t0 = std::chrono::steady_clock::now();
     std::printf("\n== right-pair suite: acceptance scenarios x %d poses, real pair\n", o.right_poses);
-    append(runRightPairSuite(test::scenarioNames(), o.right_poses, true), "right-pair", since(t0));
+    append(runRightPairSuite(test::scenarioNames(), o.right_poses, true), "right-pair", t0);
   }
   if (o.suites.count("symmetric")) {
     const auto t0 = std::chrono::steady_clock::now();
     std::printf("\n== symmetric suite: up to %d rooms per building x %d poses\n",
                 o.symmetric_rooms, o.symmetric_poses);
-    append(runSymmetricSuite(data, o.symmetric_rooms, o.symmetric_poses), "symmetric", since(t0));
+    append(runSymmetricSuite(data, o.symmetric_rooms, o.symmetric_poses), "symmetric", t0);
   }
   if (o.suites.count("degenerate")) {
     const auto t0 = std::chrono::steady_clock::now();
     std::printf("\n== degenerate suite\n");
-    append(runDegenerateSuite(params, !o.ci), "degenerate", since(t0));
+    append(runDegenerateSuite(params, !o.ci), "degenerate", t0);
   }
   int skipped = 0;
   std::size_t wrong_pairs = 0;
@@ -186,8 +188,7 @@ int main(int argc, char** argv) try {
                                       : allWrongPairs(data, allBuildings(), {"house"});
     std::printf("\n== wrong-pair suite: %zu pairs x %d poses\n", pairs.size(), o.poses);
     wrong_pairs = pairs.size();
-    append(runWrongPairSuite(data, pairs, o.poses, o.wrong_budget, skipped), "wrong-pair",
-           since(t0));
+    append(runWrongPairSuite(data, pairs, o.poses, o.wrong_budget, skipped), "wrong-pair", t0);
   }
   printTables(all);
   if (!o.csv.empty()) {

@@ -62,9 +62,10 @@ PairRecord symmetricRecord(const std::string& pair, int i, const SideData& scan,
   r.group = right ? "truth placed" : r.success ? "wrong copy" : "not placed";
   r.correct = right || (!r.success && r.status == "ambiguous" && listed);
   r.confident_wrong = r.level == Level::Usable && !right;
-  std::printf("  [symmetric] %-36s pose %d: %-19s %-12s %-13s truth listed %d  %.1f s\n",
+  std::printf("  [symmetric] %-36s pose %d: %-19s %-12s %-13s error %.3f deg %.3f m, truth "
+              "listed %d  %.1f s\n",
               pair.c_str(), i, levelName(r.level).c_str(), r.status.c_str(), r.group.c_str(),
-              int(listed), r.seconds);
+              e.rotation_deg, e.translation_m, int(listed), r.seconds);
   std::fflush(stdout);
   return r;
 }
