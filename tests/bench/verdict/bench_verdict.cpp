@@ -135,6 +135,7 @@ void printTables(const std::vector<PairRecord>& all) {
     printFigureDistributions("right-pair suite", rp);
   }
   const std::vector<EvidenceGroup> sym{groupOf(all, "symmetric", "truth placed"),
+                                       groupOf(all, "symmetric", "truth, outside tolerance"),
                                        groupOf(all, "symmetric", "wrong copy"),
                                        groupOf(all, "symmetric", "not placed")};
   if (ran(all, "symmetric")) {

@@ -34,8 +34,8 @@ std::vector<PairRecord> runRightPairSuite(const std::vector<std::string>& scenar
 
 /// One TLS station per room of a building with repeated units onto the whole model: duplex.ifc
 /// (as modelled) and the two identical storeys of "house" (model without furniture). At most
-/// `max_rooms` rooms per building, `poses` poses each. Groups "truth placed", "wrong copy",
-/// "not placed".
+/// `max_rooms` rooms per building, `poses` poses each. Groups "truth placed", "truth, outside
+/// tolerance", "wrong copy", "not placed".
 std::vector<PairRecord> runSymmetricSuite(SurveyCatalogue& data, int max_rooms, int poses);
 
 /// Single plane, two parallel planes, corridor, line: `icp` and `auto`, source shifted along
