@@ -159,6 +159,7 @@ CaseOutcome runPlumbCase(const Scenario& s, const RigidTransform& pose,
   o.seconds_features = r.seconds_features;
   o.seconds_global = r.seconds_global;
   o.seconds_refine = r.seconds_refine;
+  o.report = r.report;
   if (r.report.refined)
     o.min_resistance = *std::min_element(r.report.direction_resistance.begin(),
                                          r.report.direction_resistance.end());

@@ -4,6 +4,7 @@
 
 #include "quality/quality_report.hpp"
 #include "registration/refine/icp_refinement.hpp"
+#include "support/degenerate_scenes.hpp"
 #include "unit/registration/synthetic_building.hpp"
 
 using namespace plumb;
@@ -101,47 +102,12 @@ TEST(QualityReport, ACorridorWithoutOpeningsIsDegenerateAlongItsAxis) {
   for (double resistance : rb.direction_resistance) EXPECT_GT(resistance, 0.1);
 }
 
-namespace {
-/// Points on a list of axis-aligned rectangles (3 mm noise): rect = {origin, edge u, edge v}.
-PointCloud noisyRectangles(const std::vector<std::array<Eigen::Vector3d, 3>>& rects, int per_rect,
-                           std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::normal_distribution<double> n(0.0, 0.003);
-  PointCloud c;
-  for (const auto& r : rects)
-    for (int i = 0; i < per_rect; ++i) {
-      const Eigen::Vector3d p = r[0] + u(rng) * r[1] + u(rng) * r[2];
-      c.positions.push_back((p + Eigen::Vector3d(n(rng), n(rng), n(rng))).cast<float>());
-    }
-  return c;
-}
-
-struct DegenerateScene {
-  const char* name;
-  std::vector<std::array<Eigen::Vector3d, 3>> rects;
-  int free_directions;  ///< translations and rotations the data leaves free
-};
-
-std::vector<DegenerateScene> degenerateScenes() {
-  using V = Eigen::Vector3d;
-  const V x(10, 0, 0), y(0, 10, 0);
-  return {
-      {"single plane", {{V(0, 0, 0), x, y}}, 3},
-      {"two parallel planes", {{V(0, 0, 0), x, y}, {V(0, 0, 3), x, y}}, 3},
-      {"corridor without openings",
-       {{V(0, 0, 0), V(30, 0, 0), V(0, 2, 0)}, {V(0, 0, 3), V(30, 0, 0), V(0, 2, 0)},
-        {V(0, 0, 0), V(30, 0, 0), V(0, 0, 3)}, {V(0, 2, 0), V(30, 0, 0), V(0, 0, 3)}},
-       1},
-      // A line: a 10 m pole 6 mm thick (two thin strips).
-      {"single line", {{V(0, 0, 0), x, V(0, 0.006, 0)}, {V(0, 0, 0), x, V(0, 0, 0.006)}}, 2},
-  };
-}
-}  // namespace
 
 // Degenerate suite (issue 13): data that leaves degrees of freedom free never passes, even
 // when ICP lands near the truth by chance; the report names at least as many free directions.
 TEST(QualityReport, DegenerateScenesNeverSucceed) {
+  using test::degenerateScenes;
+  using test::noisyRectangles;
   GlobalRegistrationResult g;
   g.status = RegistrationStatus::Success;
   g.method = "icp";
