@@ -48,9 +48,6 @@ StationRangeImages::StationRangeImages(const PointCloud& cloud,
                                        const std::optional<Eigen::Vector3d>& viewpoint,
                                        const VisibilityParams& params)
     : params_(params) {
-  bin_rad_ = std::clamp(params.bin_deg, 0.05, 5.0) * M_PI / 180.0;
-  columns_ = static_cast<int>(std::ceil(2 * M_PI / bin_rad_));
-  rows_ = static_cast<int>(std::ceil(M_PI / bin_rad_));
   const bool origins = cloud.hasSensorOrigins();
   if (cloud.empty() || (!origins && !viewpoint)) return;
   const auto points = regularSample(cloud.size(), static_cast<std::size_t>(params.max_map_points));
@@ -61,6 +58,7 @@ StationRangeImages::StationRangeImages(const PointCloud& cloud,
     stations_.push_back(*viewpoint);
     station_of.assign(points.size(), 0);
   }
+  chooseBins(cloud, points, station_of);
   reach_.assign(stations_.size(), 0.0);
   boxes_.assign(stations_.size(), Bounds{});
   keys_.assign(tableSize(points.size()), kEmpty);
@@ -102,7 +100,7 @@ void StationRangeImages::fill(const PointCloud& cloud, const std::vector<std::si
   for (std::size_t k = 0; k < points.size(); ++k) {
     const std::size_t s = station_of[k];
     const Eigen::Vector3d p = cloud.world(points[k]);
-    const Bin b = binOf(p - stations_[s]);
+    const Bin b = binOf(p - stations_[s], grids_[s]);
     if (!(b.range >= params_.min_sensor_distance) || !std::isfinite(b.range)) continue;
     insert(key(s, b.row, b.column), static_cast<float>(b.range));
     reach_[s] = std::max(reach_[s], b.range);
@@ -116,15 +114,50 @@ void StationRangeImages::fill(const PointCloud& cloud, const std::vector<std::si
   }
 }
 
-StationRangeImages::Bin StationRangeImages::binOf(const Eigen::Vector3d& d) const {
+StationRangeImages::Grid StationRangeImages::gridOf(double bin_rad) {
+  Grid g;
+  g.bin = bin_rad;
+  g.columns = static_cast<int>(std::ceil(2 * M_PI / bin_rad));
+  g.rows = static_cast<int>(std::ceil(M_PI / bin_rad));
+  return g;
+}
+
+StationRangeImages::Bin StationRangeImages::binOf(const Eigen::Vector3d& d, const Grid& g) {
   Bin b;
   b.range = d.norm();
   if (!(b.range > 0.0)) return b;
   const double az = std::atan2(d.y(), d.x()) + M_PI;                      // [0, 2 pi]
   const double el = std::asin(std::clamp(d.z() / b.range, -1.0, 1.0)) + M_PI / 2;  // [0, pi]
-  b.column = static_cast<int>(az / bin_rad_) % columns_;
-  b.row = std::clamp(static_cast<int>(el / bin_rad_), 0, rows_ - 1);
+  b.column = static_cast<int>(az / g.bin) % g.columns;
+  b.row = std::clamp(static_cast<int>(el / g.bin), 0, g.rows - 1);
   return b;
+}
+
+/// Each station's bin from its own angular density: bins must hold a few points each, or
+/// holes between sparse points (a subsampled TLS, an MMS chunk between profiles) leave only
+/// far neighbours around a direction and fake a seen-through space at every depth edge
+/// (measured: the house TLS thinned to 300k points, bins at the 0.5 deg scan step: 4% of the
+/// MMS points contradicted at the truth; with bins of twice the spacing: 0%). The spacing is
+/// sqrt(solid angle / points), the solid angle counted in occupied 2-degree cells.
+void StationRangeImages::chooseBins(const PointCloud& cloud, const std::vector<std::size_t>& points,
+                                    const std::vector<std::uint32_t>& station_of) {
+  const double base = std::clamp(params_.bin_deg, 0.05, 5.0) * M_PI / 180.0;
+  const Grid coarse = gridOf(2.0 * M_PI / 180.0);
+  std::unordered_map<std::uint64_t, char> cells;
+  std::vector<double> count(stations_.size(), 0.0), solid(stations_.size(), 0.0);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const std::size_t s = station_of[k];
+    const Bin b = binOf(cloud.world(points[k]) - stations_[s], coarse);
+    if (!(b.range >= params_.min_sensor_distance)) continue;
+    count[s] += 1.0;
+    if (cells.emplace(key(s, b.row, b.column), 0).second)
+      solid[s] += coarse.bin * coarse.bin * std::max(0.05, std::sin((b.row + 0.5) * coarse.bin));
+  }
+  grids_.clear();
+  for (std::size_t s = 0; s < stations_.size(); ++s) {
+    const double spacing = count[s] > 0 ? std::sqrt(solid[s] / count[s]) : base;
+    grids_.push_back(gridOf(std::clamp(2.0 * spacing, base, 8.0 * base)));
+  }
 }
 
 std::uint64_t StationRangeImages::key(std::size_t station, int row, int column) const {
@@ -164,16 +197,17 @@ Sighting StationRangeImages::classifyFrom(std::size_t s, const Eigen::Vector3d& 
   const Bounds& box = boxes_[s];
   if ((q.array() < box.min.array()).any() || (q.array() > box.max.array()).any())
     return Sighting::NoEvidence;
-  const Bin b = binOf(q - stations_[s]);
+  const Grid& g = grids_[s];
+  const Bin b = binOf(q - stations_[s], g);
   const double margin = params_.min_margin + params_.range_margin * b.range;
   if (!(b.range >= params_.min_sensor_distance) || b.range > reach_[s] + margin)
     return Sighting::NoEvidence;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (int dr = -1; dr <= 1; ++dr) {
     const int row = b.row + dr;
-    if (row < 0 || row >= rows_) continue;
+    if (row < 0 || row >= g.rows) continue;
     for (int dc = -1; dc <= 1; ++dc) {
-      const int column = (b.column + dc + columns_) % columns_;
+      const int column = (b.column + dc + g.columns) % g.columns;
       if (const float* r = find(key(s, row, column))) {
         lo = std::min(lo, static_cast<double>(*r));
         hi = std::max(hi, static_cast<double>(*r));
@@ -187,13 +221,18 @@ Sighting StationRangeImages::classifyFrom(std::size_t s, const Eigen::Vector3d& 
 }
 
 Sighting StationRangeImages::classify(const Eigen::Vector3d& q) const {
-  Sighting best = Sighting::NoEvidence;
+  int contradicting = 0, consistent = 0;
+  bool occluded = false;
   for (std::size_t s = 0; s < stations_.size(); ++s) {
     const Sighting v = classifyFrom(s, q);
-    if (v == Sighting::Contradicting) return v;
-    best = std::max(best, v);
+    contradicting += v == Sighting::Contradicting;
+    consistent += v == Sighting::Consistent;
+    occluded = occluded || v == Sighting::Occluded;
   }
-  return best;
+  if (contradicting > consistent) return Sighting::Contradicting;
+  if (consistent > 0) return Sighting::Consistent;
+  if (contradicting > 0) return Sighting::Contradicting;
+  return occluded ? Sighting::Occluded : Sighting::NoEvidence;
 }
 
 }  // namespace plumb

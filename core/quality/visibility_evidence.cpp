@@ -55,6 +55,19 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+/// Regular sample of the tested points, without those next to their own sensor.
+std::vector<std::size_t> testedPoints(const PointCloud& c, const std::optional<Eigen::Vector3d>& vp,
+                                      const VisibilityParams& p) {
+  auto idx = regularSample(c.size(), static_cast<std::size_t>(p.max_test_points));
+  const bool origins = c.hasSensorOrigins();
+  if (!origins && !vp) return idx;
+  std::erase_if(idx, [&](std::size_t i) {
+    const Eigen::Vector3d o = origins ? Eigen::Vector3d(c.offset + c.sensor_origins[i].cast<double>()) : *vp;
+    return (c.world(i) - o).norm() < p.min_sensor_distance;
+  });
+  return idx;
+}
+
 }  // namespace
 
 void tallySightings(const std::vector<Sighting>& s, VisibilityEvidence& e) {
@@ -74,7 +87,9 @@ void tallySightings(const std::vector<Sighting>& s, VisibilityEvidence& e) {
 
 VisibilityEvidence freeSpaceEvidence(const PointCloud& observer,
                                      const std::optional<Eigen::Vector3d>& viewpoint,
-                                     const PointCloud& tested, const RigidTransform& to_observer,
+                                     const PointCloud& tested,
+                                     const std::optional<Eigen::Vector3d>& tested_viewpoint,
+                                     const RigidTransform& to_observer,
                                      const VisibilityParams& p) {
   const auto t0 = std::chrono::steady_clock::now();
   VisibilityEvidence e;
@@ -89,7 +104,7 @@ VisibilityEvidence freeSpaceEvidence(const PointCloud& observer,
   const StationRangeImages images(observer, viewpoint, p);
   e.available = true;
   e.stations = images.stations();
-  const auto idx = regularSample(tested.size(), static_cast<std::size_t>(p.max_test_points));
+  const auto idx = testedPoints(tested, tested_viewpoint, p);
   std::vector<Sighting> sightings(idx.size(), Sighting::NoEvidence);
   // Each point's sighting is independent and written to its own slot: thread-count invariant.
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, idx.size(), 512),
