@@ -6,6 +6,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <set>
 
 #include "quality/station_range_images.hpp"
 #include "quality/visibility_evidence.hpp"
@@ -60,6 +61,7 @@ std::vector<bool> seeThroughTriangles(const BimModel& m, const VisibilityParams&
 struct ScanRays {
   std::vector<Ray> rays;
   std::vector<double> ranges;  ///< sensor to measured point, m
+  std::size_t origins = 0;     ///< distinct sensor origins among the rays
 };
 
 /// Rays of a regular sample of the scan's points, moved into the model frame.
@@ -67,7 +69,12 @@ ScanRays sampleRays(const PointCloud& scan, const std::optional<Eigen::Vector3d>
                     const RigidTransform& to_model, const VisibilityParams& p) {
   ScanRays out;
   const bool origins = scan.hasSensorOrigins();
+  std::set<std::array<float, 3>> distinct;
   for (std::size_t i : regularSample(scan.size(), static_cast<std::size_t>(p.max_test_points))) {
+    if (origins) {
+      const Eigen::Vector3f& o = scan.sensor_origins[i];
+      distinct.insert({o.x(), o.y(), o.z()});
+    }
     const Eigen::Vector3d o = to_model.apply(
         origins ? Eigen::Vector3d(scan.offset + scan.sensor_origins[i].cast<double>()) : *viewpoint);
     const Eigen::Vector3d d = to_model.apply(scan.world(i)) - o;
@@ -76,6 +83,7 @@ ScanRays sampleRays(const PointCloud& scan, const std::optional<Eigen::Vector3d>
     out.rays.push_back({o, d / r});
     out.ranges.push_back(r);
   }
+  out.origins = origins ? distinct.size() : 1;
   return out;
 }
 
@@ -116,7 +124,7 @@ VisibilityEvidence modelRayEvidence(const PointCloud& scan,
   std::vector<RayHit> hits;
   caster.castAll(rays.rays, hits, 1e30, p.min_sensor_distance);
   e.available = true;
-  e.stations = scan.hasSensorOrigins() ? 0 : 1;
+  e.stations = rays.origins;
   std::vector<Sighting> sightings(rays.rays.size());
   for (std::size_t k = 0; k < sightings.size(); ++k)
     sightings[k] = classifyRay(rays.rays[k], rays.ranges[k], hits[k], caster, p);

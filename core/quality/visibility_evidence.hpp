@@ -62,11 +62,11 @@ struct VisibilityParams {
   int min_visible = 200;
   /// Contradiction ratio (contradicting / visible) above which the registration fails as
   /// "contradicted", [0, 1]. Measured (docs/VERDICT.md "Free space"): right pairs at most
-  /// 0.023 (acceptance indoor/outdoor; real room pair 0.011), wrong buildings that passed
-  /// every other test at least 0.126 (l-shaped indoor onto the house indoor); 0.08 is 3.5 times
-  /// the worst right pair and 1.6 times below the least wrong one.
+  /// 0.016 (house scans onto their own model; the real room pair 0.011), wrong buildings that
+  /// passed every other test at least 0.120 (l-shaped indoor onto the house indoor); 0.08 is 5
+  /// times the worst right pair and 1.5 times below the least wrong one.
   double fail_ratio = 0.08;
-  /// Contradiction ratio above which the result is flagged (check visually), [0, 1]: 1.7 times
+  /// Contradiction ratio above which the result is flagged (check visually), [0, 1]: 2.5 times
   /// the worst right pair measured.
   double warn_ratio = 0.04;
   static const ParamSchema<VisibilityParams>& schema();
@@ -77,7 +77,7 @@ struct VisibilityEvidence {
   bool available = false;
   std::string missing_reason;   ///< why not available ("the target has no sensor origins")
   std::string what;             ///< e.g. "source points in the target's free space"
-  std::size_t stations = 0;     ///< (pseudo-)stations of the observing side
+  std::size_t stations = 0;     ///< (pseudo-)stations of the observer; model: the scan's origins
   std::size_t tested = 0;       ///< points (or rays) tested
   std::size_t visible = 0;      ///< consistent + contradicting: the observer could see them
   std::size_t consistent = 0;   ///< on a surface the observer measured (within the margin)

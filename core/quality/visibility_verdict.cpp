@@ -31,7 +31,8 @@ std::string describeContradiction(const VisibilitySummary& s, const VisibilityEv
   o << percent(e.contradiction_ratio);
   if (s.model_target)
     o << " of the scan's rays that meet the model cross a wall, slab or roof of it more than "
-      << p.min_margin << " m before their measured point";
+         "the margin (" << p.min_margin << " m + " << 100.0 * p.range_margin
+      << "% of the range, more at grazing incidence) before their measured point";
   else if (&e == &s.source_in_target)
     o << " of the source points the target's scanners could see lie in space those scanners "
          "saw through";

@@ -4,7 +4,8 @@
 // scan, indoor scan or model) with the free-space rule switched off (fail and warn ratios 1),
 // and prints the contradiction ratios, expected overlap and times of every pair that the
 // pipeline reported as a success, then min / median / max per group.
-//   bench_visibility [--right] [--wrong] [--real] [--poses N] [--timing]
+//   bench_visibility [--right] [--wrong] [--real] [--presets] [--poses N] [--timing]
+//   bench_visibility --truth   (each preset's TLS against its own MMS at the truth)
 // With no group flag every group runs. --timing: evidence on 300k + 300k points (both
 // directions, house indoor TLS vs its MMS loop at the truth), time and table memory.
 #include <Eigen/Geometry>
@@ -38,6 +39,7 @@ struct Row {
   std::string status;
   VisibilitySummary v;
   double overlap = 0.0;
+  RigidTransform transform;
 };
 
 std::vector<Row> rows;
@@ -86,6 +88,7 @@ Row run(const std::string& group, const std::string& name, const RegistrationSid
   row.status = r.report.status;
   row.v = r.report.visibility;
   row.overlap = r.report.overlap_ratio;
+  row.transform = r.transform();
   return row;
 }
 
@@ -178,6 +181,42 @@ void wrongPairs() {
   record(run("wrong", "house TLS -> l-shaped MMS", cloudSide(house_tls), cloudSide(lshaped_mms)));
 }
 
+/// Other buildings' right pairs (their TLS onto their own MMS loop and model, moved by a
+/// pose) and wrong pairs between them.
+void presetPairs() {
+  const RigidTransform pose = test::randomPoses(1, 23).front();
+  const BimModel duplex = readModel(test::sharedData("ifc/duplex.ifc"));
+  std::map<std::string, PointCloud> mms;
+  for (const std::string preset : {"l-shaped", "office-floor", "u-shaped"}) {
+    PointCloud tls = test::presetIndoorScans(preset, 600);
+    mms[preset] = test::presetOutdoorScan(preset, 13);
+    const BimModel model = generateBuilding(buildingPreset(preset)).model;
+    const Eigen::Vector3d centre = pose.apply(tls.bounds().center());
+    PointCloud moved = tls;
+    moved.transform(pose);
+    RegistrationSide s, t, m;
+    s.cloud = &moved;
+    t.cloud = &mms[preset];
+    m.model = &model;
+    for (const RegistrationSide* target : {&t, &m}) {
+      Row row = run("right", preset + (target == &t ? " TLS -> own MMS" : " TLS -> own model"), s,
+                    *target);
+      row.correct = !row.success || test::withinTolerance(test::poseError(
+                                        row.transform, pose.inverse(), centre));
+      record(row);
+    }
+    RegistrationSide d;
+    d.model = &duplex;
+    record(run("wrong", preset + " TLS -> duplex.ifc", s, d));
+    for (const auto& [other, cloud] : mms) {
+      if (other == preset) continue;
+      RegistrationSide o;
+      o.cloud = &cloud;
+      record(run("wrong", preset + " TLS -> " + other + " MMS", s, o));
+    }
+  }
+}
+
 void summary() {
   std::map<std::string, std::vector<double>> used, st, ts, ex;
   for (const Row& r : rows) {
@@ -237,6 +276,22 @@ void timing() {
             << " MB\n";
 }
 
+/// Each preset's TLS survey against its own MMS loop at the truth (no registration): the
+/// floor of the contradiction ratio for right indoor/outdoor pairs.
+void truthPairs() {
+  const VisibilityParams p;
+  for (const std::string preset : {"house", "l-shaped", "office-floor", "u-shaped"}) {
+    const PointCloud tls = test::presetIndoorScans(preset, 300);
+    const PointCloud mms = test::presetOutdoorScan(preset, 11);
+    const auto a = freeSpaceEvidence(mms, std::nullopt, tls, std::nullopt, RigidTransform(), p);
+    const auto b = freeSpaceEvidence(tls, std::nullopt, mms, std::nullopt, RigidTransform(), p);
+    std::cout << "truth  " << std::left << std::setw(14) << preset << std::right
+              << " TLS in MMS free space " << fig(a.contradiction_ratio) << " (vis " << a.visible
+              << ", " << a.stations << " stations, " << a.seconds << " s)  MMS in TLS "
+              << fig(b.contradiction_ratio) << " (vis " << b.visible << ")\n";
+  }
+}
+
 /// Where the contradicting points of `tested` lie in `observer`'s free space (diagnosis).
 void dumpContradictions(const PointCloud& observer, const std::optional<Eigen::Vector3d>& vp,
                         const PointCloud& tested, const RigidTransform& t) {
@@ -257,13 +312,18 @@ void dumpContradictions(const PointCloud& observer, const std::optional<Eigen::V
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool right = false, wrong = false, real = false, time = false;
+  bool right = false, wrong = false, real = false, time = false, presets = false;
   int poses = 3;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--right")) right = true;
     else if (!std::strcmp(argv[i], "--wrong")) wrong = true;
     else if (!std::strcmp(argv[i], "--real")) real = true;
     else if (!std::strcmp(argv[i], "--timing")) time = true;
+    else if (!std::strcmp(argv[i], "--presets")) presets = true;
+    else if (!std::strcmp(argv[i], "--truth")) {
+      truthPairs();
+      return 0;
+    }
     else if (!std::strcmp(argv[i], "--poses") && i + 1 < argc) poses = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--dump")) {
       const PointCloud tls = test::presetIndoorScans("house", 300);
@@ -282,9 +342,10 @@ int main(int argc, char** argv) {
   }
   if (time) {
     timing();
-    if (!right && !wrong && !real) return 0;
+    if (!right && !wrong && !real && !presets) return 0;
   }
-  if (!right && !wrong && !real) right = wrong = real = true;
+  if (!right && !wrong && !real && !presets) right = wrong = real = presets = true;
+  if (presets) presetPairs();
   if (real) realPairs();
   if (wrong) wrongPairs();
   if (right) rightScenarios(poses);
