@@ -75,8 +75,9 @@ ScanRays sampleRays(const PointCloud& scan, const std::optional<Eigen::Vector3d>
       const Eigen::Vector3f& o = scan.sensor_origins[i];
       distinct.insert({o.x(), o.y(), o.z()});
     }
-    const Eigen::Vector3d o = to_model.apply(
-        origins ? Eigen::Vector3d(scan.offset + scan.sensor_origins[i].cast<double>()) : *viewpoint);
+    const Eigen::Vector3d sensor =
+        origins ? Eigen::Vector3d(scan.offset + scan.sensor_origins[i].cast<double>()) : *viewpoint;
+    const Eigen::Vector3d o = to_model.apply(sensor);
     const Eigen::Vector3d d = to_model.apply(scan.world(i)) - o;
     const double r = d.norm();
     if (!(r >= p.min_sensor_distance) || !std::isfinite(r)) continue;

@@ -62,7 +62,8 @@ std::vector<std::size_t> testedPoints(const PointCloud& c, const std::optional<E
   const bool origins = c.hasSensorOrigins();
   if (!origins && !vp) return idx;
   std::erase_if(idx, [&](std::size_t i) {
-    const Eigen::Vector3d o = origins ? Eigen::Vector3d(c.offset + c.sensor_origins[i].cast<double>()) : *vp;
+    const Eigen::Vector3d o =
+        origins ? Eigen::Vector3d(c.offset + c.sensor_origins[i].cast<double>()) : *vp;
     return (c.world(i) - o).norm() < p.min_sensor_distance;
   });
   return idx;
@@ -120,7 +121,8 @@ VisibilityEvidence freeSpaceEvidence(const PointCloud& observer,
 void summarizeVisibility(VisibilitySummary& s, const VisibilityParams& p) {
   s.contradiction_ratio = -1.0;
   for (const VisibilityEvidence* e : {&s.source_in_target, &s.target_in_source})
-    if (e->conclusive(p)) s.contradiction_ratio = std::max(s.contradiction_ratio, e->contradiction_ratio);
+    if (e->conclusive(p))
+      s.contradiction_ratio = std::max(s.contradiction_ratio, e->contradiction_ratio);
   s.expected_overlap = s.source_in_target.available ? s.source_in_target.expected_overlap : -1.0;
 }
 

@@ -49,7 +49,8 @@ std::string evidenceSentence(const VisibilitySummary& s, const QualityReport& q)
   if (!s.computed) return "";
   if (!s.conclusive()) {
     const auto& e = s.source_in_target;
-    o << " No free-space evidence (" << (e.available ? "too few points visible to the other side's scanners" : e.missing_reason)
+    o << " No free-space evidence ("
+      << (e.available ? "too few points visible to the other side's scanners" : e.missing_reason)
       << "): this verdict rests on features and point residuals only, which cannot tell a wrong "
          "building from the right one.";
     return o.str();

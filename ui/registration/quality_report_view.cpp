@@ -51,7 +51,8 @@ void QualityReportView::addVisibilityRows(const VisibilitySummary& v) {
     if (!e->available)
       addRow(name, tr("no evidence (%1)").arg(QString::fromStdString(e->missing_reason)));
     else
-      addRow(name, tr("%1 contradicting of %2 visible").arg(pct(e->contradiction_ratio)).arg(e->visible));
+      addRow(name,
+             tr("%1 contradicting of %2 visible").arg(pct(e->contradiction_ratio)).arg(e->visible));
   }
   if (v.expected_overlap >= 0) addRow(tr("Expected overlap (visibility)"), pct(v.expected_overlap));
 }

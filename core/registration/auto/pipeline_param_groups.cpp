@@ -18,9 +18,11 @@ bool paramGroupUsedBy(const std::string& key, RegistrationMethod method) {
     case RegistrationMethod::Planes:
       return in({"plane-extraction", "planes", "refinement", "quality", "visibility"});
     case RegistrationMethod::Openings:
-      return in({"plane-extraction", "opening-detection", "openings", "refinement", "quality", "visibility"});
+      return in({"plane-extraction", "opening-detection", "openings", "refinement", "quality",
+                 "visibility"});
     case RegistrationMethod::Segments:
-      return in({"segment-detection", "mesh-edges", "segments", "refinement", "quality", "visibility"});
+      return in({"segment-detection", "mesh-edges", "segments", "refinement", "quality",
+                 "visibility"});
     case RegistrationMethod::Icp: return in({"refinement", "quality", "visibility"});
   }
   return true;
