@@ -7,6 +7,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "quality/visibility_verdict.hpp"
+
 namespace plumb {
 
 const ParamSchema<QualityParams>& QualityParams::schema() {
@@ -244,6 +246,7 @@ std::string qualityReportToJson(const QualityReport& q) {
   for (const auto& [k, v] : q.figures) fig[k] = v;
   j["figures"] = fig;
   j["warnings"] = q.warnings;
+  addVisibilityJson(j, q.visibility);
   return j.dump(2) + "\n";
 }
 
@@ -258,6 +261,7 @@ std::string qualityReportToText(const QualityReport& q) {
     o << "points: RMS " << q.point_rms << " m, overlap " << q.overlap_ratio << "\n";
   if (q.has_runner_up)
     o << "runner-up score " << q.runner_up_score << " (gap " << 100 * q.relative_gap << "%)\n";
+  o << visibilityToText(q.visibility);
   for (const auto& w : q.warnings) o << "warning: " << w << "\n";
   return o.str();
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/params.hpp"
+#include "quality/visibility_evidence.hpp"
 #include "registration/common/registration_result.hpp"
 #include "registration/refine/icp_refinement.hpp"
 
@@ -73,6 +74,8 @@ struct QualityReport {
   std::vector<WeakDirection> weak_directions;
   std::vector<std::pair<std::string, double>> figures;
   std::vector<std::string> warnings;
+  /// Free-space evidence of the final transform (visibility_verdict.hpp applies it).
+  VisibilitySummary visibility;
 };
 
 /// Builds the report. `refine` may be null (refinement off).

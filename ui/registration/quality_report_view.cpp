@@ -42,6 +42,21 @@ void QualityReportView::addRow(const QString& name, const QString& value) {
   table_->setItem(r, 1, new QTableWidgetItem(value));
 }
 
+void QualityReportView::addVisibilityRows(const VisibilitySummary& v) {
+  if (!v.computed) return;
+  auto pct = [](double r) { return QString::number(r * 100.0, 'f', 1) + " %"; };
+  for (const VisibilityEvidence* e : {&v.source_in_target, &v.target_in_source}) {
+    if (e->what.empty()) continue;
+    const QString name = tr("Free space: %1").arg(QString::fromStdString(e->what));
+    if (!e->available)
+      addRow(name, tr("no evidence (%1)").arg(QString::fromStdString(e->missing_reason)));
+    else
+      addRow(name,
+             tr("%1 contradicting of %2 visible").arg(pct(e->contradiction_ratio)).arg(e->visible));
+  }
+  if (v.expected_overlap >= 0) addRow(tr("Expected overlap (visibility)"), pct(v.expected_overlap));
+}
+
 void QualityReportView::showResult(const PipelineResult& result) {
   const QualityReport& q = result.report;
   const char* color = !q.success ? "#d04040" : q.warnings.empty() ? "#3a9a3a" : "#c08a10";
@@ -66,6 +81,7 @@ void QualityReportView::showResult(const PipelineResult& result) {
     addRow(tr("Overlap"), QString::number(q.overlap_ratio * 100.0, 'f', 1) + " %");
     addRow(tr("Refinement shift (m)"), num(q.refinement_shift));
   }
+  addVisibilityRows(q.visibility);
   if (q.has_runner_up) addRow(tr("Runner-up gap"), QString::number(q.relative_gap * 100.0, 'f', 1) + " %");
   for (const auto& w : q.weak_directions) addRow(tr("Weak"), QString::fromStdString(w.description));
   for (const auto& [name, value] : q.figures) addRow(QString::fromStdString(name), num(value, 3));

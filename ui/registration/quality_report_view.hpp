@@ -1,6 +1,7 @@
 #pragma once
 // The quality report of the last registration: the verdict (coloured by success) above a
-// table of its figures (method, RMS, overlap, features, runner-up gap, weak directions...).
+// table of its figures (method, RMS, overlap, features, free space, runner-up gap, weak
+// directions...).
 #include <QWidget>
 
 class QLabel;
@@ -8,6 +9,7 @@ class QTableWidget;
 
 namespace plumb {
 struct PipelineResult;
+struct VisibilitySummary;
 }
 
 namespace plumb::ui {
@@ -24,6 +26,9 @@ class QualityReportView : public QWidget {
 
  private:
   void addRow(const QString& name, const QString& value);
+  /// Free-space evidence: each direction's contradiction ratio (or why there is none) and
+  /// the expected overlap.
+  void addVisibilityRows(const VisibilitySummary& visibility);
   QLabel* verdict_;
   QTableWidget* table_;
 };

@@ -16,12 +16,14 @@ bool paramGroupUsedBy(const std::string& key, RegistrationMethod method) {
   switch (method) {
     case RegistrationMethod::Auto: return true;
     case RegistrationMethod::Planes:
-      return in({"plane-extraction", "planes", "refinement", "quality"});
+      return in({"plane-extraction", "planes", "refinement", "quality", "visibility"});
     case RegistrationMethod::Openings:
-      return in({"plane-extraction", "opening-detection", "openings", "refinement", "quality"});
+      return in({"plane-extraction", "opening-detection", "openings", "refinement", "quality",
+                 "visibility"});
     case RegistrationMethod::Segments:
-      return in({"segment-detection", "mesh-edges", "segments", "refinement", "quality"});
-    case RegistrationMethod::Icp: return in({"refinement", "quality"});
+      return in({"segment-detection", "mesh-edges", "segments", "refinement", "quality",
+                 "visibility"});
+    case RegistrationMethod::Icp: return in({"refinement", "quality", "visibility"});
   }
   return true;
 }

@@ -23,6 +23,7 @@ void forEachParamGroup(P& p, F&& f) {
   f("segments", "Segments registration", SegmentRegistrationParams::schema(), p.segments);
   f("refinement", "Refinement (ICP)", RefineParams::schema(), p.refinement);
   f("quality", "Quality checks", QualityParams::schema(), p.quality);
+  f("visibility", "Free-space check", VisibilityParams::schema(), p.visibility);
 }
 
 /// Whether the group `key` takes part in a registration with `method` (auto: all).

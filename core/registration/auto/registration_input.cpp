@@ -1,6 +1,7 @@
 #include "registration/auto/registration_input.hpp"
 
 #include <algorithm>
+#include <sstream>
 
 #include "common/error.hpp"
 
@@ -24,6 +25,27 @@ bool isStaticStation(const Scan& s) {
   return s.has_pose && !s.cloud.hasSensorOrigins() && !s.cloud.hasTimestamps();
 }
 
+/// A PCD file's VIEWPOINT (the acquisition viewpoint, in the cloud's own frame: PCL does not
+/// apply it to the points) is a sensor origin when it lies within the cloud's bounds grown by
+/// 1 m: a scanner sits among what it scanned. A merged map keeps PCL's default 0 0 0 far
+/// from its points and gets none (its free space is unknown, not empty).
+std::optional<Eigen::Vector3d> pcdViewpoint(const Dataset& d) {
+  if (d.format != "pcd" || d.scans.size() != 1) return std::nullopt;
+  for (const auto& [key, value] : d.metadata) {
+    if (key != "viewpoint") continue;
+    std::istringstream in(value);
+    Eigen::Vector3d v;
+    if (!(in >> v.x() >> v.y() >> v.z())) return std::nullopt;
+    Bounds b = d.bounds();
+    b.min.array() -= 1.0;
+    b.max.array() += 1.0;
+    if (b.empty() || (v.array() < b.min.array()).any() || (v.array() > b.max.array()).any())
+      return std::nullopt;
+    return v;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 RegistrationInput makeRegistrationInput(const Dataset& d, const RigidTransform& to_world) {
@@ -39,6 +61,8 @@ RegistrationInput makeRegistrationInput(const Dataset& d, const RigidTransform& 
   if (!to_world.isIdentity()) in.cloud.transform(to_world);
   if (d.scans.size() == 1 && isStaticStation(d.scans[0]))
     in.viewpoint = to_world.apply(d.scans[0].pose.translation());
+  else if (const auto v = pcdViewpoint(d))
+    in.viewpoint = to_world.apply(*v);
   return in;
 }
 

@@ -22,7 +22,8 @@ struct RegistrationInput {
 /// Merged scans (non-finite points removed), moved by `to_world`, with per-point sensor
 /// origins when every scan has them (an MMS trajectory) or is a static station (a pose and no
 /// per-point times: its origin is the pose translation); the openings need them. A single
-/// static scan also gives its scanner position as the viewpoint (plane normals face it).
+/// static scan also gives its scanner position as the viewpoint (plane normals face it), and
+/// so does a PCD file's VIEWPOINT when it lies among the points (the free-space check uses it).
 /// Throws FileError when the dataset has no points.
 RegistrationInput makeRegistrationInput(const Dataset& data, const RigidTransform& to_world);
 /// Throws FileError when the model has no triangles.

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "registration/auto/visibility_check.hpp"
 
 namespace plumb {
 
@@ -277,6 +278,7 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
   }
   out.seconds_refine = since(t0);
   out.report = assessRegistration(out.global, out.refinement ? &*out.refinement : nullptr, p.quality);
+  addVisibilityEvidence(source, target, p.visibility, out.report);
   out.report.figures.push_back({"seconds features", out.seconds_features});
   out.report.figures.push_back({"seconds global", out.seconds_global});
   out.report.figures.push_back({"seconds refinement", out.seconds_refine});

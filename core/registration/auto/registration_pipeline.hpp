@@ -23,6 +23,7 @@
 #include "model/feature_set.hpp"
 #include "model/point_cloud.hpp"
 #include "quality/quality_report.hpp"
+#include "quality/visibility_evidence.hpp"
 #include "registration/openings/opening_registration.hpp"
 #include "registration/planes/plane_registration.hpp"
 #include "registration/refine/icp_refinement.hpp"
@@ -61,6 +62,8 @@ struct PipelineParams {
   SegmentRegistrationParams segments;
   RefineParams refinement;
   QualityParams quality;
+  /// Free-space (visibility) check of the final transform (registration/auto/visibility_check).
+  VisibilityParams visibility;
   /// Spacing of the points sampled on a model for refinement, metres, [0.005, 1].
   double model_sample_spacing = 0.05;
   /// When the global step is Ambiguous (two clearly different hypotheses with almost the same

@@ -68,6 +68,21 @@ Eigen::Vector3d doorwayStation(const GeneratedBuilding& b, const Eigen::Vector3d
 
 }  // namespace
 
+PointCloud presetIndoorScans(const std::string& preset, std::uint64_t seed) {
+  const GeneratedBuilding b = generateBuilding(buildingPreset(preset));
+  const ScanScene scene(b.model, b.glass_triangles);
+  return scanStations(scene, roomCentres(b.spec, 0), 3.0, seed);
+}
+
+PointCloud presetOutdoorScan(const std::string& preset, std::uint64_t seed) {
+  const GeneratedBuilding b = generateBuilding(buildingPreset(preset));
+  const ScanScene scene(b.model, b.glass_triangles);
+  MmsParams mp;  // profiler noise stays the MMS's own (10 mm)
+  Scan mms = simulateMms(scene, streetTrajectory(b.truth.footprint, mp), mp, seed);
+  mms.cloud.removeNonFinite();
+  return std::move(mms.cloud);
+}
+
 std::vector<std::string> scenarioNames() {
   return {"indoor-indoor", "indoor-outdoor", "bim-generated", "bim-duplex"};
 }
@@ -156,6 +171,9 @@ CaseOutcome runPlumbCase(const Scenario& s, const RigidTransform& pose,
   o.reported_success = r.success();
   o.method = r.method_used;
   o.verdict = r.report.verdict;
+  o.status = r.report.status;
+  o.visibility = r.report.visibility;
+  o.overlap = r.report.overlap_ratio;
   o.seconds_features = r.seconds_features;
   o.seconds_global = r.seconds_global;
   o.seconds_refine = r.seconds_refine;

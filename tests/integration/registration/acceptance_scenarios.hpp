@@ -42,6 +42,12 @@ std::vector<std::string> scenarioNames();
 Scenario makeScenario(const std::string& name, const PipelineParams& params,
                       double noise_mm = 3.0);
 
+/// A preset's indoor survey: a TLS station at every ground-floor room centre (merged, sensor
+/// origins), 3 mm noise, 0.5 deg steps.
+PointCloud presetIndoorScans(const std::string& preset, std::uint64_t seed);
+/// A preset's outdoor survey: the MMS street loop (per-point sensor origins).
+PointCloud presetOutdoorScan(const std::string& preset, std::uint64_t seed);
+
 /// n random poses: yaw uniform in [-180, 180] deg, horizontal shift uniform in a disc of
 /// radius `max_shift` m, vertical shift uniform in [-1, 1] m. Deterministic for a seed.
 std::vector<RigidTransform> randomPoses(int n, std::uint64_t seed, double max_shift = 20.0);
@@ -69,6 +75,9 @@ struct CaseOutcome {
   bool confidentWrong() const { return reported_success && !withinTolerance(error); }
   std::string method;
   std::string verdict;
+  std::string status;
+  VisibilitySummary visibility;  ///< free-space evidence (QualityReport::visibility)
+  double overlap = 0.0;          ///< refined overlap ratio
   /// Smallest slide resistance of the six directions (QualityReport::direction_resistance);
   /// the degeneracy evidence: NaN when refinement did not run.
   double min_resistance = std::numeric_limits<double>::quiet_NaN();

@@ -24,7 +24,7 @@ TEST(PipelineParamsJson, RoundTripsEveryGroup) {
     }
     ++groups;
   });
-  EXPECT_EQ(groups, 9);
+  EXPECT_EQ(groups, 10);
   PipelineParams q;
   pipelineParamsFromJson(j, q);
   EXPECT_EQ(q.method, RegistrationMethod::Segments);

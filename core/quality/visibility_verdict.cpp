@@ -1,0 +1,151 @@
+#include "quality/visibility_verdict.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <iomanip>
+#include <sstream>
+
+namespace plumb {
+
+namespace {
+
+std::string percent(double ratio) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(1) << 100.0 * ratio << "%";
+  return o.str();
+}
+
+/// The direction whose contradiction ratio the verdict uses.
+const VisibilityEvidence& worstDirection(const VisibilitySummary& s, const VisibilityParams& p) {
+  const auto& a = s.source_in_target;
+  const auto& b = s.target_in_source;
+  if (!b.conclusive(p)) return a;
+  if (!a.conclusive(p)) return b;
+  return b.contradiction_ratio > a.contradiction_ratio ? b : a;
+}
+
+/// "N% of the ... lie in space ... saw through (c of v visible points)".
+std::string describeContradiction(const VisibilitySummary& s, const VisibilityEvidence& e,
+                                  const VisibilityParams& p) {
+  std::ostringstream o;
+  o << percent(e.contradiction_ratio);
+  if (s.model_target)
+    o << " of the scan's rays that meet the model cross a wall, slab or roof of it more than "
+         "the margin (" << p.min_margin << " m + " << 100.0 * p.range_margin
+      << "% of the range, more at grazing incidence) before their measured point";
+  else if (&e == &s.source_in_target)
+    o << " of the source points the target's scanners could see lie in space those scanners "
+         "saw through";
+  else
+    o << " of the target points the source's scanners could see lie in space those scanners "
+         "saw through";
+  o << " (" << e.contradicting << " of " << e.visible << ")";
+  return o.str();
+}
+
+/// The sentence naming the evidence the verdict rests on.
+std::string evidenceSentence(const VisibilitySummary& s, const QualityReport& q) {
+  std::ostringstream o;
+  if (!s.computed) return "";
+  if (!s.conclusive()) {
+    const auto& e = s.source_in_target;
+    o << " No free-space evidence ("
+      << (e.available ? "too few points visible to the other side's scanners" : e.missing_reason)
+      << "): this verdict rests on features and point residuals only, which cannot tell a wrong "
+         "building from the right one.";
+    return o.str();
+  }
+  o << " Free space agrees: " << percent(s.contradiction_ratio)
+    << " of the visible points contradict the other side's free space";
+  if (s.expected_overlap >= 0)
+    o << "; visibility predicts " << percent(s.expected_overlap) << " of the source visible to "
+      << (s.model_target ? "the model" : "the target's scanners");
+  if (q.refined) o << " (refinement matched " << percent(q.overlap_ratio) << ")";
+  o << ".";
+  return o.str();
+}
+
+/// A success verdict that claimed no warnings now has one: say so instead.
+void markCaution(QualityReport& q) {
+  const std::string clean =
+      "All six degrees of freedom are well constrained and no competing solution came close: "
+      "the result can be used.";
+  const auto at = q.verdict.find(clean);
+  if (at != std::string::npos)
+    q.verdict.replace(at, clean.size(),
+                      "Usable with caution: " + std::to_string(q.warnings.size()) +
+                          " warning(s) below; verify before relying on it.");
+}
+
+}  // namespace
+
+void applyVisibilityEvidence(QualityReport& q, const VisibilityParams& p) {
+  VisibilitySummary& s = q.visibility;
+  if (!q.success || !s.computed) return;
+  if (s.conclusive() && s.contradiction_ratio > p.fail_ratio) {
+    const auto& e = worstDirection(s, p);
+    q.success = false;
+    q.status = "contradicted";
+    q.verdict = "Registration FAILED (contradicted): " + describeContradiction(s, e, p) +
+                ", above the failure level of " + percent(p.fail_ratio) +
+                ": the scanners would have seen through the other data. This is another "
+                "building or a wrong placement, however well the surfaces match (point RMS " +
+                std::to_string(static_cast<int>(std::lround(1000.0 * q.point_rms))) +
+                " mm). No transform is given; check that the two datasets show the same place.";
+    return;
+  }
+  if (s.conclusive() && s.contradiction_ratio > p.warn_ratio) {
+    q.warnings.push_back("free space: " + describeContradiction(s, worstDirection(s, p), p) +
+                         ", above the warning level of " + percent(p.warn_ratio) +
+                         ": moving objects, glass, changes, or a partly wrong placement; check "
+                         "visually");
+    markCaution(q);
+  }
+  q.verdict += evidenceSentence(s, q);
+}
+
+void addVisibilityJson(nlohmann::json& j, const VisibilitySummary& s) {
+  auto one = [](const VisibilityEvidence& e) {
+    return nlohmann::json{{"available", e.available},
+                          {"missing_reason", e.missing_reason},
+                          {"what", e.what},
+                          {"stations", e.stations},
+                          {"tested", e.tested},
+                          {"visible", e.visible},
+                          {"consistent", e.consistent},
+                          {"contradicting", e.contradicting},
+                          {"contradiction_ratio", e.contradiction_ratio},
+                          {"agreement_ratio", e.agreement_ratio},
+                          {"expected_overlap", e.expected_overlap},
+                          {"seconds", e.seconds}};
+  };
+  j["visibility"] = {{"computed", s.computed},
+                     {"model_target", s.model_target},
+                     {"contradiction_ratio", s.conclusive() ? nlohmann::json(s.contradiction_ratio)
+                                                            : nlohmann::json(nullptr)},
+                     {"expected_overlap", s.expected_overlap >= 0
+                                              ? nlohmann::json(s.expected_overlap)
+                                              : nlohmann::json(nullptr)},
+                     {"source_in_target", one(s.source_in_target)},
+                     {"target_in_source", one(s.target_in_source)}};
+}
+
+std::string visibilityToText(const VisibilitySummary& s) {
+  if (!s.computed) return "";
+  std::ostringstream o;
+  for (const VisibilityEvidence* e : {&s.source_in_target, &s.target_in_source}) {
+    if (e->what.empty()) continue;
+    o << "free space, " << e->what << ": ";
+    if (!e->available) {
+      o << "no evidence (" << e->missing_reason << ")\n";
+      continue;
+    }
+    o << e->contradicting << " contradicting, " << e->consistent << " consistent of "
+      << e->tested << " tested (" << percent(e->contradiction_ratio) << " of the visible; "
+      << "expected overlap " << percent(e->expected_overlap) << ", " << e->stations
+      << " stations, " << std::setprecision(3) << e->seconds << " s)\n";
+  }
+  return o.str();
+}
+
+}  // namespace plumb
