@@ -16,11 +16,11 @@ bool paramGroupUsedBy(const std::string& key, RegistrationMethod method) {
   switch (method) {
     case RegistrationMethod::Auto: return true;
     case RegistrationMethod::Planes:
-      return in({"plane-extraction", "planes", "refinement", "quality"});
+      return in({"plane-extraction", "planes", "refinement", "candidates", "quality"});
     case RegistrationMethod::Openings:
-      return in({"plane-extraction", "opening-detection", "openings", "refinement", "quality"});
+      return in({"plane-extraction", "opening-detection", "openings", "refinement", "candidates", "quality"});
     case RegistrationMethod::Segments:
-      return in({"segment-detection", "mesh-edges", "segments", "refinement", "quality"});
+      return in({"segment-detection", "mesh-edges", "segments", "refinement", "candidates", "quality"});
     case RegistrationMethod::Icp: return in({"refinement", "quality"});
   }
   return true;

@@ -126,18 +126,22 @@ double slideCost(const SlideData& s, const Eigen::Matrix3d& R, const Eigen::Vect
          double(s.src.size());
 }
 
+/// Gate of the slide test's neighbour search, m.
+double slideGate(double final_distance) {
+  return std::max(final_distance, 0.15) + RefineResult::kSlideDistance;
+}
+
 /// RefineResult::direction_resistance: each eigen-direction of res.normal_matrix slid both ways
 /// by kSlideDistance (rotations scaled by res.length_scale); the smaller rise of slideCost over
-/// the overlap ratio.
+/// res.fit_cost (the cost unmoved), over the overlap ratio.
 std::array<double, 6> slideResistance(const SlideData& s, const Eigen::Matrix3d& R,
                                       const Eigen::Vector3d& t, const Eigen::Vector3d& centre,
                                       const RefineResult& res, double final_distance) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(res.normal_matrix);
-  const double gate = std::max(final_distance, 0.15) + RefineResult::kSlideDistance;
   auto cost = [&](const Eigen::Matrix3d& dR, const Eigen::Vector3d& dt) {
-    return slideCost(s, R, t, centre, dR, dt, final_distance, gate);
+    return slideCost(s, R, t, centre, dR, dt, final_distance, slideGate(final_distance));
   };
-  const double base = cost(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
+  const double base = res.fit_cost;
   std::array<double, 6> out{};
   for (int k = 0; k < 6; ++k) {
     double least = std::numeric_limits<double>::infinity();
@@ -356,6 +360,8 @@ RefineResult refineRegistration(const PointCloud& source, const PointCloud& targ
     }
   }
   res.centre = centre + origin;
+  res.fit_cost = slideCost({*src, *tgt, tree, normals}, R, t, centre, Eigen::Matrix3d::Identity(),
+                           Eigen::Vector3d::Zero(), p.final_distance, slideGate(p.final_distance));
   if (!c.empty())
     res.direction_resistance =
         slideResistance({*src, *tgt, tree, normals}, R, t, centre, res, p.final_distance);

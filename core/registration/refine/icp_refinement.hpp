@@ -49,6 +49,11 @@ struct RefineResult {
   /// max(final_distance, 0.15 m) and point-to-plane residual below final_distance.
   double overlap = 0.0;
   std::size_t inliers = 0;
+  /// Mean capped point-to-plane cost of the used source points at the result, min(r^2, d^2)
+  /// / d^2 with d the final distance (a point without a target neighbour costs 1): one figure
+  /// of the fit that counts both the unexplained points and the residuals of the explained
+  /// ones (0: every point exactly on the target). Compares refined candidate placements.
+  double fit_cost = 1.0;
   std::size_t source_points = 0;  ///< used (after thinning)
   std::size_t target_points = 0;
   /// Normal matrix sum J^T J of the final point-to-plane problem, J = [(p x n)/L, n], rotation

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <random>
 
@@ -156,6 +157,15 @@ CaseOutcome runPlumbCase(const Scenario& s, const RigidTransform& pose,
   o.reported_success = r.success();
   o.method = r.method_used;
   o.verdict = r.report.verdict;
+  o.level = verdictLevelName(r.report.level);
+  if (r.candidates.size() > 1) {
+    char line[200];
+    for (const auto& c : r.candidates) {
+      std::snprintf(line, sizeof line, "%s%s overlap %.4f RMS %.4f m cost %.4f", o.candidates.empty() ? "" : "; ",
+                    c.role.c_str(), c.overlap, c.point_rms, c.fit_cost);
+      o.candidates += line;
+    }
+  }
   o.seconds_features = r.seconds_features;
   o.seconds_global = r.seconds_global;
   o.seconds_refine = r.seconds_refine;

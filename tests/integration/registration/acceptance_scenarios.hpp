@@ -69,6 +69,9 @@ struct CaseOutcome {
   bool confidentWrong() const { return reported_success && !withinTolerance(error); }
   std::string method;
   std::string verdict;
+  std::string level;       ///< verdictLevelName of the report
+  /// The refined candidates (role, overlap, RMS, fit cost), one line; empty without runner-up.
+  std::string candidates;
   /// Smallest slide resistance of the six directions (QualityReport::direction_resistance);
   /// the degeneracy evidence: NaN when refinement did not run.
   double min_resistance = std::numeric_limits<double>::quiet_NaN();
