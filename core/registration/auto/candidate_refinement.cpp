@@ -18,11 +18,11 @@ const ParamSchema<CandidateParams>& CandidateParams::schema() {
                 "Displacement at the data centroid below which refined placements are one answer",
                 true)
           .real(&P::min_overlap_gap, "overlap-gap", "Clear overlap gap", "", 0.0, 1.0,
-                "A placement is clearly worse when its refined overlap is lower by this ...", true)
+                "A placement is clearly worse when its refined overlap is lower by this", true)
+          .real(&P::near_overlap_gap, "near-overlap-gap", "Near-whole overlap gap", "", 0.0, 1.0,
+                "Or lower by this ...", true)
           .real(&P::min_unexplained_ratio, "unexplained-ratio", "Clear unexplained ratio", "",
                 1.0, 100.0, "... and it leaves this many times more points unexplained", true)
-          .real(&P::min_explained_ratio, "explained-ratio", "Clear explained ratio", "", 1.0,
-                100.0, "... or the other explains this many times more points", true)
           .real(&P::min_cost_gap, "cost-gap", "Clear fit cost gap", "", 0.0, 1.0,
                 "Or: its refined fit cost is higher by this ...", true)
           .real(&P::min_cost_ratio, "cost-ratio", "Clear fit cost ratio", "", 1.0, 100.0,
@@ -46,9 +46,10 @@ bool lostOverlap(const RefineResult& r) { return r.inliers < 10; }
 /// `x` fits clearly worse than `y`: clearly fewer points explained, or a clearly higher cost.
 bool clearlyWorse(const RefineResult& x, const RefineResult& y, const CandidateParams& p) {
   if (lostOverlap(x) && !lostOverlap(y)) return true;
-  const bool overlap = y.overlap - x.overlap >= p.min_overlap_gap &&
-                       ((1.0 - x.overlap) >= p.min_unexplained_ratio * (1.0 - y.overlap) ||
-                        y.overlap >= p.min_explained_ratio * x.overlap);
+  const double gap = y.overlap - x.overlap;
+  const bool overlap = gap >= p.min_overlap_gap ||
+                       (gap >= p.near_overlap_gap &&
+                        (1.0 - x.overlap) >= p.min_unexplained_ratio * (1.0 - y.overlap));
   const bool cost = x.fit_cost - y.fit_cost >= p.min_cost_gap &&
                     x.fit_cost >= p.min_cost_ratio * y.fit_cost;
   return overlap || cost;

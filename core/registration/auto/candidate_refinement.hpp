@@ -34,16 +34,14 @@ struct CandidateParams {
   double same_rotation_deg = 0.2;
   /// ... and this displacement at the source data's centroid, m, [0.001, 1].
   double same_translation = 0.05;
-  /// A placement is clearly worse when its refined overlap is lower by at least this ratio,
-  /// [0, 1], ...
-  double min_overlap_gap = 0.005;
+  /// A placement is clearly worse when its refined overlap ratio is lower by at least this,
+  /// [0, 1] (that fraction of the source points fits one placement and not the other); or:
+  double min_overlap_gap = 0.008;
+  /// its overlap is lower by at least this, [0, 1], ...
+  double near_overlap_gap = 0.005;
   /// ... and it leaves at least this many times more source points unexplained (1 - overlap),
-  /// [1, 100] (data overlapping almost wholly: a scan onto itself, a room in a model) ...
+  /// [1, 100] (data overlapping almost wholly: a room in its model, a scan onto itself); or:
   double min_unexplained_ratio = 2.0;
-  /// ... or the other explains at least this many times more source points (overlap ratio),
-  /// [1, 100] (partial overlap: indoor onto outdoor, most points are unexplained either way);
-  /// or:
-  double min_explained_ratio = 1.15;
   /// its refined fit cost (RefineResult::fit_cost) is higher by at least this, [0, 1], ...
   double min_cost_gap = 0.02;
   /// ... and at least this many times the other's, [1, 100].

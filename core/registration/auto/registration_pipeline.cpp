@@ -201,17 +201,21 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
   rp.seed = p.seed;
   limitToWallThickness(out.global, rp, out.log);
   GlobalRegistrationResult& g = out.global;
+  const RefineTarget prepared(*tc, rp);  // once for every candidate
   std::vector<RefinedHypothesis> h;
   h.push_back({Hypothesis{g.transform, g.score, "global answer"},
-               refineRegistration(*sc, *tc, g.transform, rp, progress)});
+               refineRegistration(*sc, prepared, g.transform, rp, progress)});
   const bool compare = g.runner_up && p.candidates.refine_runner_up;
+  auto compared = rp;
+  compared.slide_test = false;  // only compared; measured below if it becomes the answer
   if (compare)
-    h.push_back({*g.runner_up, refineRegistration(*sc, *tc, g.runner_up->transform, rp, progress)});
+    h.push_back({*g.runner_up, refineRegistration(*sc, prepared, g.runner_up->transform, compared, progress)});
   const bool global_chose = g.ok();
   const CandidateSelection sel = selectCandidate(h, global_chose, sc->bounds().center(), p.candidates);
   out.candidates = sel.candidates;
   if (compare) out.log.push_back(sel.message);
   if (sel.chosen != 0) {
+    h[sel.chosen].refined = refineRegistration(*sc, prepared, h[sel.chosen].refined.transform, rp, progress);
     g.transform = h[sel.chosen].hypothesis.transform;
     g.score = h[sel.chosen].hypothesis.score;
     g.runner_up = h[0].hypothesis;

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 
 #include "common/params.hpp"
 #include "common/progress.hpp"
@@ -37,6 +38,11 @@ struct RefineParams {
   /// Fraction of correspondences kept (smallest residuals), (0, 1]. Trimmed ICP.
   double trim_fraction = 0.9;
   std::uint64_t seed = 1;  ///< deterministic (regular subsets); kept for interface uniformity
+  /// Measure RefineResult::direction_resistance (the slide test: 12 more passes over the
+  /// source points). Not a user setting (not in the schema: a report without it would find
+  /// every direction unconstrained): the pipeline turns it off for the runner-up candidates
+  /// it only compares.
+  bool slide_test = true;
   static const ParamSchema<RefineParams>& schema();
 };
 
@@ -78,6 +84,28 @@ struct RefineResult {
 
 /// Refines `initial` (source -> target). Throws InputError for empty clouds.
 RefineResult refineRegistration(const PointCloud& source, const PointCloud& target,
+                                const RigidTransform& initial, const RefineParams& params,
+                                Progress* progress = nullptr);
+
+/// A refinement target prepared once (voxel-thinned points in a local frame, kd-tree, normals)
+/// for refining several starting placements against it (the pipeline's candidates). Built
+/// with the RefineParams::voxel_size it is then refined with.
+class RefineTarget {
+ public:
+  /// Throws InputError for an empty cloud.
+  RefineTarget(const PointCloud& target, const RefineParams& params);
+  ~RefineTarget();
+  RefineTarget(const RefineTarget&) = delete;
+  RefineTarget& operator=(const RefineTarget&) = delete;
+  struct Data;  ///< PCL types, defined in icp_refinement.cpp
+  const Data& data() const { return *d_; }
+
+ private:
+  std::unique_ptr<Data> d_;
+};
+
+/// As above, against a prepared target (same result as with the cloud it was prepared from).
+RefineResult refineRegistration(const PointCloud& source, const RefineTarget& target,
                                 const RigidTransform& initial, const RefineParams& params,
                                 Progress* progress = nullptr);
 

@@ -9,6 +9,9 @@
 //   indoor-outdoor "house": TLS in every ground-floor room (merged, sensor origins) -> MMS loop.
 //   bim-generated  "house": TLS in every ground-floor room -> the generated model.
 //   bim-duplex     duplex.ifc read with plumb::readModel, TLS stations inside -> the model.
+// Not in scenarioNames() (symmetric placements, issue 13):
+//   bim-duplex-unit-a / -unit-b  one station in the living room of one of the duplex's two
+//                  mirrored dwellings -> the whole model (the room exists twice).
 #include <Eigen/Core>
 
 #include <memory>
