@@ -60,9 +60,16 @@ JSON
   if have_display && [[ -x "$BUILD/app/plumb" ]]; then
     exec "$BUILD/app/plumb" --project "$out/demo.plumb.json" --register 0,1
   fi
+  # Exit 0 usable, 3 check visually (results written, warnings on stderr), 2 failed.
+  local status=0
   "$BUILD/app/plumb-cli" register "$out/indoor.e57" "$out/outdoor.e57" \
     --transform "$out/indoor_to_outdoor.json" --report "$out/report.json" \
-    -o "$out/indoor_registered.e57"
+    -o "$out/indoor_registered.e57" || status=$?
+  if [[ $status -eq 3 ]]; then
+    echo "demo: the registration is written but asks for a visual check (exit 3)" >&2
+  elif [[ $status -ne 0 ]]; then
+    return "$status"
+  fi
 }
 
 run_tests() {

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "common/error.hpp"
+#include "registration/auto/registration_pipeline.hpp"
 
 #include "ui/layers/layer_transform.hpp"
 #include "ui/layers/scene.hpp"
@@ -106,6 +107,16 @@ void StartupRun::registerPair() {
   if (!panel.startRegistration()) finish(false);
 }
 
+int StartupRun::exitCode(bool ok) const {
+  const int plain = ok && window_.context().log.errorCount() == 0 ? 0 : 1;
+  const auto result = options_.register_pair ? window_.context().registration->lastResult() : nullptr;
+  if (!result) return plain;
+  // The registration ran: its verdict level decides (2 failed or ambiguous, 3 check visually),
+  // as for plumb-cli register; a usable one still exits 1 when something else went wrong.
+  const int level = verdictExitCode(result->report.level);
+  return level != 0 ? level : plain;
+}
+
 void StartupRun::finish(bool ok) {
   if (options_.screenshot.isEmpty()) {
     deleteLater();
@@ -127,7 +138,7 @@ void StartupRun::finish(bool ok) {
     applyStandardView(app.view.renderer(), StandardView::Iso);
     zoomToBounds(app.view.renderer(), rb);
   }
-  int code = ok && app.log.errorCount() == 0 ? 0 : 1;
+  int code = exitCode(ok);
   try {
     if (options_.whole_window) {
       grabView(app.view);  // renders the view first

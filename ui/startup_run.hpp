@@ -5,7 +5,9 @@
 //   plumb ... --register S,T           then register file S onto file T (0-based indices in
 //                                      the order given; for a project, its layer indices)
 //   plumb ... --screenshot OUT.png     then render the view into OUT.png and quit (tests,
-//                                      documentation); exit 1 on any error.
+//                                      documentation); exit 1 on any error; after --register
+//                                      the verdict level's code as plumb-cli register: 0
+//                                      usable, 3 check visually, 2 failed or ambiguous.
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -40,6 +42,7 @@ class StartupRun : public QObject {
   void loaded(bool ok);
   void registerPair();
   void finish(bool ok);
+  int exitCode(bool ok) const;
   MainWindow& window_;
   StartupOptions options_;
   std::vector<Layer*> layers_;  ///< per file index, in command-line order

@@ -11,11 +11,13 @@
 // that order; `--print-params` writes the resulting set as JSON to stdout and exits, so
 // `plumb-cli register --print-params > p.json` gives a file to edit.
 // The seed is taken from that one place (PipelineParams::seed) for every random step.
-// Exit codes: 0 success; 1 an input could not be read or the parameters are invalid (one-line
-// error naming the file); 2 registration failed (too few features, no hypothesis above
-// threshold, ambiguous, refinement lost the overlap): it explains why on stderr, writes the
-// report if asked (it says FAILED) and writes neither the transform nor the registered file,
-// so an existing output stays untouched. Every output (-o with its extension, --transform,
+// Exit codes follow the report's verdict level (core/quality/verdict_level.hpp): 0 usable,
+// the results are written; 3 check visually: the results are written and the warnings are
+// repeated on stderr; 2 failed or ambiguous (too few features, no hypothesis above threshold,
+// ambiguous, degenerate, refinement lost the overlap): it explains why on stderr, writes the
+// report if asked (it says FAILED and lists every candidate placement) and writes neither the
+// transform nor the registered file, so an existing output stays untouched. 1: an input could
+// not be read or the parameters are invalid (one-line error naming the file). Every output (-o with its extension, --transform,
 // --report) is checked once the inputs are read and before the registration runs: a bad one
 // is exit 1 with nothing written.
 #include <nlohmann/json.hpp>
@@ -155,12 +157,18 @@ int run(const RegisterOptions& o) {
   for (const auto& line : r.log) std::cerr << "  " << line << "\n";
   if (!o.report.empty())
     writeFileAtomically(o.report, [&](std::ostream& out) { out << qualityReportToJson(r.report); });
-  if (!r.success()) {
+  std::cout << qualityReportToText(r.report);
+  const int code = verdictExitCode(r.report.level);
+  if (r.report.level == VerdictLevel::Failed) {
     std::cerr << "plumb-cli: registration failed: " << r.report.verdict
               << (o.output.empty() && o.transform.empty() ? "" : " (no output written)") << "\n";
-    return 2;
+    return code;
   }
-  std::cout << qualityReportToText(r.report);
+  if (r.report.level == VerdictLevel::CheckVisually) {
+    std::cerr << "plumb-cli: check visually (exit " << code << "): the results are written, but";
+    for (const auto& w : r.report.warnings) std::cerr << "\n  warning: " << w;
+    std::cerr << "\n";
+  }
   const RigidTransform& T = r.transform();
   if (!o.transform.empty()) writeTransformFile(o.transform, T);
   if (!o.output.empty()) {
@@ -177,7 +185,7 @@ int run(const RegisterOptions& o) {
       writeModel(o.output, m);
     }
   }
-  return 0;
+  return code;
 }
 
 }  // namespace

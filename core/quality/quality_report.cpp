@@ -110,9 +110,27 @@ bool failOnFreeDirections(QualityReport& q, std::ostringstream& verdict) {
 }
 }  // namespace
 
+namespace {
+bool runnerUpRefined(const std::vector<PlacementCandidate>& c) {
+  return c.size() > 1 && c[1].refined;
+}
+}  // namespace
+
+std::string usableSentence() {
+  return "All six degrees of freedom are well constrained and no competing placement fits as "
+         "well: the result can be used.";
+}
+
+std::string checkVisuallySentence(std::size_t warnings) {
+  return "CHECK VISUALLY: " + std::to_string(warnings) +
+         " warning(s) below; the result is written but verify it before relying on it.";
+}
+
 QualityReport assessRegistration(const GlobalRegistrationResult& g, const RefineResult* refine,
-                                 const QualityParams& p) {
+                                 const QualityParams& p,
+                                 const std::vector<PlacementCandidate>& candidates) {
   QualityReport q;
+  q.candidates = candidates;
   q.method = g.method;
   q.status = toString(g.status);
   q.global_transform = g.transform;
@@ -137,7 +155,10 @@ QualityReport assessRegistration(const GlobalRegistrationResult& g, const Refine
     verdict << "Registration FAILED (" << q.status << "): " << g.message
             << ". No transform is given; do not use this result. Check that the two datasets "
                "overlap, or try another method or manual tie points.";
+    if (q.candidates.size() > 1)
+      verdict << " " << q.candidates.size() << " candidate placements are listed in the report.";
     q.verdict = verdict.str();
+    q.level = VerdictLevel::Failed;
     return q;
   }
   bool fail = false;
@@ -169,12 +190,13 @@ QualityReport assessRegistration(const GlobalRegistrationResult& g, const Refine
   if (!refine)
     q.warnings.push_back("refinement was off: the degrees of freedom were not checked on the "
                          "points (run with refinement to know whether the data fixes all six)");
-  if (g.runner_up && g.relative_gap < p.warn_relative_gap)
+  if (g.runner_up && g.relative_gap < p.warn_relative_gap && !runnerUpRefined(candidates))
     q.warnings.push_back("a different transform scored only " +
                          std::to_string(100.0 * g.relative_gap) +
                          "% lower: the scene is nearly symmetric, check the result visually");
   for (const auto& w : q.weak_directions) q.warnings.push_back(w.description);
   q.success = !fail;
+  q.level = verdictLevelOf(q.success, q.warnings);
   if (q.success) {
     verdict << std::setprecision(3) << "Registration succeeded with the " << g.method
             << " method: " << g.inlier_features << " of " << g.source_features
@@ -183,27 +205,55 @@ QualityReport assessRegistration(const GlobalRegistrationResult& g, const Refine
       verdict << ", point RMS " << 1000.0 * q.point_rms << " mm over " << 100.0 * q.overlap_ratio
               << "% overlap";
     verdict << ". ";
-    if (q.warnings.empty())
-      verdict << "All six degrees of freedom are well constrained and no competing solution "
-                 "came close: the result can be used.";
-    else
-      verdict << "Usable with caution: " << q.warnings.size()
-              << " warning(s) below; verify before relying on it.";
+    verdict << (q.level == VerdictLevel::Usable ? usableSentence()
+                                                : checkVisuallySentence(q.warnings.size()));
   }
   q.verdict = verdict.str();
   return q;
 }
 
+namespace {
+nlohmann::json matrixJson(const RigidTransform& t) {
+  nlohmann::json m = nlohmann::json::array();
+  const Eigen::Matrix4d x = t.matrix();
+  for (int r = 0; r < 4; ++r) m.push_back({x(r, 0), x(r, 1), x(r, 2), x(r, 3)});
+  return m;
+}
+
+nlohmann::json figuresJson(const std::vector<std::pair<std::string, double>>& figures) {
+  nlohmann::json f = nlohmann::json::object();
+  for (const auto& [k, v] : figures) f[k] = v;
+  return f;
+}
+
+nlohmann::json candidatesJson(const std::vector<PlacementCandidate>& candidates) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& c : candidates) {
+    nlohmann::json j = {{"role", c.role},
+                        {"label", c.label},
+                        {"transform", matrixJson(c.transform)},
+                        {"feature_score", c.feature_score},
+                        {"refined", c.refined},
+                        {"figures", figuresJson(c.figures)}};
+    if (c.refined) {
+      j["overlap_ratio"] = c.overlap;
+      j["rms_m"] = c.point_rms;
+      j["inliers"] = c.inliers;
+      j["fit_cost"] = c.fit_cost;
+    }
+    out.push_back(j);
+  }
+  return out;
+}
+}  // namespace
+
 std::string qualityReportToJson(const QualityReport& q) {
   using nlohmann::json;
-  auto mat = [](const RigidTransform& t) {
-    json m = json::array();
-    const Eigen::Matrix4d x = t.matrix();
-    for (int r = 0; r < 4; ++r) m.push_back({x(r, 0), x(r, 1), x(r, 2), x(r, 3)});
-    return m;
-  };
+  const auto mat = matrixJson;
   json j;
   j["success"] = q.success;
+  j["verdict_level"] = verdictLevelName(q.level);
+  j["exit_code"] = verdictExitCode(q.level);
   j["verdict"] = q.verdict;
   j["method"] = q.method;
   j["status"] = q.status;
@@ -242,16 +292,32 @@ std::string qualityReportToJson(const QualityReport& q) {
                     {"unconstrained", w.unconstrained},
                     {"description", w.description}});
   j["weak_directions"] = weak;
-  json fig = json::object();
-  for (const auto& [k, v] : q.figures) fig[k] = v;
-  j["figures"] = fig;
+  j["figures"] = figuresJson(q.figures);
   j["warnings"] = q.warnings;
   addVisibilityJson(j, q.visibility);
+  j["candidates"] = candidatesJson(q.candidates);
   return j.dump(2) + "\n";
 }
 
+namespace {
+void candidatesToText(std::ostream& o, const std::vector<PlacementCandidate>& candidates) {
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const auto& c = candidates[i];
+    const Eigen::Vector3d t = c.transform.translation();
+    o << "candidate " << i + 1 << " (" << c.role << "): rotation " << c.transform.rotationAngleDeg()
+      << " deg, translation " << vec(t) << " m, feature score " << c.feature_score;
+    if (c.refined)
+      o << ", refined overlap " << c.overlap << ", point RMS " << c.point_rms << " m, "
+        << c.inliers << " inliers, fit cost " << c.fit_cost;
+    for (const auto& [k, v] : c.figures) o << ", " << k << " " << v;
+    o << "\n";
+  }
+}
+}  // namespace
+
 std::string qualityReportToText(const QualityReport& q) {
   std::ostringstream o;
+  o << "verdict: " << verdictLevelWords(q.level) << " (exit " << verdictExitCode(q.level) << ")\n";
   o << q.verdict << "\n";
   o << "method: " << q.method << ", status: " << q.status << "\n";
   if (q.success) o << "transform (source -> target):\n" << q.transform;
@@ -263,6 +329,7 @@ std::string qualityReportToText(const QualityReport& q) {
     o << "runner-up score " << q.runner_up_score << " (gap " << 100 * q.relative_gap << "%)\n";
   o << visibilityToText(q.visibility);
   for (const auto& w : q.warnings) o << "warning: " << w << "\n";
+  if (q.candidates.size() > 1 || !q.success) candidatesToText(o, q.candidates);
   return o.str();
 }
 

@@ -11,6 +11,8 @@
 
 #include "common/params.hpp"
 #include "quality/visibility_evidence.hpp"
+#include "quality/placement_candidate.hpp"
+#include "quality/verdict_level.hpp"
 #include "registration/common/registration_result.hpp"
 #include "registration/refine/icp_refinement.hpp"
 
@@ -24,7 +26,9 @@ struct QualityParams {
   double min_overlap = 0.05;
   /// Point RMS above this is flagged, metres, [0.001, 1].
   double max_point_rms = 0.03;
-  /// A runner-up within this relative score gap is flagged (not failed), [0, 1].
+  /// A runner-up within this relative score gap is flagged (not failed), [0, 1], when it was
+  /// not refined and compared on points (refinement off): a refined runner-up is judged on
+  /// its refined fit instead (candidate_refinement.hpp).
   double warn_relative_gap = 0.2;
   /// A direction is unconstrained (the registration fails as degenerate) when a slide of
   /// RefineResult::kSlideDistance along it pushes fewer than this fraction of the matched
@@ -48,7 +52,8 @@ struct WeakDirection {
 };
 
 struct QualityReport {
-  bool success = false;
+  bool success = false;  ///< results may be written (level usable or check visually)
+  VerdictLevel level = VerdictLevel::Failed;
   std::string verdict;  ///< one paragraph, plain language
   std::string method;
   std::string status;   ///< RegistrationStatus as text, or "refinement failed"
@@ -76,11 +81,21 @@ struct QualityReport {
   std::vector<std::string> warnings;
   /// Free-space evidence of the final transform (visibility_verdict.hpp applies it).
   VisibilitySummary visibility;
+  /// Every placement considered, the answer first (refined figures when refinement ran).
+  std::vector<PlacementCandidate> candidates;
 };
 
-/// Builds the report. `refine` may be null (refinement off).
+/// The verdict's closing sentence for a usable result, and for one with `warnings` warnings
+/// (check visually). Shared by every rule that adds a warning after assessRegistration.
+std::string usableSentence();
+std::string checkVisuallySentence(std::size_t warnings);
+
+/// Builds the report. `refine` may be null (refinement off). `candidates`: the placements
+/// considered (PipelineResult::candidates); when the runner-up among them was refined, the
+/// refined comparison replaces the score-gap warning.
 QualityReport assessRegistration(const GlobalRegistrationResult& global,
-                                 const RefineResult* refine, const QualityParams& params = {});
+                                 const RefineResult* refine, const QualityParams& params = {},
+                                 const std::vector<PlacementCandidate>& candidates = {});
 
 /// Weak and unconstrained directions of a refinement's normal matrix (rotation first, scaled
 /// by a length): weak by eigenvalue ratio (and not held by a slide resistance of at least

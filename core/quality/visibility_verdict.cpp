@@ -65,16 +65,13 @@ std::string evidenceSentence(const VisibilitySummary& s, const QualityReport& q)
   return o.str();
 }
 
-/// A success verdict that claimed no warnings now has one: say so instead.
+/// A success verdict that claimed no warnings now has one: the level drops to check visually
+/// and the closing sentence says so.
 void markCaution(QualityReport& q) {
-  const std::string clean =
-      "All six degrees of freedom are well constrained and no competing solution came close: "
-      "the result can be used.";
+  const std::string clean = usableSentence();
   const auto at = q.verdict.find(clean);
-  if (at != std::string::npos)
-    q.verdict.replace(at, clean.size(),
-                      "Usable with caution: " + std::to_string(q.warnings.size()) +
-                          " warning(s) below; verify before relying on it.");
+  if (at != std::string::npos) q.verdict.replace(at, clean.size(), checkVisuallySentence(q.warnings.size()));
+  q.level = verdictLevelOf(q.success, q.warnings);
 }
 
 }  // namespace
@@ -85,6 +82,7 @@ void applyVisibilityEvidence(QualityReport& q, const VisibilityParams& p) {
   if (s.conclusive() && s.contradiction_ratio > p.fail_ratio) {
     const auto& e = worstDirection(s, p);
     q.success = false;
+    q.level = VerdictLevel::Failed;
     q.status = "contradicted";
     q.verdict = "Registration FAILED (contradicted): " + describeContradiction(s, e, p) +
                 ", above the failure level of " + percent(p.fail_ratio) +

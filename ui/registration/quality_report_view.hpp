@@ -1,7 +1,10 @@
 #pragma once
-// The quality report of the last registration: the verdict (coloured by success) above a
-// table of its figures (method, RMS, overlap, features, free space, runner-up gap, weak
-// directions...).
+// The quality report of the last registration: the verdict level in words on a coloured band
+// (green usable, amber check visually, red failed or ambiguous: words, not colour only), the
+// verdict paragraph, a table of every figure of the report (method, transform, RMS, overlap,
+// features, runner-up gap, slide resistances, weak directions, method figures, warnings) and a
+// table of the candidate placements (role, transform, feature score, refined overlap, RMS,
+// inliers, fit cost and any further evidence figures).
 #include <QWidget>
 
 class QLabel;
@@ -10,6 +13,7 @@ class QTableWidget;
 namespace plumb {
 struct PipelineResult;
 struct VisibilitySummary;
+struct QualityReport;
 }
 
 namespace plumb::ui {
@@ -21,16 +25,28 @@ class QualityReportView : public QWidget {
   void showResult(const PipelineResult& result);
   void clear();
   QString verdict() const;
+  /// The level band's text, e.g. "USABLE", "CHECK VISUALLY", "FAILED OR AMBIGUOUS".
+  QString level() const;
   /// Figure rows (name, value), for tests.
   int rowCount() const;
+  /// Figure `row`'s name and value, for tests.
+  QString figureName(int row) const;
+  QString figureValue(int row) const;
+  /// Candidate placement rows, for tests.
+  int candidateCount() const;
+  QString candidateRole(int row) const;
 
  private:
   void addRow(const QString& name, const QString& value);
   /// Free-space evidence: each direction's contradiction ratio (or why there is none) and
   /// the expected overlap.
   void addVisibilityRows(const VisibilitySummary& visibility);
+  void addFigures(const PipelineResult& result);
+  void addCandidates(const QualityReport& report);
+  QLabel* level_;
   QLabel* verdict_;
   QTableWidget* table_;
+  QTableWidget* candidates_;
 };
 
 }  // namespace plumb::ui

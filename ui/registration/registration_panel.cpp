@@ -282,7 +282,10 @@ void RegistrationPanel::applyResult(std::shared_ptr<const PipelineResult> result
   app_.undo.push(command);  // applies it
   pushed_ = command;
   legend_->hide();
-  app_.log.info(QString::fromStdString(result_->report.verdict));
+  if (result_->report.level == VerdictLevel::CheckVisually)
+    app_.log.warning(tr("Check visually: %1").arg(QString::fromStdString(result_->report.verdict)));
+  else
+    app_.log.info(QString::fromStdString(result_->report.verdict));
   app_.view.requestRender();
 }
 

@@ -16,13 +16,13 @@ bool paramGroupUsedBy(const std::string& key, RegistrationMethod method) {
   switch (method) {
     case RegistrationMethod::Auto: return true;
     case RegistrationMethod::Planes:
-      return in({"plane-extraction", "planes", "refinement", "quality", "visibility"});
+      return in({"plane-extraction", "planes", "refinement", "candidates", "quality", "visibility"});
     case RegistrationMethod::Openings:
-      return in({"plane-extraction", "opening-detection", "openings", "refinement", "quality",
-                 "visibility"});
+      return in({"plane-extraction", "opening-detection", "openings", "refinement", "candidates",
+                 "quality", "visibility"});
     case RegistrationMethod::Segments:
-      return in({"segment-detection", "mesh-edges", "segments", "refinement", "quality",
-                 "visibility"});
+      return in({"segment-detection", "mesh-edges", "segments", "refinement", "candidates",
+                 "quality", "visibility"});
     case RegistrationMethod::Icp: return in({"refinement", "quality", "visibility"});
   }
   return true;

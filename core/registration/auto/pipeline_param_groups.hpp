@@ -22,6 +22,7 @@ void forEachParamGroup(P& p, F&& f) {
   f("openings", "Openings registration", OpeningRegistrationParams::schema(), p.openings);
   f("segments", "Segments registration", SegmentRegistrationParams::schema(), p.segments);
   f("refinement", "Refinement (ICP)", RefineParams::schema(), p.refinement);
+  f("candidates", "Candidate placements", CandidateParams::schema(), p.candidates);
   f("quality", "Quality checks", QualityParams::schema(), p.quality);
   f("visibility", "Free-space check", VisibilityParams::schema(), p.visibility);
 }

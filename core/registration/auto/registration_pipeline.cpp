@@ -188,45 +188,59 @@ void limitToWallThickness(const GlobalRegistrationResult& g, RefineParams& rp,
   }
 }
 
-/// Beyond the papers: two clearly different hypotheses scored almost the same on features
-/// (a nearly symmetric feature layout, e.g. mirrored dwellings). Both are refined on points;
-/// when one leaves clearly fewer source points unexplained (1 - refined overlap ratio), it
-/// wins and
-/// the result says so; otherwise the result stays Ambiguous.
-void resolveAmbiguity(const RegistrationSide& source, const RegistrationSide& target,
+/// The global answer (and its runner-up, when there is one and CandidateParams allows) refined
+/// and compared (candidate_refinement.hpp): the same placement, a clearly worse one, or a
+/// competing one (Ambiguous). The global step's own Ambiguous status is settled here too: a
+/// clearly better refined fit wins, otherwise it stays Ambiguous.
+void refineCandidates(const RegistrationSide& source, const RegistrationSide& target,
                       const PipelineParams& p, PipelineResult& out, Progress* progress) {
   PointCloud sampled;
   const PointCloud* tc = refinementTarget(target, p, sampled);
-  if (!source.cloud || !tc) return;
+  const PointCloud* sc = source.cloud;
+  if (!sc || !tc) return;
   auto rp = p.refinement;
   rp.seed = p.seed;
-  RefineResult a = refineRegistration(*source.cloud, *tc, out.global.transform, rp, progress);
-  RefineResult b = refineRegistration(*source.cloud, *tc, out.global.runner_up->transform, rp, progress);
-  const double hi = std::max(a.overlap, b.overlap), lo = std::min(a.overlap, b.overlap);
-  std::ostringstream msg;
-  msg << "ambiguity: refined point overlap " << a.overlap << " (best) vs " << b.overlap
-      << " (runner-up)";
-  out.global.figures.push_back({"refined overlap of best hypothesis", a.overlap});
-  out.global.figures.push_back({"refined overlap of runner-up", b.overlap});
-  // Unexplained fractions: points of the source without a target match after refinement.
-  if (hi - lo < p.min_overlap_gap || (1.0 - lo) < p.min_unexplained_ratio * (1.0 - hi)) {
-    msg << ": too close to decide";
-    out.log.push_back(msg.str());
-    return;
+  limitToWallThickness(out.global, rp, out.log);
+  GlobalRegistrationResult& g = out.global;
+  const RefineTarget prepared(*tc, rp);  // once for every candidate
+  std::vector<RefinedHypothesis> h;
+  h.push_back({Hypothesis{g.transform, g.score, "global answer"},
+               refineRegistration(*sc, prepared, g.transform, rp, progress)});
+  const bool compare = g.runner_up && p.candidates.refine_runner_up;
+  auto compared = rp;
+  compared.slide_test = false;  // only compared; measured below if it becomes the answer
+  if (compare)
+    h.push_back({*g.runner_up, refineRegistration(*sc, prepared, g.runner_up->transform, compared, progress)});
+  const bool global_chose = g.ok();
+  const CandidateSelection sel = selectCandidate(h, global_chose, sc->bounds().center(), p.candidates);
+  out.candidates = sel.candidates;
+  if (compare) out.log.push_back(sel.message);
+  if (sel.chosen != 0) {
+    h[sel.chosen].refined = refineRegistration(*sc, prepared, h[sel.chosen].refined.transform, rp, progress);
+    g.transform = h[sel.chosen].hypothesis.transform;
+    g.score = h[sel.chosen].hypothesis.score;
+    g.runner_up = h[0].hypothesis;
   }
-  const bool swap = b.overlap > a.overlap;
-  if (swap) {
-    Hypothesis old{out.global.transform, out.global.score, "previous best"};
-    out.global.transform = out.global.runner_up->transform;
-    out.global.score = out.global.runner_up->score;
-    out.global.runner_up = old;
-    out.global.relative_gap = old.score > 0 ? (out.global.score - old.score) / old.score : 0.0;
+  if (sel.ambiguous) {
+    g.status = RegistrationStatus::Ambiguous;
+    g.message = "two different placements fit the points about equally after refinement (" +
+                sel.message + ")";
+  } else if (!global_chose) {
+    g.status = RegistrationStatus::Success;
+    g.message += "; resolved on refined points: " + sel.message;
   }
-  msg << ": resolved in favour of the " << (swap ? "runner-up" : "best") << " hypothesis";
-  out.log.push_back(msg.str());
-  out.global.status = RegistrationStatus::Success;
-  out.global.message += "; " + msg.str();
-  out.refinement = swap ? std::move(b) : std::move(a);
+  out.refinement = std::move(h[sel.chosen].refined);
+}
+
+/// The global hypotheses as candidates when they were not refined (refinement off, or the
+/// global step failed before refinement).
+std::vector<PlacementCandidate> unrefinedCandidates(const GlobalRegistrationResult& g) {
+  std::vector<PlacementCandidate> c;
+  if (g.hypotheses_evaluated == 0) return c;
+  c.push_back(makeCandidate(Hypothesis{g.transform, g.score, "global answer"}, nullptr,
+                            g.ok() ? "chosen" : "best (not accepted)"));
+  if (g.runner_up) c.push_back(makeCandidate(*g.runner_up, nullptr, "runner-up"));
+  return c;
 }
 
 }  // namespace
@@ -262,29 +276,21 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
   out.seconds_global = since(t0);
   t0 = std::chrono::steady_clock::now();
   const bool refine = p.refine || p.method == RegistrationMethod::Icp;
-  if (out.global.ok() && refine) {
-    PointCloud sampled;
-    const PointCloud* tc = refinementTarget(target, p, sampled);
-    const PointCloud* sc = source.cloud;
-    if (sc && tc) {
-      auto rp = p.refinement;
-      rp.seed = p.seed;
-      limitToWallThickness(out.global, rp, out.log);
-      out.refinement = refineRegistration(*sc, *tc, out.global.transform, rp, progress);
-    }
-  } else if (out.global.status == RegistrationStatus::Ambiguous && out.global.runner_up &&
-             refine && p.resolve_ambiguity_by_points) {
-    resolveAmbiguity(source, target, p, out, progress);
-  }
+  const bool settle = out.global.status == RegistrationStatus::Ambiguous && out.global.runner_up &&
+                      p.candidates.refine_runner_up;
+  if (refine && (out.global.ok() || settle)) refineCandidates(source, target, p, out, progress);
+  if (out.candidates.empty()) out.candidates = unrefinedCandidates(out.global);
   out.seconds_refine = since(t0);
-  out.report = assessRegistration(out.global, out.refinement ? &*out.refinement : nullptr, p.quality);
+  out.report = assessRegistration(out.global, out.refinement ? &*out.refinement : nullptr, p.quality,
+                                  out.candidates);
   addVisibilityEvidence(source, target, p.visibility, out.report);
   out.report.figures.push_back({"seconds features", out.seconds_features});
   out.report.figures.push_back({"seconds global", out.seconds_global});
   out.report.figures.push_back({"seconds refinement", out.seconds_refine});
-  if (swap && out.report.success) {
+  if (swap) {
     out.report.transform = out.report.transform.inverse();
     out.report.global_transform = out.report.global_transform.inverse();
+    for (auto& c : out.report.candidates) c.transform = c.transform.inverse();
   }
   return out;
 }

@@ -24,6 +24,7 @@
 #include "model/point_cloud.hpp"
 #include "quality/quality_report.hpp"
 #include "quality/visibility_evidence.hpp"
+#include "registration/auto/candidate_refinement.hpp"
 #include "registration/openings/opening_registration.hpp"
 #include "registration/planes/plane_registration.hpp"
 #include "registration/refine/icp_refinement.hpp"
@@ -66,22 +67,19 @@ struct PipelineParams {
   VisibilityParams visibility;
   /// Spacing of the points sampled on a model for refinement, metres, [0.005, 1].
   double model_sample_spacing = 0.05;
-  /// When the global step is Ambiguous (two clearly different hypotheses with almost the same
-  /// feature score), refine both and keep the one whose refined point overlap is clearly
-  /// larger (beyond the papers). Needs refinement on.
-  bool resolve_ambiguity_by_points = true;
-  /// "Clearly larger": by at least this absolute overlap ratio, [0, 1] ...
-  double min_overlap_gap = 0.005;
-  /// ... and the loser leaves at least this many times more source points unexplained
-  /// (1 - overlap) than the winner, [1, 100].
-  double min_unexplained_ratio = 2.0;
+  /// The runner-up refined and compared with the answer (candidate_refinement.hpp); settles
+  /// an Ambiguous global step on refined points (beyond the papers).
+  CandidateParams candidates;
   std::uint64_t seed = 1;
 };
 
 struct PipelineResult {
   QualityReport report;
   GlobalRegistrationResult global;
-  std::optional<RefineResult> refinement;
+  std::optional<RefineResult> refinement;  ///< of the answer
+  /// Every placement considered (the answer first), refined when refinement ran; also in the
+  /// report.
+  std::vector<PlacementCandidate> candidates;
   FeatureSet source_features, target_features;
   std::string method_used;
   std::vector<std::string> log;  ///< attempts and reasons, in order

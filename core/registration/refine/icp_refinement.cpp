@@ -126,18 +126,22 @@ double slideCost(const SlideData& s, const Eigen::Matrix3d& R, const Eigen::Vect
          double(s.src.size());
 }
 
+/// Gate of the slide test's neighbour search, m.
+double slideGate(double final_distance) {
+  return std::max(final_distance, 0.15) + RefineResult::kSlideDistance;
+}
+
 /// RefineResult::direction_resistance: each eigen-direction of res.normal_matrix slid both ways
 /// by kSlideDistance (rotations scaled by res.length_scale); the smaller rise of slideCost over
-/// the overlap ratio.
+/// res.fit_cost (the cost unmoved), over the overlap ratio.
 std::array<double, 6> slideResistance(const SlideData& s, const Eigen::Matrix3d& R,
                                       const Eigen::Vector3d& t, const Eigen::Vector3d& centre,
                                       const RefineResult& res, double final_distance) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(res.normal_matrix);
-  const double gate = std::max(final_distance, 0.15) + RefineResult::kSlideDistance;
   auto cost = [&](const Eigen::Matrix3d& dR, const Eigen::Vector3d& dt) {
-    return slideCost(s, R, t, centre, dR, dt, final_distance, gate);
+    return slideCost(s, R, t, centre, dR, dt, final_distance, slideGate(final_distance));
   };
-  const double base = cost(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero());
+  const double base = res.fit_cost;
   std::array<double, 6> out{};
   for (int k = 0; k < 6; ++k) {
     double least = std::numeric_limits<double>::infinity();
@@ -184,49 +188,87 @@ std::vector<Eigen::Vector3d> gridNormals(const Cloud& c, double cell) {
   return out;
 }
 
-}  // namespace
-
-RefineResult refineRegistration(const PointCloud& source, const PointCloud& target,
-                                const RigidTransform& initial, const RefineParams& p,
-                                Progress* progress) {
-  if (source.empty() || target.empty()) throw InputError("refinement needs two non-empty clouds");
-  RefineResult res;
-  const Eigen::Vector3d origin = target.bounds().center();
-  // Work in a frame centred on the target: x_local = x_world - origin.
-  Cloud::Ptr tgt = toPcl(target, RigidTransform(), origin, p.voxel_size);
-  Cloud::Ptr src_all = toPcl(source, initial, origin, p.voxel_size);
-  Cloud::Ptr src(new Cloud);
-  const std::size_t stride =
-      std::max<std::size_t>(1, (src_all->size() + p.max_source_points - 1) / p.max_source_points);
-  for (std::size_t i = 0; i < src_all->size(); i += stride) src->push_back((*src_all)[i]);
-  res.source_points = src->size();
-  res.target_points = tgt->size();
-  if (src->size() < 10 || tgt->size() < 10) throw InputError("refinement: too few points");
-
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-  tree.setInputCloud(tgt);
-  // Target normals: PCA of the points in a grid cell of a few voxels (O(n); building surfaces
-  // are planar at that scale; mixed cells at edges are rare and trimmed away).
-  std::vector<Eigen::Vector3d> normals = gridNormals(*tgt, std::max(0.15, 3 * p.voxel_size));
-  // Points of non-planar cells (edges, corners): PCA of their 10 nearest neighbours.
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tgt->size(), 1024), [&](const auto& range) {
+/// Points of non-planar cells (edges, corners) get the PCA normal of their 10 nearest
+/// neighbours.
+void fillEdgeNormals(const Cloud& tgt, const pcl::KdTreeFLANN<pcl::PointXYZ>& tree,
+                     std::vector<Eigen::Vector3d>& normals) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tgt.size(), 1024), [&](const auto& range) {
     std::vector<int> idx;
     std::vector<float> d2;
     for (std::size_t i = range.begin(); i < range.end(); ++i) {
       if (normals[i].allFinite()) continue;
-      if (tree.nearestKSearch((*tgt)[i], 10, idx, d2) < 5) continue;
+      if (tree.nearestKSearch(tgt[i], 10, idx, d2) < 5) continue;
       Eigen::Vector3d m = Eigen::Vector3d::Zero();
-      for (int j : idx) m += (*tgt)[j].getVector3fMap().cast<double>();
+      for (int j : idx) m += tgt[j].getVector3fMap().cast<double>();
       m /= double(idx.size());
       Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
       for (int j : idx) {
-        const Eigen::Vector3d q = (*tgt)[j].getVector3fMap().cast<double>() - m;
+        const Eigen::Vector3d q = tgt[j].getVector3fMap().cast<double>() - m;
         cov += q * q.transpose();
       }
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
       normals[i] = es.eigenvectors().col(0);
     }
   });
+}
+
+}  // namespace
+
+struct RefineTarget::Data {
+  Eigen::Vector3d origin;  ///< world position of the local frame's origin (target centre)
+  double voxel_size = 0.0;
+  Cloud::Ptr cloud;        ///< thinned target, local frame
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  std::vector<Eigen::Vector3d> normals;
+};
+
+RefineTarget::RefineTarget(const PointCloud& target, const RefineParams& p) : d_(std::make_unique<Data>()) {
+  if (target.empty()) throw InputError("refinement needs two non-empty clouds");
+  d_->origin = target.bounds().center();
+  d_->voxel_size = p.voxel_size;
+  // Work in a frame centred on the target: x_local = x_world - origin.
+  d_->cloud = toPcl(target, RigidTransform(), d_->origin, p.voxel_size);
+  const Cloud::Ptr& tgt = d_->cloud;
+  pcl::KdTreeFLANN<pcl::PointXYZ>& tree = d_->tree;
+  tree.setInputCloud(tgt);
+  // Target normals: PCA of the points in a grid cell of a few voxels (O(n); building surfaces
+  // are planar at that scale; mixed cells at edges are rare and trimmed away).
+  std::vector<Eigen::Vector3d>& normals = d_->normals;
+  normals = gridNormals(*tgt, std::max(0.15, 3 * p.voxel_size));
+  fillEdgeNormals(*tgt, tree, normals);
+}
+
+RefineTarget::~RefineTarget() = default;
+
+RefineResult refineRegistration(const PointCloud& source, const PointCloud& target,
+                                const RigidTransform& initial, const RefineParams& p,
+                                Progress* progress) {
+  if (source.empty() || target.empty()) throw InputError("refinement needs two non-empty clouds");
+  const RefineTarget prepared(target, p);
+  return refineRegistration(source, prepared, initial, p, progress);
+}
+
+RefineResult refineRegistration(const PointCloud& source, const RefineTarget& prepared,
+                                const RigidTransform& initial, const RefineParams& p,
+                                Progress* progress) {
+  if (source.empty()) throw InputError("refinement needs two non-empty clouds");
+  if (p.voxel_size != prepared.data().voxel_size)
+    throw InputError("refinement: the target was prepared with another voxel size");
+  RefineResult res;
+  const Eigen::Vector3d& origin = prepared.data().origin;
+  Cloud::Ptr src_all = toPcl(source, initial, origin, p.voxel_size);
+  Cloud::Ptr src(new Cloud);
+  const std::size_t stride =
+      std::max<std::size_t>(1, (src_all->size() + p.max_source_points - 1) / p.max_source_points);
+  for (std::size_t i = 0; i < src_all->size(); i += stride) src->push_back((*src_all)[i]);
+  res.source_points = src->size();
+  res.target_points = prepared.data().cloud->size();
+  if (src->size() < 10 || prepared.data().cloud->size() < 10)
+    throw InputError("refinement: too few points");
+
+  const Cloud::Ptr& tgt = prepared.data().cloud;
+  const pcl::KdTreeFLANN<pcl::PointXYZ>& tree = prepared.data().tree;
+  const std::vector<Eigen::Vector3d>& normals = prepared.data().normals;
   reportProgress(progress, 0.1, "refine: normals");
 
   // delta: local frame transform applied after `initial`.
@@ -356,7 +398,9 @@ RefineResult refineRegistration(const PointCloud& source, const PointCloud& targ
     }
   }
   res.centre = centre + origin;
-  if (!c.empty())
+  res.fit_cost = slideCost({*src, *tgt, tree, normals}, R, t, centre, Eigen::Matrix3d::Identity(),
+                           Eigen::Vector3d::Zero(), p.final_distance, slideGate(p.final_distance));
+  if (!c.empty() && p.slide_test)
     res.direction_resistance =
         slideResistance({*src, *tgt, tree, normals}, R, t, centre, res, p.final_distance);
   // World transform: x -> origin + delta(initial(x) - origin).

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 
 #include "common/params.hpp"
 #include "common/progress.hpp"
@@ -37,6 +38,11 @@ struct RefineParams {
   /// Fraction of correspondences kept (smallest residuals), (0, 1]. Trimmed ICP.
   double trim_fraction = 0.9;
   std::uint64_t seed = 1;  ///< deterministic (regular subsets); kept for interface uniformity
+  /// Measure RefineResult::direction_resistance (the slide test: 12 more passes over the
+  /// source points). Not a user setting (not in the schema: a report without it would find
+  /// every direction unconstrained): the pipeline turns it off for the runner-up candidates
+  /// it only compares.
+  bool slide_test = true;
   static const ParamSchema<RefineParams>& schema();
 };
 
@@ -49,6 +55,11 @@ struct RefineResult {
   /// max(final_distance, 0.15 m) and point-to-plane residual below final_distance.
   double overlap = 0.0;
   std::size_t inliers = 0;
+  /// Mean capped point-to-plane cost of the used source points at the result, min(r^2, d^2)
+  /// / d^2 with d the final distance (a point without a target neighbour costs 1): one figure
+  /// of the fit that counts both the unexplained points and the residuals of the explained
+  /// ones (0: every point exactly on the target). Compares refined candidate placements.
+  double fit_cost = 1.0;
   std::size_t source_points = 0;  ///< used (after thinning)
   std::size_t target_points = 0;
   /// Normal matrix sum J^T J of the final point-to-plane problem, J = [(p x n)/L, n], rotation
@@ -73,6 +84,28 @@ struct RefineResult {
 
 /// Refines `initial` (source -> target). Throws InputError for empty clouds.
 RefineResult refineRegistration(const PointCloud& source, const PointCloud& target,
+                                const RigidTransform& initial, const RefineParams& params,
+                                Progress* progress = nullptr);
+
+/// A refinement target prepared once (voxel-thinned points in a local frame, kd-tree, normals)
+/// for refining several starting placements against it (the pipeline's candidates). Built
+/// with the RefineParams::voxel_size it is then refined with.
+class RefineTarget {
+ public:
+  /// Throws InputError for an empty cloud.
+  RefineTarget(const PointCloud& target, const RefineParams& params);
+  ~RefineTarget();
+  RefineTarget(const RefineTarget&) = delete;
+  RefineTarget& operator=(const RefineTarget&) = delete;
+  struct Data;  ///< PCL types, defined in icp_refinement.cpp
+  const Data& data() const { return *d_; }
+
+ private:
+  std::unique_ptr<Data> d_;
+};
+
+/// As above, against a prepared target (same result as with the cloud it was prepared from).
+RefineResult refineRegistration(const PointCloud& source, const RefineTarget& target,
                                 const RigidTransform& initial, const RefineParams& params,
                                 Progress* progress = nullptr);
 

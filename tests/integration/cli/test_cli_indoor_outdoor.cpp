@@ -67,6 +67,10 @@ TEST(CliIndoorOutdoor, DemoIndoorRegistersOntoOutdoor) {
   const nlohmann::json gt = readJson(dir / "demo" / "ground_truth.json");
   const nlohmann::json report = readJson(dir / "R.json");
   EXPECT_TRUE(report.at("success").get<bool>());
+  // Usable, not "check visually" (issue 13): the openings runner-up, refined, is the house one
+  // storey up and fits clearly worse (docs/VERDICT.md).
+  EXPECT_EQ(report.at("verdict_level"), "usable") << report.dump(2);
+  EXPECT_TRUE(report.at("warnings").empty()) << report.dump(2);
   EXPECT_EQ(report.at("method"), "openings");
   const auto& figures = report.at("figures");
   EXPECT_EQ(figures.at("wall thickness measured").get<double>(), 1.0);
@@ -85,4 +89,24 @@ TEST(CliIndoorOutdoor, DemoIndoorRegistersOntoOutdoor) {
   ASSERT_TRUE(std::regex_search(info_reg.out, m_reg, scans)) << info_reg.out;
   EXPECT_EQ(m_reg[1].str(), "4");
   EXPECT_EQ(m_reg[2].str(), m_in[2].str());
+}
+
+// Self-consistency (issue 13): the demo's outdoor MMS scan registered onto itself is the
+// identity and usable (the house is nearly symmetric under a half turn for the MMS, but the
+// identity explains every point exactly).
+TEST(CliIndoorOutdoor, DemoOutdoorOntoItselfIsTheIdentity) {
+  const fs::path dir = scratchDir("cli_outdoor_self");
+  const CliResult sim = plumbCli(dir, "simulate --demo -o demo");
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const CliResult reg = plumbCli(dir, "register demo/outdoor.e57 demo/outdoor.e57 --transform T.json "
+                                      "--report R.json");
+  ASSERT_EQ(reg.exit_code, 0) << reg.err << reg.out;
+  const Eigen::Isometry3d T = transformOf(readJson(dir / "T.json").at("matrix"));
+  EXPECT_LT(Eigen::AngleAxisd(T.rotation()).angle() * 180.0 / M_PI, 1e-3);
+  EXPECT_LT(T.translation().norm(), 1e-3);
+  const nlohmann::json report = readJson(dir / "R.json");
+  EXPECT_EQ(report.at("verdict_level"), "usable");
+  // The half-turned house was considered, refined and found clearly worse.
+  ASSERT_EQ(report.at("candidates").size(), 2u) << report.dump(2);
+  EXPECT_EQ(report.at("candidates").at(1).at("role"), "worse");
 }

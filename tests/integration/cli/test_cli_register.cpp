@@ -92,6 +92,10 @@ TEST(CliRegister, SimulatedScanToModelMatchesTruth) {
   }
   const auto report = nlohmann::json::parse(readAll(dir / "R.json"));
   EXPECT_TRUE(report.at("success").get<bool>());
+  EXPECT_EQ(report.at("verdict_level"), "usable");
+  EXPECT_EQ(report.at("exit_code"), 0);
+  ASSERT_GE(report.at("candidates").size(), 1u);
+  EXPECT_EQ(report.at("candidates").at(0).at("role"), "chosen");
   EXPECT_EQ(report.at("method"), "segments");
   EXPECT_NE(report.at("verdict").get<std::string>().find("succeeded"), std::string::npos);
   EXPECT_LT(report.at("points").at("rms_m").get<double>(), 0.01);
@@ -102,6 +106,19 @@ TEST(CliRegister, SimulatedScanToModelMatchesTruth) {
   const CliResult info = plumbCli(dir, "info registered.e57");
   ASSERT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find("scans:     4\n"), std::string::npos) << info.out;
+
+  // Check visually (exit 3): without refinement the degrees of freedom are not checked on the
+  // points; the results are written and the warning is repeated on stderr.
+  const CliResult unrefined = plumbCli(dir, "register sim/indoor.e57 sim/model.ply --seed 3 --no-refine "
+                                      "--transform T3.json --report R3.json");
+  EXPECT_EQ(unrefined.exit_code, 3) << unrefined.err;
+  EXPECT_NE(unrefined.err.find("check visually (exit 3)"), std::string::npos) << unrefined.err;
+  EXPECT_NE(unrefined.err.find("warning: refinement was off"), std::string::npos) << unrefined.err;
+  EXPECT_NE(unrefined.out.find("verdict: check visually (exit 3)"), std::string::npos) << unrefined.out;
+  EXPECT_TRUE(fs::exists(dir / "T3.json"));
+  const auto r3 = nlohmann::json::parse(readAll(dir / "R3.json"));
+  EXPECT_EQ(r3.at("verdict_level"), "check-visually");
+  EXPECT_EQ(r3.at("exit_code"), 3);
 }
 
 // --print-params writes the defaults with one seed everywhere; --params reads it back; flags
@@ -191,6 +208,11 @@ TEST(CliRegister, FailuresExplainAndLeaveOutputsUntouched) {
   const auto report = nlohmann::json::parse(readAll(dir / "R.json"));
   EXPECT_FALSE(report.at("success").get<bool>());
   EXPECT_EQ(report.at("status"), "ambiguous");
+  EXPECT_EQ(report.at("verdict_level"), "failed");
+  EXPECT_EQ(report.at("exit_code"), 2);
+  // Every candidate placement is listed: the box and the box turned by a half turn.
+  EXPECT_GE(report.at("candidates").size(), 2u) << report.dump(2);
+  EXPECT_NE(amb.out.find("candidate 2 ("), std::string::npos) << amb.out;
 
   // Too few features: one plane cannot fix a pose.
   reset();

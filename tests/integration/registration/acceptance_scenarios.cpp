@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <random>
 
@@ -93,12 +94,18 @@ Scenario makeScenario(const std::string& name, const PipelineParams& params, dou
   Scenario s;
   s.name = name;
   auto t0 = std::chrono::steady_clock::now();
-  if (name == "bim-duplex") {
+  if (name.rfind("bim-duplex", 0) == 0) {
     s.model = std::make_shared<BimModel>(readModel(sharedData("ifc/duplex.ifc")));
     const ScanScene scene(*s.model);
     // Living rooms of the two dwellings (ground floor 0..2.8 m; found by casting coarse scans
     // from a 1 m grid: no miss, no surface closer than 0.8 m).
-    s.source = scanStations(scene, {{5.0, -4.0, 1.5}, {4.0, -14.0, 1.5}}, noise_mm, 700);
+    const Eigen::Vector3d unit_a(5.0, -4.0, 1.5), unit_b(4.0, -14.0, 1.5);
+    if (name == "bim-duplex")
+      s.source = scanStations(scene, {unit_a, unit_b}, noise_mm, 700);
+    else if (name == "bim-duplex-unit-a" || name == "bim-duplex-unit-b")
+      s.source = scanStations(scene, {name.back() == 'a' ? unit_a : unit_b}, noise_mm, 710);
+    else
+      throw InputError("unknown scenario '" + name + "'");
   } else {
     const GeneratedBuilding b = generateBuilding(buildingPreset("house"));
     const ScanScene scene(b.model, b.glass_triangles);
@@ -174,6 +181,15 @@ CaseOutcome runPlumbCase(const Scenario& s, const RigidTransform& pose,
   o.status = r.report.status;
   o.visibility = r.report.visibility;
   o.overlap = r.report.overlap_ratio;
+  o.level = verdictLevelName(r.report.level);
+  if (r.candidates.size() > 1) {
+    char line[200];
+    for (const auto& c : r.candidates) {
+      std::snprintf(line, sizeof line, "%s%s overlap %.4f RMS %.4f m cost %.4f", o.candidates.empty() ? "" : "; ",
+                    c.role.c_str(), c.overlap, c.point_rms, c.fit_cost);
+      o.candidates += line;
+    }
+  }
   o.seconds_features = r.seconds_features;
   o.seconds_global = r.seconds_global;
   o.seconds_refine = r.seconds_refine;

@@ -9,6 +9,9 @@
 //   indoor-outdoor "house": TLS in every ground-floor room (merged, sensor origins) -> MMS loop.
 //   bim-generated  "house": TLS in every ground-floor room -> the generated model.
 //   bim-duplex     duplex.ifc read with plumb::readModel, TLS stations inside -> the model.
+// Not in scenarioNames() (symmetric placements, issue 13):
+//   bim-duplex-unit-a / -unit-b  one station in the living room of one of the duplex's two
+//                  mirrored dwellings -> the whole model (the room exists twice).
 #include <Eigen/Core>
 
 #include <memory>
@@ -78,6 +81,9 @@ struct CaseOutcome {
   std::string status;
   VisibilitySummary visibility;  ///< free-space evidence (QualityReport::visibility)
   double overlap = 0.0;          ///< refined overlap ratio
+  std::string level;       ///< verdictLevelName of the report
+  /// The refined candidates (role, overlap, RMS, fit cost), one line; empty without runner-up.
+  std::string candidates;
   /// Smallest slide resistance of the six directions (QualityReport::direction_resistance);
   /// the degeneracy evidence: NaN when refinement did not run.
   double min_resistance = std::numeric_limits<double>::quiet_NaN();

@@ -32,17 +32,19 @@ void runScenario(const std::string& name, std::uint64_t seed) {
   const auto poses = randomPoses(kPoses, seed);
   int correct = 0, confident_wrong = 0;
   double least_resistance = std::numeric_limits<double>::infinity();
+  double seconds = 0.0;
   for (int i = 0; i < kPoses; ++i) {
     const CaseOutcome o = runPlumbCase(s, poses[i], params);
-    std::printf("  case %2d: yaw %7.1f deg shift %5.1f m -> %-8s %-9s rot %.4f deg trans %.4f m "
+    std::printf("  case %2d: yaw %7.1f deg shift %5.1f m -> %-8s %-14s rot %.4f deg trans %.4f m "
                 "slide resistance %.3f (features %.2f s, global %.2f s, refine %.2f s)\n",
                 i, poses[i].rotationAngleDeg() * (poses[i].rotation()(1, 0) < 0 ? -1 : 1),
-                poses[i].translation().norm(), o.method.c_str(),
-                o.reported_success ? "success" : "FAILED", o.error.rotation_deg,
+                poses[i].translation().norm(), o.method.c_str(), o.level.c_str(), o.error.rotation_deg,
                 o.error.translation_m, o.min_resistance, o.seconds_features, o.seconds_global,
                 o.seconds_refine);
     if (o.correct()) least_resistance = std::min(least_resistance, o.min_resistance);
     if (!o.reported_success) std::printf("           %s\n", o.verdict.c_str());
+    if (!o.candidates.empty()) std::printf("           candidates: %s\n", o.candidates.c_str());
+    seconds += o.seconds_total;
     correct += o.correct();
     confident_wrong += o.confidentWrong();
     EXPECT_FALSE(o.confidentWrong())
@@ -50,9 +52,9 @@ void runScenario(const std::string& name, std::uint64_t seed) {
         << o.error.rotation_deg << " deg, translation error " << o.error.translation_m << " m";
   }
   std::printf("%s: %d/%d within 0.1 deg / 2 cm, %d confident wrong answers, least slide "
-              "resistance of a right answer %.3f (degenerate below %.3f)\n",
+              "resistance of a right answer %.3f (degenerate below %.3f), %.2f s per case\n",
               name.c_str(), correct, kPoses, confident_wrong, least_resistance,
-              params.quality.min_resistance);
+              params.quality.min_resistance, seconds / kPoses);
   EXPECT_GE(correct, (95 * kPoses + 99) / 100) << name << ": success rate below 95%";
 }
 

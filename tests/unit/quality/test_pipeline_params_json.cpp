@@ -14,6 +14,7 @@ TEST(PipelineParamsJson, RoundTripsEveryGroup) {
   p.seed = 42;
   p.refinement.final_distance = 0.03;
   p.quality.max_point_rms = 0.05;
+  p.candidates.min_overlap_gap = 0.012;
   const nlohmann::json j = pipelineParamsToJson(p);
   int groups = 0;
   forEachParamGroup(p, [&](const char* key, const char*, const auto&, const auto&) {
@@ -24,9 +25,10 @@ TEST(PipelineParamsJson, RoundTripsEveryGroup) {
     }
     ++groups;
   });
-  EXPECT_EQ(groups, 10);
+  EXPECT_EQ(groups, 11);  // with "candidates" (runner-up comparison) and "visibility" (issue 13)
   PipelineParams q;
   pipelineParamsFromJson(j, q);
+  EXPECT_DOUBLE_EQ(q.candidates.min_overlap_gap, 0.012);
   EXPECT_EQ(q.method, RegistrationMethod::Segments);
   EXPECT_FALSE(q.refine);
   EXPECT_EQ(q.seed, 42u);

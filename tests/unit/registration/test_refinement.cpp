@@ -133,7 +133,9 @@ TEST(QualityReport, RefinementOffNeverClaimsWellConstrained) {
   const QualityReport q = assessRegistration(g, nullptr);
   EXPECT_TRUE(q.success);
   EXPECT_EQ(q.verdict.find("well constrained"), std::string::npos) << q.verdict;
-  EXPECT_NE(q.verdict.find("caution"), std::string::npos) << q.verdict;
+  EXPECT_NE(q.verdict.find("CHECK VISUALLY"), std::string::npos) << q.verdict;
+  EXPECT_EQ(q.level, VerdictLevel::CheckVisually);
+  EXPECT_EQ(verdictExitCode(q.level), 3);
 }
 
 TEST(QualityReport, FailedGlobalResultIsAFailureWithoutTransform) {

@@ -1,0 +1,137 @@
+#include "registration/auto/candidate_refinement.hpp"
+
+#include <sstream>
+
+namespace plumb {
+
+const ParamSchema<CandidateParams>& CandidateParams::schema() {
+  using P = CandidateParams;
+  static const auto s =
+      ParamSchema<P>("candidates")
+          .boolean(&P::refine_runner_up, "refine-runner-up", "Refine the runner-up",
+                   "Refine the global step's runner-up too and compare the refined fits "
+                   "(off: an ambiguous global step fails)")
+          .real(&P::same_rotation_deg, "same-rotation", "Same placement rotation", "deg", 0.01,
+                5.0, "Refined placements closer than this (and the shift below) are one answer",
+                true)
+          .real(&P::same_translation, "same-shift", "Same placement shift", "m", 0.001, 1.0,
+                "Displacement at the data centroid below which refined placements are one answer",
+                true)
+          .real(&P::min_overlap_gap, "overlap-gap", "Clear overlap gap", "", 0.0, 1.0,
+                "A placement is clearly worse when its refined overlap is lower by this", true)
+          .real(&P::near_overlap_gap, "near-overlap-gap", "Near-whole overlap gap", "", 0.0, 1.0,
+                "Or lower by this ...", true)
+          .real(&P::min_unexplained_ratio, "unexplained-ratio", "Clear unexplained ratio", "",
+                1.0, 100.0, "... and it leaves this many times more points unexplained", true)
+          .real(&P::min_cost_gap, "cost-gap", "Clear fit cost gap", "", 0.0, 1.0,
+                "Or: its refined fit cost is higher by this ...", true)
+          .real(&P::min_cost_ratio, "cost-ratio", "Clear fit cost ratio", "", 1.0, 100.0,
+                "... and this many times the other's", true);
+  return s;
+}
+
+const char* toString(CandidateRelation r) {
+  switch (r) {
+    case CandidateRelation::Same: return "same placement";
+    case CandidateRelation::FirstClearlyBetter: return "first clearly better";
+    case CandidateRelation::SecondClearlyBetter: return "second clearly better";
+    case CandidateRelation::Close: return "close";
+  }
+  return "?";
+}
+
+namespace {
+bool lostOverlap(const RefineResult& r) { return r.inliers < 10; }
+
+/// `x` fits clearly worse than `y`: clearly fewer points explained, or a clearly higher cost.
+bool clearlyWorse(const RefineResult& x, const RefineResult& y, const CandidateParams& p) {
+  if (lostOverlap(x) && !lostOverlap(y)) return true;
+  const double gap = y.overlap - x.overlap;
+  const bool overlap = gap >= p.min_overlap_gap ||
+                       (gap >= p.near_overlap_gap &&
+                        (1.0 - x.overlap) >= p.min_unexplained_ratio * (1.0 - y.overlap));
+  const bool cost = x.fit_cost - y.fit_cost >= p.min_cost_gap &&
+                    x.fit_cost >= p.min_cost_ratio * y.fit_cost;
+  return overlap || cost;
+}
+}  // namespace
+
+CandidateRelation compareRefined(const RefineResult& a, const RefineResult& b,
+                                 const Eigen::Vector3d& centroid, const CandidateParams& p) {
+  const double rot = RigidTransform::rotationErrorDeg(a.transform, b.transform);
+  const double shift = (a.transform.apply(centroid) - b.transform.apply(centroid)).norm();
+  if (rot <= p.same_rotation_deg && shift <= p.same_translation) return CandidateRelation::Same;
+  if (clearlyWorse(b, a, p)) return CandidateRelation::FirstClearlyBetter;
+  if (clearlyWorse(a, b, p)) return CandidateRelation::SecondClearlyBetter;
+  return CandidateRelation::Close;
+}
+
+PlacementCandidate makeCandidate(const Hypothesis& h, const RefineResult* r, std::string role) {
+  PlacementCandidate c;
+  c.role = std::move(role);
+  c.label = h.label;
+  c.transform = r ? r->transform : h.transform;
+  c.feature_score = h.score;
+  if (r) {
+    c.refined = true;
+    c.overlap = r->overlap;
+    c.point_rms = r->rms;
+    c.inliers = r->inliers;
+    c.fit_cost = r->fit_cost;
+  }
+  return c;
+}
+
+namespace {
+/// The hypothesis to answer with: the first, unless the global step could not choose and
+/// another one fits clearly better (the best overlap among those).
+std::size_t answerIndex(const std::vector<RefinedHypothesis>& h, bool global_chose,
+                        const Eigen::Vector3d& centroid, const CandidateParams& p) {
+  std::size_t best = 0;
+  if (global_chose) return best;
+  for (std::size_t i = 1; i < h.size(); ++i)
+    if (compareRefined(h[0].refined, h[i].refined, centroid, p) ==
+            CandidateRelation::SecondClearlyBetter &&
+        (best == 0 || h[i].refined.overlap > h[best].refined.overlap))
+      best = i;
+  return best;
+}
+
+std::string roleOf(CandidateRelation r) {
+  switch (r) {
+    case CandidateRelation::Same: return "same placement";
+    case CandidateRelation::FirstClearlyBetter: return "worse";
+    default: return "competing";
+  }
+}
+}  // namespace
+
+CandidateSelection selectCandidate(const std::vector<RefinedHypothesis>& h, bool global_chose,
+                                   const Eigen::Vector3d& centroid, const CandidateParams& p) {
+  CandidateSelection s;
+  if (h.empty()) return s;
+  s.chosen = answerIndex(h, global_chose, centroid, p);
+  const RefineResult& chosen = h[s.chosen].refined;
+  s.candidates.push_back(makeCandidate(h[s.chosen].hypothesis, &chosen, "chosen"));
+  std::ostringstream msg;
+  msg << "candidates: chosen (" << h[s.chosen].hypothesis.label << ") overlap " << chosen.overlap
+      << ", RMS " << chosen.rms << " m, fit cost " << chosen.fit_cost;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    if (i == s.chosen) continue;
+    const RefineResult& other = h[i].refined;
+    const CandidateRelation rel = compareRefined(chosen, other, centroid, p);
+    const std::string role = roleOf(rel);
+    if (role == "competing") s.ambiguous = true;
+    s.candidates.push_back(makeCandidate(h[i].hypothesis, &other, role));
+    msg << "; " << (i == 0 ? "global answer" : "runner-up") << " (" << h[i].hypothesis.label
+        << ") refined to " << RigidTransform::rotationErrorDeg(chosen.transform, other.transform)
+        << " deg / " << (chosen.transform.apply(centroid) - other.transform.apply(centroid)).norm()
+        << " m from it, overlap " << other.overlap << ", RMS " << other.rms << " m, fit cost "
+        << other.fit_cost << ": " << role;
+  }
+  if (s.chosen != 0) msg << "; the refined points chose the runner-up";
+  s.message = msg.str();
+  return s;
+}
+
+}  // namespace plumb

@@ -1,0 +1,83 @@
+#pragma once
+// Beyond the papers: the global step's runner-up is refined like the winner before the two are
+// compared (issue 13). An unrefined runner-up always looks worse than a refined winner, and a
+// runner-up that converges onto the winner is the same answer, not a competitor. After both
+// refinements:
+//   - same placement (within same_rotation_deg / same_translation at the source centroid):
+//     one answer, no warning;
+//   - one clearly worse refined fit (fewer points explained, or a clearly higher fit cost):
+//     the other stands, without a warning;
+//   - otherwise two different placements fit about equally (a repeated room, mirrored units,
+//     identical storeys): ambiguous, both listed as candidates.
+// When the global step itself was ambiguous (features could not choose), a runner-up with a
+// clearly better fit wins; when the global step chose, a runner-up fitting clearly better on
+// points contradicts it and the answer is ambiguous too (never a confident pick against the
+// features).
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+#include "common/params.hpp"
+#include "quality/placement_candidate.hpp"
+#include "registration/common/registration_result.hpp"
+#include "registration/refine/icp_refinement.hpp"
+
+namespace plumb {
+
+struct CandidateParams {
+  /// Refine the global step's runner-up with the same refinement parameters and compare the
+  /// refined fits (needs refinement on). Off: an ambiguous global step fails.
+  bool refine_runner_up = true;
+  /// Two refined placements are the same when they differ by at most this rotation, deg,
+  /// [0.01, 5] ...
+  double same_rotation_deg = 0.2;
+  /// ... and this displacement at the source data's centroid, m, [0.001, 1].
+  double same_translation = 0.05;
+  /// A placement is clearly worse when its refined overlap ratio is lower by at least this,
+  /// [0, 1] (that fraction of the source points fits one placement and not the other); or:
+  double min_overlap_gap = 0.008;
+  /// its overlap is lower by at least this, [0, 1], ...
+  double near_overlap_gap = 0.005;
+  /// ... and it leaves at least this many times more source points unexplained (1 - overlap),
+  /// [1, 100] (data overlapping almost wholly: a room in its model, a scan onto itself); or:
+  double min_unexplained_ratio = 2.0;
+  /// its refined fit cost (RefineResult::fit_cost) is higher by at least this, [0, 1], ...
+  double min_cost_gap = 0.02;
+  /// ... and at least this many times the other's, [1, 100].
+  double min_cost_ratio = 1.5;
+  static const ParamSchema<CandidateParams>& schema();
+};
+
+/// A global hypothesis and its refinement.
+struct RefinedHypothesis {
+  Hypothesis hypothesis;
+  RefineResult refined;
+};
+
+enum class CandidateRelation { Same, FirstClearlyBetter, SecondClearlyBetter, Close };
+const char* toString(CandidateRelation r);
+
+/// How the refined fit `b` relates to `a`; `centroid` is the source data's centre (source
+/// frame), where the placements' displacements are compared.
+CandidateRelation compareRefined(const RefineResult& a, const RefineResult& b,
+                                 const Eigen::Vector3d& centroid, const CandidateParams& params);
+
+struct CandidateSelection {
+  std::size_t chosen = 0;   ///< index of the answer among the hypotheses
+  bool ambiguous = false;   ///< two different placements fit about equally (or contradict)
+  std::vector<PlacementCandidate> candidates;  ///< every hypothesis, the chosen first
+  std::string message;      ///< plain language, for the log and the verdict
+};
+
+/// Compares hypotheses[0] (the global step's answer, or its best when `global_chose` is false)
+/// with every other refined hypothesis.
+CandidateSelection selectCandidate(const std::vector<RefinedHypothesis>& hypotheses,
+                                   bool global_chose, const Eigen::Vector3d& centroid,
+                                   const CandidateParams& params);
+
+/// A candidate as the report lists it (refined figures when `refined` is non-null).
+PlacementCandidate makeCandidate(const Hypothesis& h, const RefineResult* refined,
+                                 std::string role);
+
+}  // namespace plumb

@@ -1,0 +1,87 @@
+// The comparison of refined candidate placements (candidate_refinement.hpp) on hand-made
+// refinement results: the same placement, clearly worse by overlap (partial or near-whole
+// overlap) or by fit cost, close (ambiguous), and the selection with and without a global
+// choice; plus the verdict levels and their exit codes.
+#include <gtest/gtest.h>
+
+#include "quality/verdict_level.hpp"
+#include "registration/auto/candidate_refinement.hpp"
+
+using namespace plumb;
+
+namespace {
+RefineResult fit(const RigidTransform& t, double overlap, double cost) {
+  RefineResult r;
+  r.transform = t;
+  r.overlap = overlap;
+  r.inliers = std::size_t(overlap * 20000);
+  r.fit_cost = cost;
+  r.rms = 0.005;
+  return r;
+}
+const RigidTransform kA;
+const RigidTransform kTurned = RigidTransform::fromYaw(M_PI, {9.0, 8.0, 0.0});
+const Eigen::Vector3d kCentroid(4.5, 4.0, 1.5);
+}  // namespace
+
+TEST(CandidateRefinement, ConvergedOntoTheAnswerIsTheSamePlacement) {
+  const CandidateParams p;
+  const RigidTransform close = RigidTransform::fromYaw(0.1 * M_PI / 180.0, {0.01, 0.0, 0.0});
+  EXPECT_EQ(compareRefined(fit(kA, 0.7, 0.3), fit(close, 0.5, 0.5), kCentroid, p),
+            CandidateRelation::Same);
+  const RigidTransform apart = RigidTransform::fromYaw(0.0, {0.0, 0.0, 0.1});
+  EXPECT_NE(compareRefined(fit(kA, 0.7, 0.3), fit(apart, 0.7, 0.3), kCentroid, p),
+            CandidateRelation::Same);
+}
+
+TEST(CandidateRefinement, ClearlyWorseByOverlapOrCostElseClose) {
+  const CandidateParams p;
+  // Partial overlap (indoor/outdoor): 0.035 fewer points explained.
+  EXPECT_EQ(compareRefined(fit(kA, 0.181, 0.794), fit(kTurned, 0.146, 0.832), kCentroid, p),
+            CandidateRelation::FirstClearlyBetter);
+  // Near-whole overlap (a duplex unit): 0.006 fewer, 4 times more unexplained.
+  EXPECT_EQ(compareRefined(fit(kA, 0.998, 0.042), fit(kTurned, 0.992, 0.045), kCentroid, p),
+            CandidateRelation::FirstClearlyBetter);
+  // A scan onto itself: overlap almost equal, the identity's residuals exactly zero.
+  EXPECT_EQ(compareRefined(fit(kA, 1.0, 0.0), fit(kTurned, 0.9976, 0.031), kCentroid, p),
+            CandidateRelation::FirstClearlyBetter);
+  // The runner-up fits better: second clearly better.
+  EXPECT_EQ(compareRefined(fit(kA, 0.60, 0.40), fit(kTurned, 0.70, 0.30), kCentroid, p),
+            CandidateRelation::SecondClearlyBetter);
+  // Within the noise of the overlap (0.002): close.
+  EXPECT_EQ(compareRefined(fit(kA, 0.905, 0.101), fit(kTurned, 0.903, 0.104), kCentroid, p),
+            CandidateRelation::Close);
+}
+
+TEST(CandidateRefinement, SelectionListsEveryCandidateAndFlagsCompetitors) {
+  const CandidateParams p;
+  std::vector<RefinedHypothesis> h = {{{kA, 60.0, "a"}, fit(kA, 0.905, 0.101)},
+                                      {{kTurned, 58.0, "b"}, fit(kTurned, 0.903, 0.104)}};
+  CandidateSelection s = selectCandidate(h, true, kCentroid, p);
+  EXPECT_TRUE(s.ambiguous);
+  ASSERT_EQ(s.candidates.size(), 2u);
+  EXPECT_EQ(s.candidates[0].role, "chosen");
+  EXPECT_EQ(s.candidates[1].role, "competing");
+  EXPECT_DOUBLE_EQ(s.candidates[1].overlap, 0.903);
+  // The global step could not choose and the runner-up fits clearly better: it is the answer.
+  h[1].refined = fit(kTurned, 0.95, 0.06);
+  s = selectCandidate(h, false, kCentroid, p);
+  EXPECT_FALSE(s.ambiguous);
+  EXPECT_EQ(s.chosen, 1u);
+  EXPECT_EQ(s.candidates[1].role, "worse");
+  // ... but against a global choice it is a contradiction: ambiguous.
+  s = selectCandidate(h, true, kCentroid, p);
+  EXPECT_TRUE(s.ambiguous);
+  EXPECT_EQ(s.chosen, 0u);
+}
+
+TEST(VerdictLevel, LevelsAndExitCodes) {
+  EXPECT_EQ(verdictLevelOf(true, {}), VerdictLevel::Usable);
+  EXPECT_EQ(verdictLevelOf(true, {"refinement was off"}), VerdictLevel::CheckVisually);
+  EXPECT_EQ(verdictLevelOf(false, {}), VerdictLevel::Failed);
+  EXPECT_EQ(verdictExitCode(VerdictLevel::Usable), 0);
+  EXPECT_EQ(verdictExitCode(VerdictLevel::CheckVisually), 3);
+  EXPECT_EQ(verdictExitCode(VerdictLevel::Failed), 2);
+  EXPECT_STREQ(verdictLevelName(VerdictLevel::CheckVisually), "check-visually");
+  EXPECT_STREQ(verdictLevelWords(VerdictLevel::Failed), "failed or ambiguous");
+}
