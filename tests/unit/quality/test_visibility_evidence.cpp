@@ -166,9 +166,8 @@ QualityReport successfulReport(double contradiction_ratio, bool available = true
   q.status = "success";
   q.refined = true;
   q.overlap_ratio = 0.4;
-  q.verdict =
-      "Registration succeeded. All six degrees of freedom are well constrained and no competing "
-      "solution came close: the result can be used.";
+  q.level = VerdictLevel::Usable;
+  q.verdict = "Registration succeeded. " + usableSentence();
   auto& v = q.visibility;
   v.computed = true;
   v.source_in_target.available = available;
@@ -201,12 +200,16 @@ TEST(VisibilityVerdict, ManyContradictionsFailFewWarnNoneSayWhatTheVerdictRestsO
   ASSERT_EQ(warn.warnings.size(), 1u);
   EXPECT_NE(warn.warnings[0].find("check visually"), std::string::npos);
   EXPECT_EQ(warn.verdict.find("the result can be used"), std::string::npos) << warn.verdict;
+  EXPECT_NE(warn.verdict.find("CHECK VISUALLY: 1 warning(s)"), std::string::npos) << warn.verdict;
+  EXPECT_EQ(warn.level, VerdictLevel::CheckVisually);
+  EXPECT_EQ(fail.level, VerdictLevel::Failed);
 
   QualityReport good = successfulReport(0.01);
   applyVisibilityEvidence(good, p);
   EXPECT_TRUE(good.success);
   EXPECT_TRUE(good.warnings.empty());
   EXPECT_NE(good.verdict.find("Free space agrees"), std::string::npos) << good.verdict;
+  EXPECT_EQ(good.level, VerdictLevel::Usable);
 
   QualityReport missing = successfulReport(0.0, /*available=*/false);
   applyVisibilityEvidence(missing, p);
