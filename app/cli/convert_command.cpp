@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "cli/command.hpp"
+#include "cli/written_output.hpp"
 #include "common/error.hpp"
 #include "io/io.hpp"
 
@@ -25,14 +26,6 @@ void refuseSameFile(const std::filesystem::path& in, const std::filesystem::path
   if (std::filesystem::equivalent(in, out, ec))
     throw FileError(out, "is the input file itself; converting in place would rewrite it with "
                          "whatever the output format cannot hold: write to another file");
-}
-
-/// "wrote OUT (N points, M scan(s))" with the writer's count when it has one, then its notes.
-void printWritten(const std::filesystem::path& out, const Dataset& d, const WriteReport& r) {
-  std::cout << "wrote " << out.string() << " (" << r.points.value_or(d.pointCount()) << " points";
-  if (r.dropped) std::cout << ", " << r.dropped << " dropped";
-  std::cout << ", " << d.scans.size() << " scan(s))\n";
-  for (const auto& note : r.notes) std::cout << "  note: " << note << "\n";
 }
 
 void applyTransform(Dataset& d, const RigidTransform& t) {

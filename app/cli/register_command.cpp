@@ -29,6 +29,7 @@
 #include <unistd.h>
 
 #include "cli/command.hpp"
+#include "cli/written_output.hpp"
 #include "cli/option_checks.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
@@ -178,7 +179,11 @@ int run(const RegisterOptions& o) {
         scan.pose = T * scan.pose;
         scan.has_pose = true;
       }
-      writeDataset(o.output, moved);
+      WriteReport written;
+      WriteOptions options;
+      options.report = &written;
+      writeDataset(o.output, moved, options);
+      printWritten(o.output, moved, written);
     } else {
       BimModel m = std::get<BimModel>(src.data);
       m.transform(T);
