@@ -102,7 +102,9 @@ TEST(CliRegister, SimulatedScanToModelMatchesTruth) {
   EXPECT_GT(report.at("points").at("overlap_ratio").get<double>(), 0.5);
   EXPECT_TRUE((transformOf(report.at("transform")).matrix() - got).cwiseAbs().maxCoeff() < 1e-9);
   EXPECT_NE(r.out.find("method: segments, status: success"), std::string::npos) << r.out;
-  // The registered dataset is written and readable: same 4 scans.
+  // The registered dataset is written, said so with the writer's count, and readable: 4 scans.
+  EXPECT_NE(r.out.find("wrote registered.e57 ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" points, 4 scan(s))"), std::string::npos) << r.out;
   const CliResult info = plumbCli(dir, "info registered.e57");
   ASSERT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find("scans:     4\n"), std::string::npos) << info.out;
