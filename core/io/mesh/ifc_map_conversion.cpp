@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "common/error.hpp"
+#include "io/mesh/ifc_georef.hpp"
 #include "io/mesh/step_entities.hpp"
 
 namespace plumb::ifc_georef {
@@ -51,7 +52,7 @@ MapConversion parse(const step::Entity& e, const std::unordered_map<std::uint64_
 
 }  // namespace
 
-std::optional<MapConversion> readMapConversion(std::string_view text, double length_unit) {
+std::optional<MapConversion> readMapConversion(std::string_view text) {
   std::unordered_map<std::uint64_t, std::string> crs_names;
   std::unordered_map<std::uint64_t, bool> contexts;
   std::vector<step::Entity> conversions;
@@ -65,8 +66,10 @@ std::optional<MapConversion> readMapConversion(std::string_view text, double len
   });
   for (const auto& e : conversions) {
     const auto a = step::splitArguments(e.args);
-    if (!a.empty() && contexts.count(step::reference(a[0])))
-      return parse(e, crs_names, length_unit > 0 ? length_unit : 1.0);
+    if (!a.empty() && contexts.count(step::reference(a[0]))) {
+      const double unit = lengthUnit(text);  // a second pass over the file, only when needed
+      return parse(e, crs_names, unit > 0 ? unit : 1.0);
+    }
   }
   return std::nullopt;
 }

@@ -27,9 +27,10 @@ struct MapConversion {
   std::uint64_t line = 0;                             ///< line of the IfcMapConversion
 };
 
-/// The file's map conversion, or nullopt when it has none. `length_unit` is u above.
-/// Throws InputError naming the entity's line when it is unusable (zero x axis, scale <= 0).
-std::optional<MapConversion> readMapConversion(std::string_view ifc_text, double length_unit);
+/// The file's map conversion, or nullopt when it has none (u above is the project's length
+/// unit, ifc_georef::lengthUnit, looked up only when there is a conversion). Throws InputError
+/// naming the entity's line when it is unusable (zero x axis, scale <= 0).
+std::optional<MapConversion> readMapConversion(std::string_view ifc_text);
 
 /// Moves every vertex of `mesh` from engineering to map coordinates (formulas above).
 void applyMapConversion(const MapConversion& conversion, TriangleMesh& mesh);

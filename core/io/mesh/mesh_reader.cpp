@@ -57,7 +57,7 @@ IfcPlacement ifcPlacement(const std::filesystem::path& path) {
   IfcPlacement p;
   p.shift = ifc_georef::plan(text);
   try {
-    p.map = ifc_georef::readMapConversion(text, ifc_georef::lengthUnit(text));
+    p.map = ifc_georef::readMapConversion(text);
   } catch (const InputError& e) {
     throw FileError(path, e.what());
   }

@@ -148,16 +148,16 @@ TEST(IfcGeoref, MapConversionReadsDefaultsAndRefusesAZeroAxis) {
   const std::string head = "ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n"
                            "#10=IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-5,$,$);\n"
                            "#20=IFCPROJECTEDCRS('EPSG:32631',$,$,$,$,$,$);\n";
-  const auto m = ifc_georef::readMapConversion(head + "#30=IFCMAPCONVERSION(#10,#20,500000.,5000000.,12.,$,$,$);\nENDSEC;\n", 1.0);
+  const auto m = ifc_georef::readMapConversion(head + "#30=IFCMAPCONVERSION(#10,#20,500000.,5000000.,12.,$,$,$);\nENDSEC;\n");
   ASSERT_TRUE(m);
   EXPECT_EQ(m->origin, Eigen::Vector3d(500000.0, 5000000.0, 12.0));
   EXPECT_EQ(m->rotation_rad, 0.0);
   EXPECT_EQ(m->scale, 1.0);
   EXPECT_EQ(m->crs, "EPSG:32631");
   EXPECT_EQ(m->line, 7u);
-  EXPECT_FALSE(ifc_georef::readMapConversion(head + "ENDSEC;\n", 1.0));
+  EXPECT_FALSE(ifc_georef::readMapConversion(head + "ENDSEC;\n"));
   try {
-    ifc_georef::readMapConversion(head + "#30=IFCMAPCONVERSION(#10,#20,1.,2.,3.,0.,0.,1.);\nENDSEC;\n", 1.0);
+    ifc_georef::readMapConversion(head + "#30=IFCMAPCONVERSION(#10,#20,1.,2.,3.,0.,0.,1.);\nENDSEC;\n");
     FAIL() << "a zero x axis must be refused";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("#30 (line 7)"), std::string::npos) << e.what();
