@@ -11,6 +11,7 @@
 #include "quality/station_range_images.hpp"
 #include "quality/visibility_evidence.hpp"
 #include "simulation/ray_caster.hpp"
+#include "common/stopwatch.hpp"
 
 namespace plumb {
 
@@ -130,7 +131,7 @@ VisibilityEvidence modelRayEvidence(const PointCloud& scan,
   for (std::size_t k = 0; k < sightings.size(); ++k)
     sightings[k] = classifyRay(rays.rays[k], rays.ranges[k], hits[k], caster, p);
   tallySightings(sightings, e);
-  e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  e.seconds = secondsSince(t0);
   return e;
 }
 

@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "quality/station_range_images.hpp"
+#include "common/stopwatch.hpp"
 
 namespace plumb {
 
@@ -50,10 +51,6 @@ const ParamSchema<VisibilityParams>& VisibilityParams::schema() {
 }
 
 namespace {
-
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 /// Regular sample of the tested points, without those next to their own sensor.
 std::vector<std::size_t> testedPoints(const PointCloud& c, const std::optional<Eigen::Vector3d>& vp,
@@ -114,7 +111,7 @@ VisibilityEvidence freeSpaceEvidence(const PointCloud& observer,
                         sightings[k] = images.classify(to_observer.apply(tested.world(idx[k])));
                     });
   tallySightings(sightings, e);
-  e.seconds = since(t0);
+  e.seconds = secondsSince(t0);
   return e;
 }
 

@@ -6,6 +6,7 @@
 
 #include "common/error.hpp"
 #include "registration/auto/visibility_check.hpp"
+#include "common/stopwatch.hpp"
 
 namespace plumb {
 
@@ -29,9 +30,6 @@ RegistrationMethod methodFromName(const std::string& n) {
 }
 
 namespace {
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 void note(std::vector<std::string>* log, const std::string& s) {
   if (log) log->push_back(s);
 }
@@ -261,7 +259,7 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
     out.source_features = extractFeatures(source, p, need_segments, &out.log, progress);
     out.target_features = extractFeatures(target, p, need_segments, &out.log, progress);
   }
-  out.seconds_features = since(t0);
+  out.seconds_features = secondsSince(t0);
   t0 = std::chrono::steady_clock::now();
   if (p.method == RegistrationMethod::Icp) {
     out.global.status = RegistrationStatus::Success;
@@ -273,14 +271,14 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
                                      &out.log, progress);
   }
   out.method_used = out.global.method;
-  out.seconds_global = since(t0);
+  out.seconds_global = secondsSince(t0);
   t0 = std::chrono::steady_clock::now();
   const bool refine = p.refine || p.method == RegistrationMethod::Icp;
   const bool settle = out.global.status == RegistrationStatus::Ambiguous && out.global.runner_up &&
                       p.candidates.refine_runner_up;
   if (refine && (out.global.ok() || settle)) refineCandidates(source, target, p, out, progress);
   if (out.candidates.empty()) out.candidates = unrefinedCandidates(out.global);
-  out.seconds_refine = since(t0);
+  out.seconds_refine = secondsSince(t0);
   out.report = assessRegistration(out.global, out.refinement ? &*out.refinement : nullptr, p.quality,
                                   out.candidates);
   addVisibilityEvidence(source, target, p.visibility, out.report);

@@ -33,16 +33,13 @@
 #include "simulation/presets.hpp"
 #include "simulation/scan_scene.hpp"
 #include "simulation/tls_scanner.hpp"
+#include "common/stopwatch.hpp"
 
 using namespace plumb;
 using namespace plumb::test;
 using plumb::bench::Peer;
 
 namespace {
-
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 std::string loadavg() {
   std::ifstream f("/proc/loadavg");
@@ -213,7 +210,7 @@ void runBigPair(double step_deg, bool sensor_origins) {
     tgt.viewpoint.reset();
   }
   std::printf("  source %zu points, target %zu points (simulated in %.1f s)\n", src.cloud.size(),
-              tgt.cloud.size(), since(t_sim));
+              tgt.cloud.size(), secondsSince(t_sim));
   const PipelineParams params;
   const RigidTransform truth = pose.inverse();
   const Eigen::Vector3d centre = src.cloud.bounds().center();
@@ -225,7 +222,7 @@ void runBigPair(double step_deg, bool sensor_origins) {
   auto t0 = std::chrono::steady_clock::now();
   clock.restart();
   const PipelineResult r = registerData(src.side(), tgt.side(), params, &progress);
-  const double total = since(t0);
+  const double total = secondsSince(t0);
   const PoseError e = poseError(r.transform(), truth, centre);
   std::printf("  END TO END %.2f s: %s via %s, rot %.4f deg trans %.4f m (features both sides "
               "%.2f s, global %.2f s, refine %.2f s); peak RSS %s%.0f MB\n",
@@ -237,10 +234,10 @@ void runBigPair(double step_deg, bool sensor_origins) {
   // 2) The same, side by side: features of each side timed separately.
   t0 = std::chrono::steady_clock::now();
   const FeatureSet ft = extractFeatures(tgt.side(), params, false);
-  const double s_tgt = since(t0);
+  const double s_tgt = secondsSince(t0);
   t0 = std::chrono::steady_clock::now();
   const FeatureSet fs = extractFeatures(src.side(), params, false);
-  const double s_src = since(t0);
+  const double s_src = secondsSince(t0);
   RegistrationSide ss = src.side(), ts = tgt.side();
   ss.features = &fs;
   ts.features = &ft;

@@ -1,4 +1,5 @@
 #include "pcl_peers.hpp"
+#include "common/stopwatch.hpp"
 
 #include <pcl/features/fpfh_omp.h>
 #include <pcl/features/normal_3d_omp.h>
@@ -21,10 +22,6 @@ using Xyz = pcl::PointXYZ;
 using Cloud = pcl::PointCloud<Xyz>;
 using Normals = pcl::PointCloud<pcl::Normal>;
 using Fpfh = pcl::PointCloud<pcl::FPFHSignature33>;
-
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 /// World points minus `origin` (float precision near the data), thinned by pcl::VoxelGrid.
 Cloud::Ptr thinned(const PointCloud& c, const Eigen::Vector3d& origin, double voxel) {
@@ -126,7 +123,7 @@ PeerTarget::PeerTarget(const PointCloud& target, const PeerParams& params)
   impl_->coarse_normals = normalsOf(impl_->coarse, params.normal_radius);
   impl_->coarse_fpfh = fpfhOf(impl_->coarse, impl_->coarse_normals, params.feature_radius);
   impl_->refine = withNormals(target, impl_->origin, params.refine_voxel, params.refine_normal_radius);
-  impl_->seconds_prepare = since(t0);
+  impl_->seconds_prepare = secondsSince(t0);
 }
 
 PeerTarget::~PeerTarget() = default;
@@ -188,7 +185,7 @@ PeerOutcome PeerTarget::run(Peer peer, const PointCloud& source) const {
       }
     }
   }
-  out.seconds = since(t0);
+  out.seconds = secondsSince(t0);
   out.returned = ok;
   // World: x -> origin + local(x - origin).
   const RigidTransform to_local(Eigen::Matrix3d::Identity(), -impl_->origin);

@@ -25,6 +25,7 @@
 #include "requirement_check.hpp"
 #include "simulation/presets.hpp"
 #include "suites.hpp"
+#include "common/stopwatch.hpp"
 
 using namespace plumb;
 using namespace plumb::verdict;
@@ -111,10 +112,6 @@ void printBuildings(SurveyCatalogue& data) {
   }
 }
 
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 bool ran(const std::vector<PairRecord>& all, const std::string& suite) {
   for (const auto& r : all)
     if (r.suite == suite) return true;
@@ -160,7 +157,7 @@ int main(int argc, char** argv) try {
   // `t0`: when the suite started (read after the suite ran: arguments have no order).
   auto append = [&](std::vector<PairRecord> v, const char* suite,
                     std::chrono::steady_clock::time_point t0) {
-    std::printf("  -- %s: %zu registrations in %.1f s\n", suite, v.size(), since(t0));
+    std::printf("  -- %s: %zu registrations in %.1f s\n", suite, v.size(), secondsSince(t0));
     for (auto& r : v) all.push_back(std::move(r));
   };
   if (o.suites.count("right")) {
@@ -202,7 +199,7 @@ int main(int argc, char** argv) try {
                 wrong_pairs, o.wrong_budget);
   std::printf("\nbench_verdict: %zu registrations, %.1f s in total (data simulation and features "
               "%.1f s)\n",
-              all.size(), since(t_start), data.secondsSpent());
+              all.size(), secondsSince(t_start), data.secondsSpent());
   return ok ? 0 : 1;
 } catch (const std::exception& e) {
   std::fprintf(stderr, "bench_verdict: %s\n", e.what());

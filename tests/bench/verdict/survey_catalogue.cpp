@@ -13,14 +13,11 @@
 #include "simulation/presets.hpp"
 #include "simulation/tls_scanner.hpp"
 #include "support/test_support.hpp"
+#include "common/stopwatch.hpp"
 
 namespace plumb::verdict {
 
 namespace {
-
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 bool isIfc(const std::string& name) {
   return name.size() > 4 && name.substr(name.size() - 4) == ".ifc";
@@ -110,7 +107,7 @@ const Building& SurveyCatalogue::building(const std::string& name) {
   Building b = isIfc(name) ? ifcBuilding(name, max_stations_) : generatedBuilding(name, max_stations_);
   if (b.model)
     b.bare = std::make_shared<const BimModel>(withoutFurniture(*b.model, b.glass, b.bare_glass));
-  const double s = since(t0);
+  const double s = secondsSince(t0);
   seconds_ += s;
   std::printf("  [data] %s: %s, %zu stations (%.1f s)\n", name.c_str(),
               b.usable() ? (std::to_string(b.model->mesh.triangles.size()) + " triangles").c_str()
@@ -127,7 +124,7 @@ SideData SurveyCatalogue::scanSide(PointCloud cloud, double seconds_so_far) {
   RegistrationSide side;
   side.cloud = &d.cloud;
   d.features = extractFeatures(side, params_, /*with_segments=*/true);
-  d.seconds = seconds_so_far + since(t0);
+  d.seconds = seconds_so_far + secondsSince(t0);
   seconds_ += d.seconds;
   return d;
 }
@@ -141,7 +138,7 @@ SideData SurveyCatalogue::modelSide(const std::string& label,
   side.model = d.model.get();
   d.features = extractFeatures(side, params_, /*with_segments=*/false);
   d.samples = sampleMeshSurface(d.model->mesh, params_.model_sample_spacing, params_.seed);
-  d.seconds = since(t0);
+  d.seconds = secondsSince(t0);
   seconds_ += d.seconds;
   std::printf("  [data] %s target: %zu edges, %zu surface samples (%.1f s)\n", label.c_str(),
               d.features.segments.size(), d.samples.size(), d.seconds);
@@ -160,7 +157,7 @@ const SideData& SurveyCatalogue::indoor(const std::string& name) {
     const std::uint64_t seed = 500 + std::hash<std::string>{}(name) % 1000;
     for (std::size_t i = 0; i < b.stations.size(); ++i)
       d.scans.push_back(simulateTls(scene, b.stations[i], tp, seed + i));
-    SideData side = scanSide(d.merged(true), since(t0));
+    SideData side = scanSide(d.merged(true), secondsSince(t0));
     std::printf("  [data] %s indoor: %zu points, %zu planes, %zu openings, %zu segments (%.1f s)\n",
                 name.c_str(), side.cloud.size(), side.features.planes.size(),
                 side.features.openings.size(), side.features.segments.size(), side.seconds);
@@ -175,7 +172,7 @@ const SideData& SurveyCatalogue::mms(const std::string& name) {
     const ScanScene scene(*b.model, b.glass);
     MmsParams mp;
     Scan scan = simulateMms(scene, streetTrajectory(b.footprint, mp), mp, 11);
-    SideData side = scanSide(std::move(scan.cloud), since(t0));
+    SideData side = scanSide(std::move(scan.cloud), secondsSince(t0));
     std::printf("  [data] %s MMS: %zu points (%.1f s)\n", name.c_str(), side.cloud.size(),
                 side.seconds);
     return side;

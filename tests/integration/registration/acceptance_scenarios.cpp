@@ -18,14 +18,11 @@
 #include "simulation/scan_scene.hpp"
 #include "simulation/tls_scanner.hpp"
 #include "support/test_support.hpp"
+#include "common/stopwatch.hpp"
 
 namespace plumb::test {
 
 namespace {
-
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 TlsParams tlsParams(double noise_mm) {
   TlsParams p;
@@ -126,7 +123,7 @@ Scenario makeScenario(const std::string& name, const PipelineParams& params, dou
       throw InputError("unknown scenario '" + name + "'");
     }
   }
-  s.seconds_simulation = since(t0);
+  s.seconds_simulation = secondsSince(t0);
   t0 = std::chrono::steady_clock::now();
   RegistrationSide side;
   if (s.model) {
@@ -136,7 +133,7 @@ Scenario makeScenario(const std::string& name, const PipelineParams& params, dou
     side.cloud = &s.target;
   }
   s.target_features = extractFeatures(side, params, /*with_segments=*/false);
-  s.seconds_target_features = since(t0);
+  s.seconds_target_features = secondsSince(t0);
   return s;
 }
 
@@ -174,7 +171,7 @@ CaseOutcome runPlumbCase(const Scenario& s, const RigidTransform& pose,
   tgt.features = &s.target_features;
   const PipelineResult r = registerData(src, tgt, params);
   CaseOutcome o;
-  o.seconds_total = since(t0);
+  o.seconds_total = secondsSince(t0);
   o.reported_success = r.success();
   o.method = r.method_used;
   o.verdict = r.report.verdict;
