@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
   const bool keep = argc > 3 && std::string(argv[3]) == "--keep";
   const std::size_t n = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 10'000'000;
   const std::filesystem::path dir = argc > 2 ? argv[2] : std::filesystem::temp_directory_path();
+  std::filesystem::create_directories(dir);  // ctest may run this before any other bench made it
   const auto path = dir / "plumb_bench_e57.e57";
 
   plumb::Dataset d;
