@@ -18,7 +18,7 @@ PACKAGES=(
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libvtk9-dev
   libgtest-dev libgmock-dev
   clang libclang-rt-14-dev
-  xvfb xauth libgl1-mesa-dri desktop-file-utils strace
+  xvfb xauth libgl1-mesa-dri desktop-file-utils strace chromium
 )
 
 deps() {

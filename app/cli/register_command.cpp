@@ -1,5 +1,5 @@
 // plumb-cli register SOURCE TARGET [--method auto|planes|openings|segments|icp] [--no-refine]
-//   [-o REGISTERED.{e57,ply,las}] [--transform T.json] [--report REPORT.json] [--seed N]
+//   [-o REGISTERED.{e57,ply,las}] [--transform T.json] [--report REPORT.{json,html}] [--seed N]
 //   [--params PARAMS.json] [--print-params] [--source-trajectory FILE] [--target-trajectory FILE]
 // Registers SOURCE onto TARGET (scans or models; a PLY/OBJ with faces or an IFC is a model).
 // The inputs are built with makeRegistrationInput, exactly like the desktop app.
@@ -20,11 +20,18 @@
 // not be read or the parameters are invalid (one-line error naming the file). Every output (-o with its extension, --transform,
 // --report) is checked once the inputs are read and before the registration runs: a bad one
 // is exit 1 with nothing written.
+// --report R.json writes the quality report's JSON; --report R.html the report to hand over
+// (core/report: verdict, every JSON figure with its meaning, distances, per-feature residuals,
+// plan and section pictures, sign-off block), also when the registration failed. --report
+// may be given more than once (e.g. both files of one registration).
 #include <nlohmann/json.hpp>
 
+#include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <vector>
 
 #include <unistd.h>
 
@@ -37,12 +44,16 @@
 #include "model/trajectory.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/registration_input.hpp"
+#include "registration/refine/icp_refinement.hpp"
+#include "report/html_report.hpp"
+#include "report/report_builder.hpp"
 
 namespace plumb::cli {
 namespace {
 
 struct RegisterOptions {
-  std::string source, target, method, output, transform, report, params;
+  std::string source, target, method, output, transform, params;
+  std::vector<std::string> reports;  ///< --report, once per file (.json and/or .html)
   std::string source_trajectory, target_trajectory;
   bool no_refine = false;
   bool print_params = false;
@@ -110,17 +121,58 @@ void load(Side& s, const std::string& path, const std::string& trajectory, const
   }
 }
 
+std::string lowerExtension(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (auto& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+bool isHtmlReport(const std::string& path) {
+  const std::string e = lowerExtension(path);
+  return e == ".html" || e == ".htm";
+}
+
+/// The JSON quality report, or the HTML report to hand over (a model source is shown by
+/// points sampled on its surface).
+void writeReport(const std::string& path, const RegisterOptions& o, const Side& src, const Side& tgt,
+                 const PipelineResult& r, std::uint64_t seed) {
+  if (!isHtmlReport(path)) {
+    writeFileAtomically(path, [&](std::ostream& out) { out << qualityReportToJson(r.report); });
+    return;
+  }
+  const PointCloud sampled = src.input.model ? sampleMeshSurface(src.input.model->mesh, 0.05, seed) : PointCloud();
+  report::ReportInputs in;
+  in.source_file = o.source;
+  in.target_file = o.target;
+  in.source = src.input.model ? &sampled : &src.input.cloud;
+  if (tgt.input.model) in.target_model = &*tgt.input.model;
+  else in.target_cloud = &tgt.input.cloud;
+  in.seed = seed;
+  const std::string html = report::reportHtml(report::buildRegistrationReport(in, r));
+  writeFileAtomically(path, [&](std::ostream& out) { out << html; });
+}
+
 /// Every output is checked before the registration runs, so a bad -o never comes after the
 /// transform was written.
 /// `model_source` unknown (a PLY holds either): the output extension decides.
+void checkReportExtension(const std::string& report) {
+  if (!isHtmlReport(report) && lowerExtension(report) != ".json")
+    throw InputError("register: --report '" + report + "' must end in .json (the quality report) or "
+                     ".html (the report to hand over)");
+}
+
 void checkOutputs(const RegisterOptions& o, std::optional<bool> model_source) {
   if (!o.output.empty())
     checkOutputPath(o.output, model_source.value_or(isModelFormat(formatFromExtension(o.output))));
-  for (const std::string* p : {&o.transform, &o.report})
-    if (!p->empty()) checkWritableTarget(*p);
-  const std::string* all[] = {&o.output, &o.transform, &o.report};
-  for (int a = 0; a < 3; ++a)
-    for (int b = a + 1; b < 3; ++b) {
+  std::vector<const std::string*> all{&o.output, &o.transform};
+  for (const auto& r : o.reports) {
+    checkReportExtension(r);
+    all.push_back(&r);
+  }
+  for (const std::string* p : all)
+    if (p != &o.output && !p->empty()) checkWritableTarget(*p);
+  for (std::size_t a = 0; a < all.size(); ++a)
+    for (std::size_t b = a + 1; b < all.size(); ++b) {
       std::error_code ec;
       if (!all[a]->empty() && (*all[a] == *all[b] || std::filesystem::equivalent(*all[a], *all[b], ec)))
         throw InputError("register: '" + *all[a] + "' is given for two outputs");
@@ -156,8 +208,7 @@ int run(const RegisterOptions& o) {
   const PipelineResult r = registerData(src.input.side(), tgt.input.side(), p, &progress);
   if (tty) std::cerr << "\r\033[K";
   for (const auto& line : r.log) std::cerr << "  " << line << "\n";
-  if (!o.report.empty())
-    writeFileAtomically(o.report, [&](std::ostream& out) { out << qualityReportToJson(r.report); });
+  for (const auto& path : o.reports) writeReport(path, o, src, tgt, r, p.seed);
   std::cout << qualityReportToText(r.report);
   const int code = verdictExitCode(r.report.level);
   if (r.report.level == VerdictLevel::Failed) {
@@ -208,7 +259,9 @@ void addRegisterCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--no-refine", opts->no_refine, "Skip the local ICP refinement");
   cmd->add_option("-o,--output", opts->output, "Write the registered SOURCE (e57, ply, las...)");
   cmd->add_option("--transform", opts->transform, "Write the transform (JSON or 4x4 text)");
-  cmd->add_option("--report", opts->report, "Write the quality report (JSON)");
+  cmd->add_option("--report", opts->reports,
+                  "Write the quality report: R.json (every figure) or R.html (the report to hand over); "
+                  "give it twice for both");
   cmd->add_option("--seed", opts->seed,
                   "Random seed of every step, 0 .. 9e15 (default 1; results are deterministic for a seed)");
   cmd->add_option("--params", opts->params,

@@ -1,0 +1,47 @@
+#pragma once
+// The report's pictures as inline SVG: point scatters (plan view, section), a histogram and a
+// bar chart. Coordinates are local to each picture's extent, so grid coordinates (x ~ 651,000)
+// never reach the SVG text.
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace plumb::report {
+
+/// Points of one layer of a scatter, already projected to the picture's 2D axes.
+struct ScatterLayer {
+  std::string name;    ///< legend text
+  std::string colour;  ///< CSS colour
+  std::vector<Eigen::Vector2d> points;
+};
+
+struct ScatterPicture {
+  std::string title;
+  std::string x_label, y_label;  ///< axis meaning, e.g. "east (m)"
+  Eigen::Vector2d min = Eigen::Vector2d::Zero(), max = Eigen::Vector2d::Ones();  ///< extent shown
+  std::vector<ScatterLayer> layers;
+};
+
+/// A scatter with equal scales on both axes, a scale bar and a legend.
+std::string scatterSvg(const ScatterPicture& picture, int width = 640, int height = 480);
+
+struct Bar {
+  std::string label;   ///< tooltip
+  double value = 0.0;
+  std::string colour;
+};
+
+struct BarPicture {
+  std::string title, x_label, y_label;
+  std::vector<Bar> bars;
+  std::vector<std::pair<std::string, double>> markers;  ///< vertical lines at bar positions (index)
+};
+
+/// Bars side by side, y from 0 to the largest value.
+std::string barsSvg(const BarPicture& picture, int width = 640, int height = 300);
+
+/// "&amp;" etc.: text safe inside SVG/HTML elements and attribute values.
+std::string escapeXml(const std::string& text);
+
+}  // namespace plumb::report
