@@ -33,6 +33,12 @@ int roleOf(const std::string& name) {
   if (local == "sensorOriginX") return SensorX;  // Plumb's extension: per-point sensor origin
   if (local == "sensorOriginY") return SensorY;  // (MMS trajectory), file frame like cartesian*
   if (local == "sensorOriginZ") return SensorZ;
+  static const std::pair<const char*, Role> las[] = {  // Plumb's extension: LAS attributes
+      {"classificationFlags", ClassificationFlags}, {"scannerChannel", ScannerChannel},
+      {"scanFlags", ScanFlags}, {"userData", UserData}, {"pointSourceId", PointSourceId},
+      {"scanAngle", ScanAngle}};
+  for (const auto& [n, r] : las)
+    if (local == n) return r;
   return -1;
 }
 

@@ -17,7 +17,9 @@ namespace plumb::e57::detail {
 enum Role {
   X, Y, Z, Range, Azimuth, Elevation, CartesianState, SphericalState, Intensity, Red, Green,
   Blue, Row, Column, ReturnIndex, ReturnCount, TimeStamp, NormalX, NormalY, NormalZ,
-  Classification, IntensityInvalid, ColorInvalid, TimeInvalid, SensorX, SensorY, SensorZ, RoleCount
+  Classification, IntensityInvalid, ColorInvalid, TimeInvalid, SensorX, SensorY, SensorZ,
+  // LAS attributes in Plumb's extension namespace (e57_extension_fields.hpp)
+  ClassificationFlags, ScannerChannel, ScanFlags, UserData, PointSourceId, ScanAngle, RoleCount
 };
 
 /// Role of a prototype field by name (extensions matched under any namespace prefix), or -1.

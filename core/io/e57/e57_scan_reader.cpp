@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "io/e57/e57_packets.hpp"
+#include "io/e57/e57_extension_fields.hpp"
 #include "io/e57/e57_point_fields.hpp"
 
 namespace plumb::e57 {
@@ -38,6 +39,7 @@ struct ScanLayout {
   int state_col = -1;      // the invalid-state field of the coordinates used, or -1
   bool colors = false, has_normals = false, has_grid = false, has_returns = false;
   bool has_intensity = false, has_time = false, has_class = false, has_origins = false;
+  bool has_las_fields = false;  // any of Plumb's LAS extension fields (e57_extension_fields.hpp)
   // Double and ScaledInteger coordinates keep their exact value through position residuals
   // (dropped at the end when negligible); single-precision floats need none.
   bool exact_locals = false;
@@ -67,6 +69,8 @@ ScanLayout layoutOf(PagedReader& file, const ScanInfo& info, const E57ReadOption
   l.has_time = r.has(TimeStamp);
   l.has_class = r.has(Classification);
   l.has_origins = r.hasAll(SensorX, SensorY, SensorZ);
+  for (Role las : {ClassificationFlags, ScannerChannel, ScanFlags, UserData, PointSourceId, ScanAngle})
+    l.has_las_fields |= r.has(las);
   const FieldSpec& first_axis = info.fields[l.cartesian ? r.column[X] : r.column[Range]];
   l.exact_locals = !(first_axis.type == FieldType::Float && first_axis.single);
   l.flag_direction = options.keep_direction_only && l.state_col >= 0;
@@ -93,6 +97,24 @@ void describeScan(const ScanInfo& info, const ScanLayout& l, const std::string& 
                                             : limitsText(fieldRange(info.fields[l.roles.column[Red]])));
 }
 
+// Plumb's LAS extension fields the scan has: f(column of the cloud, role).
+template <class F>
+void forEachLasField(PointCloud& c, const ScanLayout& l, F&& f) {
+  if (l.roles.has(ClassificationFlags)) f(c.classification_flags, ClassificationFlags);
+  if (l.roles.has(ScannerChannel)) f(c.scanner_channel, ScannerChannel);
+  if (l.roles.has(ScanFlags)) f(c.scan_flags, ScanFlags);
+  if (l.roles.has(UserData)) f(c.user_data, UserData);
+  if (l.roles.has(PointSourceId)) f(c.point_source_id, PointSourceId);
+  if (l.roles.has(ScanAngle)) f(c.scan_angle, ScanAngle);
+}
+
+// A field in Plumb's namespace is the scalar field Plumb wrote (without its prefix); other
+// extensions keep their qualified name.
+std::string scalarFieldName(const std::string& name) {
+  const std::string prefix = kPlumbPrefix;
+  return name.rfind(prefix, 0) == 0 ? name.substr(prefix.size()) : name;
+}
+
 // Attributes are sized for every record up front (the count was checked against the file
 // size) and trimmed to the kept points at the end: no per-point reallocation checks. Every kept
 // record writes every column it has: nothing is zeroed first (Column<T> maps large columns on
@@ -109,7 +131,8 @@ void sizeColumns(PointCloud& cloud, const ScanInfo& info, const ScanLayout& l, s
   if (l.has_time) resizeForOverwrite(cloud.timestamps, n);
   if (l.has_class) resizeForOverwrite(cloud.classification, n);
   if (l.has_origins) resizeForOverwrite(cloud.sensor_origins, n);
-  for (std::size_t f : l.roles.others) cloud.scalar_fields.push_back({info.fields[f].name, {}});
+  if (l.has_las_fields) forEachLasField(cloud, l, [n](auto& column, Role) { resizeForOverwrite(column, n); });
+  for (std::size_t f : l.roles.others) cloud.scalar_fields.push_back({scalarFieldName(info.fields[f].name), {}});
   if (l.flag_direction) cloud.scalar_fields.push_back({"direction_only", {}});
   for (auto& f : cloud.scalar_fields) resizeForOverwrite(f.values, n);
 }
@@ -282,6 +305,18 @@ void writeClassification(PointCloud& cloud, const Block& b, const ScanLayout& l,
   for (std::size_t j = 0; j < b.sel.size(); ++j) cloud.classification[out + j] = clampTo<std::uint8_t>(v[b.sel[j]]);
 }
 
+void writeLasFields(PointCloud& cloud, const Block& b, const ScanLayout& l, std::size_t out) {
+  forEachLasField(cloud, l, [&](auto& column, Role role) {
+    using T = typename std::decay_t<decltype(column)>::value_type;
+    const double* v = l.field(b.cols, role);
+    for (std::size_t j = 0; j < b.sel.size(); ++j) {
+      const double x = v[b.sel[j]];
+      if constexpr (std::is_floating_point_v<T>) column[out + j] = static_cast<T>(x);
+      else column[out + j] = clampTo<T>(x);
+    }
+  });
+}
+
 // Fields without a role, then the direction-only flag when asked, as scalar fields.
 void writeScalarFields(PointCloud& cloud, const Block& b, const ScanLayout& l, std::size_t out) {
   const std::size_t m = b.sel.size();
@@ -312,6 +347,7 @@ void appendBlock(PointCloud& cloud, Block& b, std::size_t n, const ScanLayout& l
   if (l.has_normals) writeNormals(cloud, b, l, s.out);
   if (l.has_origins) writeOrigins(cloud, b, l, s.out);
   if (l.has_class) writeClassification(cloud, b, l, s.out);
+  if (l.has_las_fields) writeLasFields(cloud, b, l, s.out);
   writeScalarFields(cloud, b, l, s.out);
   s.out += b.sel.size();
 }
@@ -328,6 +364,8 @@ void trimColumns(PointCloud& cloud, std::size_t out) {
   trim(cloud.row), trim(cloud.column), trim(cloud.return_index), trim(cloud.return_count);
   trim(cloud.timestamps), trim(cloud.classification), trim(cloud.sensor_origins);
   trim(cloud.color_invalid);
+  trim(cloud.classification_flags), trim(cloud.scanner_channel), trim(cloud.scan_flags);
+  trim(cloud.user_data), trim(cloud.point_source_id), trim(cloud.scan_angle);
   for (auto& f : cloud.scalar_fields) trim(f.values);
 }
 

@@ -6,6 +6,7 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "io/e57/e57_extension_fields.hpp"
 #include "io/e57/e57_header.hpp"
 #include "io/e57/e57_packet_writer.hpp"
 #include "io/e57/e57_page_writer.hpp"
@@ -215,6 +216,7 @@ std::vector<OutField> describeScan(const PointCloud& cloud, const E57WriteOption
       fields.push_back(scaledAxisField(names_o[a], origin, qo, r.first, r.second, 0));
     }
   }
+  e57::appendExtensionFields(cloud, fields);  // LAS attributes, scalar fields
   for (const auto& f : fields) w.prototype.push_back(f.spec);
   w.records = n;
   return fields;

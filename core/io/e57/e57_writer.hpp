@@ -10,8 +10,9 @@
 // from color_invalid); rowIndex/columnIndex
 // with indexBounds (all six children, as E57RefImpl tools require); returnIndex (0-based)
 // and returnCount; timeStamp (Float double); normals as the nor:normalX/Y/Z extension.
-// Classification, the LAS fields and custom scalar fields have no standard E57 field and
-// are not written.
+// Classification, the other LAS fields and custom scalar fields have no standard E57 field:
+// they are written as extension fields in Plumb's namespace and read back by Plumb
+// (e57_extension_fields.hpp); other readers skip them.
 // The file is streamed (one packet and one page in memory), has no index packets and writes
 // empty scans in the form both libE57Format 3.x and E57RefImpl tools read (docs/E57_FORMAT.md
 // pitfall 8), and is replaced atomically.

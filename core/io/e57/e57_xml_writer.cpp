@@ -116,7 +116,7 @@ std::string buildXml(const std::string& file_guid, const std::string& coordinate
   x.s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
         "<e57Root type=\"Structure\" xmlns=\"http://www.astm.org/COMMIT/E57/2010-e57-v1.0\" "
         "xmlns:nor=\"http://www.libe57.org/E57_NOR_surface_normals.txt\" "
-        "xmlns:plumb=\"https://plumb.invalid/E57_sensor_origin\">\n";
+        "xmlns:plumb=\"https://plumb.invalid/E57_extensions\">\n";
   x.str("formatName", "ASTM E57 3D Imaging Data File");
   x.str("guid", file_guid);
   x.integer("versionMajor", 1);

@@ -74,6 +74,21 @@ TEST(CliLossless, LasToLasKeepsEveryStandardField) {
   EXPECT_EQ(readAll(dir / "out.txt"), readAll(dir / "in.txt"));
 }
 
+// Through E57 too: the LAS attributes travel as Plumb's E57 extension fields.
+TEST(CliLossless, LasToE57ToLasKeepsEveryStandardField) {
+  const auto dir = scratchDir("cli_convert_las_e57_fields");
+  const std::string py = std::string("python3 ") + PLUMB_LAS_FIELDS_PY;
+  ASSERT_EQ(std::system((py + " make '" + (dir / "in.las").string() + "'").c_str()), 0);
+  CliResult r = plumbCli(dir, "convert in.las mid.e57");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = plumbCli(dir, "convert mid.e57 out.las");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"in", "out"})
+    ASSERT_EQ(std::system((py + " dump '" + (dir / (std::string(f) + ".las")).string() + "' > '" +
+                           (dir / (std::string(f) + ".txt")).string() + "'").c_str()), 0);
+  EXPECT_EQ(readAll(dir / "out.txt"), readAll(dir / "in.txt"));
+}
+
 TEST(CliLossless, FieldNamesWithSpacesRoundTrip) {
   const auto dir = scratchDir("cli_field_names");
   writeAll(dir / "a.csv", "x,y,z,my field\n1,2,3,4.5\n5,6,7,8.5\n");

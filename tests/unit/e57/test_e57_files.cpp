@@ -183,19 +183,22 @@ TEST(E57Files, Las2e57NoImagesTag) {
   ASSERT_EQ(d.scans.size(), 1u);
   const Scan& s = d.scans[0];
   expectScan(s, 153, V(-0.5, -0.5, -0.5), V(0.5, 0.5, 0.5),
-             {"red", "green", "blue", "return_index", "return_count", "las:pointSourceId"}, 1e-9);
+             {"red", "green", "blue", "return_index", "return_count", "point_source_id"}, 1e-9);
   // 16-bit colours (max 65280 = 255 << 8) scale to 8 bits by their top byte.
   std::uint8_t max_red = 0;
   for (const auto& c : s.cloud.colors) max_red = std::max(max_red, c[0]);
   EXPECT_EQ(max_red, 255);
   EXPECT_EQ(s.cloud.return_index[0], 2);  // stored 1 (0-based in E57) -> 2
+  // las2e57's "las:pointSourceId" is the LAS point source ID (1 for every point: e57_inspect.py).
+  ASSERT_EQ(s.cloud.point_source_id.size(), 153u);
+  for (auto id : s.cloud.point_source_id) EXPECT_EQ(id, 1);
 }
 
 TEST(E57Files, ColourRepresentation) {
   const Dataset d = read("libe57format_3rdParty_las2e57_ColourRepresentation.e57");
   ASSERT_EQ(d.scans.size(), 1u);
   expectScan(d.scans[0], 153, V(-0.5, -0.5, -0.5), V(0.5, 0.5, 0.5),
-             {"red", "green", "blue", "return_index", "return_count", "las:pointSourceId"}, 1e-9);
+             {"red", "green", "blue", "return_index", "return_count", "point_source_id"}, 1e-9);
 }
 
 TEST(E57Files, ColouredCubeDouble) {

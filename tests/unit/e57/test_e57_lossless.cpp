@@ -117,3 +117,50 @@ TEST(E57Lossless, ControlCharactersAndInvalidUtf8InNamesKeepTheXmlWellFormed) {
 }
 
 }  // namespace
+
+namespace {
+
+/// Every LAS attribute and three scalar fields whose names XML or the reader would not take.
+PointCloud lasAttributedCloud() {
+  PointCloud c = colouredLine(4);
+  c.classification = {2, 6, 9, 2};
+  c.classification_flags = {0, 1, 4, 8};
+  c.scanner_channel = {0, 1, 2, 3};
+  c.scan_flags = {0, 1, 2, 3};
+  c.user_data = {0, 7, 255, 1};
+  c.point_source_id = {1, 65535, 300, 2};
+  c.scan_angle = {-12.5f, 0.006f, 30.0f, -0.018f};
+  auto field = [](const char* name, std::initializer_list<float> v) { return ScalarField{name, Column<float>(v)}; };
+  c.scalar_fields.push_back(field("my field", {1.5f, -2.0f, 3.25f, 0.0f}));
+  c.scalar_fields.push_back(field("normalX", {9, 8, 7, 6}));
+  c.scalar_fields.push_back(field("2x", {0.1f, 0.2f, 0.3f, 0.4f}));
+  return c;
+}
+
+}  // namespace
+
+TEST(E57Lossless, LasAttributesAndScalarFieldsRoundTripAsExtensionFields) {
+  const auto dir = test::scratchDir("e57_las_fields");
+  const PointCloud c = lasAttributedCloud();
+  writeE57(dir / "a.e57", Dataset::fromCloud(c));
+  const std::string text = inspect(dir / "a.e57");
+  EXPECT_EQ(text.find("ERROR"), std::string::npos) << text;
+  EXPECT_NE(text.find("plumb:pointSourceId range [1, 65535]"), std::string::npos) << text;
+  EXPECT_NE(text.find("plumb:my_field"), std::string::npos) << text;
+  const PointCloud back = readE57(dir / "a.e57").scans[0].cloud;
+  EXPECT_EQ(back.classification, c.classification);
+  EXPECT_EQ(back.classification_flags, c.classification_flags);
+  EXPECT_EQ(back.scanner_channel, c.scanner_channel);
+  EXPECT_EQ(back.scan_flags, c.scan_flags);
+  EXPECT_EQ(back.user_data, c.user_data);
+  EXPECT_EQ(back.point_source_id, c.point_source_id);
+  ASSERT_EQ(back.scan_angle.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(back.scan_angle[i], c.scan_angle[i]);  // bit-exact
+  EXPECT_FALSE(back.hasNormals());  // "normalX" stays a scalar field, not a normal
+  ASSERT_EQ(back.scalar_fields.size(), 3u);
+  EXPECT_EQ(back.scalar_fields[0].name, "my_field");
+  EXPECT_EQ(back.scalar_fields[1].name, "normalX_2");
+  EXPECT_EQ(back.scalar_fields[2].name, "_2x");
+  for (std::size_t f = 0; f < 3; ++f)
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(back.scalar_fields[f].values[i], c.scalar_fields[f].values[i]);
+}

@@ -215,7 +215,9 @@ def inspect(path):
         if 'isColorInvalid' in v:
             print('  isColorInvalid set=%d' % sum(1 for x, ok in zip(v['isColorInvalid'], keep)
                                                  if ok and x != 0))
-        for name in ('intensity', 'colorRed', 'rowIndex', 'columnIndex', 'returnIndex', 'timeStamp'):
+        extensions = sorted(n for n in v if ':' in n)
+        for name in ('intensity', 'colorRed', 'rowIndex', 'columnIndex', 'returnIndex', 'timeStamp',
+                     *extensions):
             if name in v:
                 vals = [x for x, ok in zip(v[name], keep) if ok]
                 if vals:
