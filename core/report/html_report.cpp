@@ -151,7 +151,11 @@ void candidates(std::ostringstream& h, const QualityReport& q) {
 }
 
 void pictures(std::ostringstream& h, const std::vector<Picture>& pics) {
-  if (pics.empty()) return;
+  if (pics.empty()) {
+    h << "<h2>Pictures</h2><p>None: the registration failed, so there is no result to show. The "
+         "placements considered are listed below.</p>\n";
+    return;
+  }
   h << "<h2>Pictures</h2>";
   for (const auto& p : pics) h << "<figure>" << p.svg << "<figcaption>" << esc(p.caption) << "</figcaption></figure>\n";
 }
@@ -180,8 +184,8 @@ std::string reportHtml(const RegistrationReport& r) {
   inputs(h, r);
   transform(h, r.quality);
   pictures(h, r.pictures);
-  distances(h, r.distances);
-  residualSummary(h, r.residuals);
+  if (r.distances.sampled > 0) distances(h, r.distances);
+  if (!r.residuals.empty()) residualSummary(h, r.residuals);
   candidates(h, r.quality);
   figures(h, leaves);
   signOff(h);

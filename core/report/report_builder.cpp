@@ -102,6 +102,7 @@ RegistrationReport buildRegistrationReport(const ReportInputs& in, const Pipelin
   r.created_utc = nowUtc();
   r.seed = in.seed;
   r.plumb_version = PLUMB_VERSION_STRING;
+  if (result.report.level == VerdictLevel::Failed) return r;  // no transform to show or measure
   const RigidTransform& t = result.report.transform;
   r.residuals = featureResiduals(result.source_features, result.target_features, t);
   const PointCloud sample = in.source->subset(strideIndices(in.source->size(), p.max_distance_samples));

@@ -28,6 +28,8 @@ struct ReportParams {
   PictureParams pictures;
 };
 
+/// A failed registration has no transform to show: its report has the verdict, the inputs and
+/// the placements considered, without pictures, distances or residuals.
 /// Throws InputError when the source or the target is missing.
 RegistrationReport buildRegistrationReport(const ReportInputs& inputs, const PipelineResult& result,
                                            const ReportParams& params = {}, Progress* progress = nullptr);

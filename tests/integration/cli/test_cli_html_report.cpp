@@ -2,6 +2,8 @@
 // JSON report of the same registration, and a real browser (headless Chromium) opens it.
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include <nlohmann/json.hpp>
 
 
@@ -77,4 +79,23 @@ TEST(HtmlReportOption, AnotherExtensionIsRefusedBeforeAnythingRuns) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("must end in .json"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "report.txt"));
+}
+
+// A registration that fails (one flat patch onto the room: nothing holds it) still gets its
+// report, with the verdict and no pictures of a result it does not have.
+TEST(HtmlReportOption, AFailedRegistrationGetsAReportWithoutPictures) {
+  const auto dir = test::scratchDir("cli_html_report_failed");
+  std::ostringstream ply;
+  ply << "ply\nformat ascii 1.0\nelement vertex 3600\nproperty float x\nproperty float y\n"
+         "property float z\nend_header\n";
+  for (int i = 0; i < 60; ++i)
+    for (int j = 0; j < 60; ++j) ply << i * 0.05 << " " << j * 0.05 << " 0\n";
+  test::writeAll(dir / "patch.ply", ply.str());
+  const auto r = plumbCli(dir, "register patch.ply " + shellQuote(roomScan(1)) + " --report report.html");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  const std::string html = test::readAll(dir / "report.html");
+  EXPECT_NE(html.find("Verdict: failed"), std::string::npos);
+  EXPECT_NE(html.find("None: the registration failed"), std::string::npos);
+  EXPECT_EQ(html.find("<svg"), std::string::npos);
+  EXPECT_FALSE(htmlFigures(html).empty());
 }
