@@ -1,9 +1,10 @@
 // plumb-import: runs one third-party parser on one file in its own process and writes the
 // result to its standard output as a stream: assimp for models (io/mesh/model_stream.hpp, run
-// by plumb::readMesh). The reader that runs it kills it at its time limit and turns a crash
-// into a FileError; not meant to be run by hand.
+// by plumb::readMesh), PCL's PCD reader with --pcd (io/pcd/pcd_stream.hpp, run by
+// plumb::readPcd). The reader that runs it kills it at its time limit and turns a crash into a
+// FileError; not meant to be run by hand.
 //
-//   plumb-import [--memory-mib N] FILE
+//   plumb-import [--memory-mib N] [--pcd] FILE
 //
 // Exit status: 0 result written, 1 error record written, 2 usage, 3 out of memory (under
 // --memory-mib, set here as RLIMIT_AS). A stack overflow is noted on stderr before the
@@ -20,6 +21,8 @@
 #include "io/isolation/import_helper/helper_process.hpp"
 #include "io/mesh/helper/assimp_reader.hpp"
 #include "io/mesh/model_stream.hpp"
+#include "io/pcd/helper/pcd_pcl_reader.hpp"
+#include "io/pcd/pcd_stream.hpp"
 
 namespace {
 
@@ -37,7 +40,13 @@ bool readModel(int out, const std::filesystem::path& path) {
   return plumb::model_stream::writeModel(out, helper::importWithAssimp(path));
 }
 
+bool readPcd(int out, const std::filesystem::path& path) {
+  const plumb::PclPcd pcd = plumb::readWithPcl(path, plumb::checkPcdFile(path));
+  return plumb::pcd_stream::writeCloud(out, pcd.layout, pcd.points);
+}
+
 const Format kModel{"assimp", readModel, plumb::model_stream::writeFailure};
+const Format kPcd{"PCL", readPcd, plumb::pcd_stream::writeFailure};
 
 /// Reads and answers; never returns. std::_Exit: the result is written, nothing is left to tidy
 /// (no leak-checker verdict on the parsers either, which would change the exit status under
@@ -62,18 +71,23 @@ int main(int argc, char** argv) {
   char here;
   prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the process that waits for us
   unsigned long long memory_mib = 0;
+  const Format* format = &kModel;
   int i = 1;
   if (i + 1 < argc && std::string(argv[i]) == "--memory-mib") {
     memory_mib = std::strtoull(argv[i + 1], nullptr, 10);
     i += 2;
   }
+  if (i < argc && std::string(argv[i]) == "--pcd") {
+    format = &kPcd;
+    ++i;
+  }
   if (i != argc - 1) {
-    helper::say("usage: plumb-import [--memory-mib N] FILE (run by Plumb to import models)\n");
+    helper::say("usage: plumb-import [--memory-mib N] [--pcd] FILE (run by Plumb to import models and PCD)\n");
     return 2;
   }
   helper::installFaultHandler(&here);
   helper::limitMemory(memory_mib);
   const int out = helper::privateOutput();
   helper::simulateFaultIfAsked();
-  answer(kModel, out, argv[i]);
+  answer(*format, out, argv[i]);
 }
