@@ -29,11 +29,13 @@ helper_failure::Limits limitsFor(const std::filesystem::path& path) {
                                            helper_failure::defaultMemoryMib());
 }
 
-/// Bytes of the helper's stream: the records, plus the layout (at most 8 bytes per header byte:
-/// a field named in n characters is encoded in n + 13 bytes) and the framing.
+/// Bytes of the helper's stream: the records (< 2^52: checkPcdFile bounded both factors), plus
+/// the layout (at most 8 bytes per header byte: a field named in n characters is encoded in
+/// n + 13 bytes) and the framing; never more than the helper may hold.
 std::size_t expectedStream(const PcdHeader& h, const helper_failure::Limits& limits) {
   const std::uint64_t bytes = h.points * h.recordSize() + 8 * h.data_offset + 4096;
-  return static_cast<std::size_t>(std::min<std::uint64_t>(bytes, std::uint64_t{limits.memory_mib} << 20));
+  const std::uint64_t most = limits.memory_mib ? std::uint64_t{limits.memory_mib} << 20 : bytes;
+  return static_cast<std::size_t>(std::min(bytes, most));
 }
 
 [[noreturn]] void crashed(const std::filesystem::path& path, const import_process::Outcome& o) {
