@@ -1,6 +1,6 @@
 #!/bin/sh
 # Builds the .deb from a configured and built tree (plumb and plumb-cli must be built) and checks
-# it: contents (binaries with the plumb-import helper, desktop entry, icon, MIME types for .e57/.las/.ply/.ifc and the
+# it: contents (binaries with the plumb-import helper for models and PCD, desktop entry, icon, MIME types for .e57/.las/.ply/.ifc and the
 # project file), the Depends line computed by dpkg-shlibdeps, and the installed binaries run
 # from a temporary root (plumb-cli --version and info on a real LAS file; plumb links Qt6, not
 # Qt5; with a display, plumb --screenshot renders the file). Registered as the CTest
@@ -60,6 +60,13 @@ if [ -f "$ifc" ]; then
   root/usr/bin/plumb-cli info "$ifc" >ifc.txt || fail "installed plumb-cli info $ifc failed (plumb-import?)"
   grep -q "IfcWall: 4" ifc.txt || { cat ifc.txt >&2; fail "plumb-cli info does not report the 4 walls"; }
   echo "installed plumb-cli info $(basename "$ifc"): 4 walls, through the installed plumb-import"
+fi
+# PCD files are read by PCL inside the same helper (plumb-import --pcd).
+pcd=$(dirname "$las")/../pcd/room_scan1.pcd
+if [ -f "$pcd" ]; then
+  root/usr/bin/plumb-cli info "$pcd" >pcd.txt || fail "installed plumb-cli info $pcd failed (plumb-import --pcd?)"
+  grep -q "112586" pcd.txt || { cat pcd.txt >&2; fail "plumb-cli info does not report the 112586 points"; }
+  echo "installed plumb-cli info $(basename "$pcd"): 112586 points, through the installed plumb-import --pcd"
 fi
 ldd root/usr/bin/plumb >ldd.txt
 grep -q "libQt6Widgets" ldd.txt || fail "installed plumb does not link Qt6 Widgets"

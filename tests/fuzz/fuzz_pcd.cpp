@@ -1,20 +1,71 @@
-// libFuzzer target for the PCD reader (tests/fuzz/CMakeLists.txt explains the convention):
-// every input goes through readPcd - our header and size checks, then PCL's PCDReader (not
-// instrumented: fuzz_pcd.cmake links the installed PCL; its heap corruption shows up later as
-// an ASan report on our side) and the conversion. Any input must either read or raise
-// plumb::FileError. PLUMB_FUZZ_PCD_HEADER_ONLY=1 fuzzes only our checks (checkPcdHeader).
-// Runs so far: tests/unit/pcd/regressions/README.md.
+// libFuzzer target for the PCD reader (tests/fuzz/CMakeLists.txt explains the convention).
+// readPcd runs PCL in the plumb-import helper, where libFuzzer cannot see, so this target runs
+// both halves in its own process:
+//   1. the in-process read: our header and size checks, PCL's PCDReader (not instrumented:
+//      fuzz_pcd.cmake links the installed PCL; its heap corruption shows up later as an ASan
+//      report on our side) and the conversion (readPcdInProcess);
+//   2. the stream: what PCL read, encoded as plumb-import --pcd sends it (pcd_stream), decoded
+//      and converted as readPcd does; it must give the same points as 1;
+//   3. the decoder on the raw input bytes, as if the helper had sent them (a damaged stream
+//      must be a std::runtime_error, never undefined behaviour).
+// Any input must either read or raise plumb::FileError. PLUMB_FUZZ_PCD_HEADER_ONLY=1 fuzzes
+// only our checks (checkPcdHeader). Runs so far: tests/unit/pcd/regressions/README.md.
+#include <sys/mman.h>
+#include <unistd.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <stdexcept>
 
 #include "fuzz_input_file.hpp"
+#include "io/pcd/helper/pcd_pcl_reader.hpp"
+#include "io/pcd/pcd_convert.hpp"
 #include "io/pcd/pcd_io.hpp"
+#include "io/pcd/pcd_stream.hpp"
+
+namespace {
+
+/// What pcd_stream::writeCloud sends for `pcd` (through a memfd: a pipe would fill up).
+std::string encoded(const plumb::PclPcd& pcd) {
+  static const int fd = memfd_create("fuzz_pcd_stream", 0);
+  if (fd < 0 || ftruncate(fd, 0) != 0 || lseek(fd, 0, SEEK_SET) != 0) std::abort();
+  if (!plumb::pcd_stream::writeCloud(fd, pcd.layout, pcd.points)) std::abort();
+  std::string bytes(static_cast<std::size_t>(lseek(fd, 0, SEEK_CUR)), '\0');
+  if (pread(fd, bytes.data(), bytes.size(), 0) != static_cast<ssize_t>(bytes.size())) std::abort();
+  return bytes;
+}
+
+/// 1 and 2: the in-process read, and the same records through the stream.
+plumb::Dataset readBothWays(const std::filesystem::path& path) {
+  const plumb::PcdHeader header = plumb::checkPcdFile(path);
+  const plumb::PclPcd pcd = plumb::readWithPcl(path, header);
+  plumb::Dataset direct = plumb::pcdToDataset(path, header.data, pcd.layout, pcd.points);
+  const std::string bytes = encoded(pcd);
+  const auto decoded = plumb::pcd_stream::decode(bytes);
+  const auto& cloud = std::get<plumb::pcd_stream::Cloud>(decoded);
+  const plumb::Dataset streamed = plumb::pcdToDataset(path, header.data, cloud.layout, cloud.points);
+  if (streamed.pointCount() != direct.pointCount() || streamed.metadata != direct.metadata) std::abort();
+  return direct;
+}
+
+/// 3: the input as a helper stream.
+void decodeRaw(const std::uint8_t* data, std::size_t size) {
+  try {
+    const auto out = plumb::pcd_stream::decode({reinterpret_cast<const char*>(data), size});
+    if (const auto* cloud = std::get_if<plumb::pcd_stream::Cloud>(&out))
+      plumb::pcdToDataset("stream", "binary", cloud->layout, cloud->points);
+  } catch (const std::runtime_error&) {  // FileError (no x y z) is one too
+  }
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const bool header_only = std::getenv("PLUMB_FUZZ_PCD_HEADER_ONLY") != nullptr;
+  decodeRaw(data, size);
   return plumb::fuzz::readDatasetInput(data, size, ".pcd", [](const auto& path) {
-    if (!header_only) return plumb::readPcd(path);
+    if (!header_only) return readBothWays(path);
     plumb::checkPcdHeader(path);
     return plumb::Dataset();
   });

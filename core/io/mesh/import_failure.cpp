@@ -1,9 +1,7 @@
 #include "io/mesh/import_failure.hpp"
 
 #include <csignal>
-#include <cstring>
 #include <fstream>
-#include <sstream>
 #include <unordered_set>
 
 #include "io/mesh/file_extension.hpp"
@@ -12,28 +10,10 @@
 namespace plumb::import_failure {
 namespace {
 
+using helper_failure::lastLine;
+using helper_failure::signalName;
+
 constexpr const char* kWhatToDo = "export the model again from the authoring tool, or as glTF/OBJ, and import that file";
-
-std::string signalName(int sig) {
-  switch (sig) {
-    case SIGSEGV: return "SIGSEGV, segmentation fault";
-    case SIGABRT: return "SIGABRT, aborted";
-    case SIGBUS: return "SIGBUS, bus error";
-    case SIGFPE: return "SIGFPE, arithmetic error";
-    case SIGILL: return "SIGILL, illegal instruction";
-    case SIGKILL: return "SIGKILL";
-    default: return "signal " + std::to_string(sig) + ", " + strsignal(sig);
-  }
-}
-
-/// The last non-empty line the helper printed (assimp's assertion, our stack-overflow note).
-std::string lastLine(const std::string& text) {
-  std::istringstream in(text);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
-  return last;
-}
 
 [[noreturn]] void crashed(const std::filesystem::path& file, const import_process::Outcome& o) {
   const std::string note = lastLine(o.error_tail);
@@ -74,26 +54,12 @@ std::string danglingReference(const std::filesystem::path& ifc, FileLocation& wh
 }
 
 void raise(const std::filesystem::path& file, const import_process::Outcome& o, const Limits& limits) {
-  if (o.timed_out) {
-    std::ostringstream s;
-    s << "importing this model took longer than the time limit of " << limits.seconds
-      << " s and was stopped (assimp is slow on very large polygons and some damaged files); "
-         "raise the limit with PLUMB_IMPORT_TIMEOUT=SECONDS, or simplify/triangulate the model "
-         "and export it again";
-    throw FileError(file, s.str());
-  }
-  if (o.exited && o.exit_code == 3)
-    throw FileError(file, "importing this model ran out of memory under the limit of " +
-                              std::to_string(limits.memory_mib) +
-                              " MiB; raise it with PLUMB_IMPORT_MEMORY_MB=MIB, or split the model");
-  if (!o.exited && o.signal == SIGKILL)
-    throw FileError(file, "the model import was killed (SIGKILL), probably by the system for lack "
-                          "of memory; close other programs, or split the model");
-  if (!o.exited) crashed(file, o);
-  const std::string said = lastLine(o.error_tail);
-  throw FileError(file, "the model import helper ended with exit status " + std::to_string(o.exit_code) +
-                            " and no result" + (said.empty() ? "" : " (" + said + ")") +
-                            "; if this persists, reinstall Plumb");
+  static const helper_failure::Wording kWording{
+      "importing this model", "the model import",
+      " (assimp is slow on very large polygons and some damaged files); raise the limit with "
+      "PLUMB_IMPORT_TIMEOUT=SECONDS, or simplify/triangulate the model and export it again",
+      "", "split the model"};
+  helper_failure::raise(file, o, limits, kWording, [&](const import_process::Outcome& out) { crashed(file, out); });
 }
 
 }  // namespace plumb::import_failure

@@ -4,14 +4,11 @@
 #include <filesystem>
 
 #include "common/error.hpp"
-#include "io/mesh/import_process.hpp"
+#include "io/isolation/helper_failure.hpp"
 
 namespace plumb::import_failure {
 
-struct Limits {
-  double seconds;
-  unsigned long long memory_mib;
-};
+using Limits = helper_failure::Limits;
 
 [[noreturn]] void raise(const std::filesystem::path& file, const import_process::Outcome& outcome,
                         const Limits& limits);

@@ -2,17 +2,16 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <fstream>
 #include <optional>
 #include <system_error>
 
 #include "common/error.hpp"
+#include "io/isolation/import_process.hpp"
 #include "io/mesh/file_extension.hpp"
 #include "io/mesh/ifc_georef.hpp"
 #include "io/mesh/ifc_map_conversion.hpp"
 #include "io/mesh/import_failure.hpp"
-#include "io/mesh/import_process.hpp"
 #include "io/mesh/mesh_io.hpp"
 #include "io/mesh/model_stream.hpp"
 
@@ -64,44 +63,19 @@ IfcPlacement ifcPlacement(const std::filesystem::path& path) {
   return p;
 }
 
-unsigned long long defaultMemoryMib() {
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
-  if (pages <= 0 || page <= 0) return 0;
-  return static_cast<unsigned long long>(pages) * static_cast<unsigned long long>(page) / 4 * 3 >> 20;
-}
-
-std::filesystem::path helperOrThrow(const std::filesystem::path& file) {
-  std::string searched;
-  auto helper = import_process::findHelper(searched);
-  if (helper.empty())
-    throw FileError(file, "cannot import models: the helper program plumb-import is missing (looked for " +
-                              searched + "); reinstall Plumb");
-  return helper;
-}
-
 /// The helper's output as a model, or the FileError it or its end describe.
 BimModel interpret(const std::filesystem::path& file, const import_process::Outcome& o,
                    const import_failure::Limits& limits) {
-  if (o.timed_out || !o.exited || o.exit_code > 1 || o.output.empty()) import_failure::raise(file, o, limits);
-  std::variant<BimModel, model_stream::ImportFailure> result;
-  try {
-    result = model_stream::decode(o.output);
-  } catch (const std::exception& e) {
-    throw FileError(file, std::string("the model import helper sent a damaged result (") + e.what() + ")");
-  }
-  if (auto* failure = std::get_if<model_stream::ImportFailure>(&result))
-    throw FileError(file, failure->message, failure->where);
-  return std::move(std::get<BimModel>(result));
+  return helper_failure::resultOrThrow(file, o, "the model import helper", model_stream::decode,
+                                       [&] { import_failure::raise(file, o, limits); });
 }
 
 }  // namespace
 
 ImportLimits ImportLimits::fromEnvironment() {
-  ImportLimits l;
-  if (const char* s = std::getenv("PLUMB_IMPORT_TIMEOUT"); s && std::atof(s) > 0) l.seconds = std::atof(s);
-  if (const char* m = std::getenv("PLUMB_IMPORT_MEMORY_MB"); m && std::strtoull(m, nullptr, 10) > 0)
-    l.memory_mib = std::strtoull(m, nullptr, 10);
-  return l;
+  const ImportLimits defaults;
+  const auto l = helper_failure::environmentLimits(defaults.seconds, defaults.memory_mib);
+  return {l.seconds, l.memory_mib};
 }
 
 BimModel readMesh(const std::filesystem::path& path, Progress* progress, const ImportLimits& limits) {
@@ -109,15 +83,16 @@ BimModel readMesh(const std::filesystem::path& path, Progress* progress, const I
   if (!std::filesystem::is_regular_file(path, ec)) throw FileError(path, "no such file");
   if (std::filesystem::file_size(path, ec) == 0) throw FileError(path, "file is empty (0 bytes)");
   reportProgress(progress, 0.0, "importing model");
-  const auto helper = helperOrThrow(path);
-  const import_failure::Limits used{limits.seconds, limits.memory_mib ? limits.memory_mib : defaultMemoryMib()};
+  const auto helper = helper_failure::helperOrThrow(path, "import models");
+  const import_failure::Limits used{limits.seconds,
+                                    limits.memory_mib ? limits.memory_mib : helper_failure::defaultMemoryMib()};
   const IfcPlacement placement = ifcPlacement(path);
   const auto& shift = placement.shift;
   std::optional<TempIfc> copy;
   import_process::Outcome outcome;
   try {
     if (shift) copy.emplace(shift->text);
-    outcome = import_process::run(helper, copy ? copy->path() : path, used.seconds, used.memory_mib, progress);
+    outcome = import_process::run({helper, {}, copy ? copy->path() : path, used.seconds, used.memory_mib, 0}, progress);
   } catch (const std::system_error& e) {  // no pipe, no process, no temporary file
     throw FileError(path, std::string("cannot run the model import helper ") + helper.string() + ": " + e.what());
   }

@@ -2,27 +2,24 @@
 // The binary stream the model import helper (plumb-import) writes on its output and readMesh
 // decodes: either a model or the error the import ended with.
 //
-// Layout (native byte order; both ends are the same build): "PLUMBMDL", u32 version, u8 kind.
+// Layout (io/isolation/helper_stream.hpp): "PLUMBMDL", u32 version 2, u8 kind.
 // kind 1, model: string format; u64 n + n x 3 double vertices; u64 n + n x 3 u32 triangles;
 // u64 n + n u32 triangle elements; u64 n + n x (string type, name, guid) elements; u64 n +
 // n x 3 float normals; u64 n + n x 3 u8 colours.
-// kind 2, error: string message; u8 has line + u64 line; string element.
-// Both end with "END!". Strings are u32 length + bytes. The decoder checks every count against
+// kind 2, error: the failure record of helper_stream.hpp.
+// Both end with "END!". The decoder checks every count against
 // the bytes left and every index against its table, so a damaged stream is an error, not UB.
 #include <string>
 #include <string_view>
 #include <variant>
 
-#include "common/error.hpp"
+#include "io/isolation/helper_stream.hpp"
 #include "model/bim_model.hpp"
 
 namespace plumb::model_stream {
 
 /// An import that ended with an error the helper could describe.
-struct ImportFailure {
-  std::string message;
-  FileLocation where;
-};
+using ImportFailure = helper_stream::Failure;
 
 /// Writes to a file descriptor, buffered; false if the descriptor refused the bytes.
 bool writeModel(int fd, const BimModel& model);

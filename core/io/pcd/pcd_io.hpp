@@ -11,6 +11,15 @@
 // coordinate are removed on reading.
 // The VIEWPOINT is recorded in the metadata ("viewpoint": tx ty tz qw qx qy qz) and not
 // applied to the points (PCL does not apply it either).
+//
+// Isolation (issue 12): readPcd checks the header and the data size itself (pcd_header.hpp),
+// then runs PCL's reader in the plumb-import helper process (plumb-import --pcd FILE,
+// io/isolation/), which sends the layout and the raw records back over a pipe
+// (pcd_stream.hpp); they are converted where they arrive (pcd_convert.hpp), without PCL.
+// A crash inside PCL, the time limit (kPcdBaseSeconds + file size / kPcdBytesPerSecond, or
+// PLUMB_IMPORT_TIMEOUT seconds) and the memory limit (3/4 of the physical memory, or
+// PLUMB_IMPORT_MEMORY_MB) end in a FileError naming the file, PCL and what happened; Plumb
+// itself is unaffected. Cancelling the Progress kills the helper.
 #include <filesystem>
 
 #include "common/progress.hpp"
@@ -18,11 +27,15 @@
 
 namespace plumb {
 
+/// The helper's time limit for a PCD file: 60 s + 1 s per 5 MB.
+constexpr double kPcdBaseSeconds = 60;
+constexpr double kPcdBytesPerSecond = 5e6;
+
 /// Throws FileError (file, what, where) for malformed headers, truncated data, bad LZF blocks.
 Dataset readPcd(const std::filesystem::path& path, Progress* progress = nullptr);
 
 /// The header and size checks readPcd runs before PCL reads the file: throws FileError when
-/// the header is malformed or the data section cannot hold what it declares. (fuzz_pcd.)
+/// the header is malformed or the data section cannot hold what it declares (pcd_header.hpp).
 void checkPcdHeader(const std::filesystem::path& path);
 
 struct PcdWriteOptions {

@@ -2,31 +2,16 @@
 // and a damaged stream (cut short, a count or an index out of range) is an error, never UB.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <stdexcept>
 #include <string>
 #include <tuple>
 
 #include "io/mesh/model_stream.hpp"
+#include "support/piped_bytes.hpp"
 
 using namespace plumb;
 
 namespace {
-
-/// What writeModel/writeFailure put through a pipe.
-template <class Write>
-std::string written(Write write) {
-  int fds[2];
-  EXPECT_EQ(pipe(fds), 0);
-  EXPECT_TRUE(write(fds[1]));
-  close(fds[1]);
-  std::string bytes;
-  char buf[4096];
-  for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) > 0;) bytes.append(buf, static_cast<std::size_t>(n));
-  close(fds[0]);
-  return bytes;
-}
 
 BimModel twoTriangles() {
   BimModel m;
@@ -43,7 +28,7 @@ BimModel twoTriangles() {
 
 TEST(ModelStream, RoundTripKeepsEveryField) {
   const BimModel m = twoTriangles();
-  const auto out = model_stream::decode(written([&](int fd) { return model_stream::writeModel(fd, m); }));
+  const auto out = model_stream::decode(test::pipedBytes([&](int fd) { return model_stream::writeModel(fd, m); }));
   const BimModel& r = std::get<BimModel>(out);
   EXPECT_EQ(r.format, "ifc");
   EXPECT_EQ(r.mesh.vertices, m.mesh.vertices);  // doubles bit for bit
@@ -61,7 +46,7 @@ TEST(ModelStream, FailureKeepsMessageAndLocation) {
   where.line = 11879;
   where.element = "entity #20909 IfcSpace";
   const auto out = model_stream::decode(
-      written([&](int fd) { return model_stream::writeFailure(fd, {"assimp cannot read this IFC", where}); }));
+      test::pipedBytes([&](int fd) { return model_stream::writeFailure(fd, {"assimp cannot read this IFC", where}); }));
   const auto& f = std::get<model_stream::ImportFailure>(out);
   EXPECT_EQ(f.message, "assimp cannot read this IFC");
   EXPECT_EQ(f.where.line.value_or(0), 11879u);
@@ -70,17 +55,17 @@ TEST(ModelStream, FailureKeepsMessageAndLocation) {
 
 TEST(ModelStream, DamagedStreamsAreErrors) {
   BimModel m = twoTriangles();
-  const std::string good = written([&](int fd) { return model_stream::writeModel(fd, m); });
+  const std::string good = test::pipedBytes([&](int fd) { return model_stream::writeModel(fd, m); });
   for (std::size_t cut : {std::size_t{0}, std::size_t{5}, std::size_t{13}, good.size() / 2, good.size() - 1})
     EXPECT_THROW(model_stream::decode(good.substr(0, cut)), std::runtime_error) << cut;
   std::string huge_count = good;
   huge_count[8 + 4 + 1 + 4 + 3 + 7] = '\x7f';  // top byte of the vertex count (after magic, version, kind, "ifc")
   EXPECT_THROW(model_stream::decode(huge_count), std::runtime_error);
   m.mesh.triangles[1][2] = 4;  // no vertex 4
-  EXPECT_THROW(model_stream::decode(written([&](int fd) { return model_stream::writeModel(fd, m); })),
+  EXPECT_THROW(model_stream::decode(test::pipedBytes([&](int fd) { return model_stream::writeModel(fd, m); })),
                std::runtime_error);
   m = twoTriangles();
   m.triangle_element[1] = 2;  // no element 2
-  EXPECT_THROW(model_stream::decode(written([&](int fd) { return model_stream::writeModel(fd, m); })),
+  EXPECT_THROW(model_stream::decode(test::pipedBytes([&](int fd) { return model_stream::writeModel(fd, m); })),
                std::runtime_error);
 }

@@ -1,6 +1,6 @@
 // posix_spawn rather than fork(): the GUI and the CLI run TBB and Qt threads, and spawn does not
 // copy the parent's (possibly huge) address space. The helper sets its own memory limit.
-#include "io/mesh/import_process.hpp"
+#include "io/isolation/import_process.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -20,6 +20,7 @@ namespace plumb::import_process {
 namespace {
 
 constexpr std::size_t kErrorTail = 4096;
+constexpr int kPipeBytes = 1 << 20;
 
 struct Pipe {
   int read = -1, write = -1;
@@ -66,12 +67,11 @@ pid_t spawn(const std::vector<std::string>& args, Pipe& out, Pipe& err) {
   return pid;
 }
 
-/// Appends what is readable on `fd` to `to`; false at end of file.
-bool drain(int fd, std::string& to) {
-  char buf[1 << 16];
-  const ssize_t n = ::read(fd, buf, sizeof buf);
+/// Appends what is readable on `fd` to `to`, through `buf`; false at end of file.
+bool drain(int fd, std::string& to, std::vector<char>& buf) {
+  const ssize_t n = ::read(fd, buf.data(), buf.size());
   if (n < 0) return errno == EINTR || errno == EAGAIN;
-  to.append(buf, static_cast<std::size_t>(n));
+  to.append(buf.data(), static_cast<std::size_t>(n));
   return n > 0;
 }
 
@@ -90,17 +90,23 @@ int reap(pid_t pid) {
 
 }  // namespace
 
-Outcome run(const std::filesystem::path& helper, const std::filesystem::path& file, double seconds,
-            unsigned long long memory_mib, Progress* progress) {
+Outcome run(const Request& request, Progress* progress) {
   using Clock = std::chrono::steady_clock;
   Pipe out, err;
-  std::vector<std::string> args{helper.string()};
-  if (memory_mib > 0) args.insert(args.end(), {"--memory-mib", std::to_string(memory_mib)});
-  args.push_back(file.string());
+  std::vector<std::string> args{request.helper.string()};
+  if (request.memory_mib > 0) args.insert(args.end(), {"--memory-mib", std::to_string(request.memory_mib)});
+  args.insert(args.end(), request.options.begin(), request.options.end());
+  args.push_back(request.file.string());
   const auto start = Clock::now();
-  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-  const pid_t pid = spawn(args, out, err);
+  const auto deadline =
+      start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(request.seconds));
   Outcome o;
+  o.output.reserve(request.expected_output);
+  // A PCD's records are hundreds of MB: 1 MiB pipe buffer and reads (the default 64 KiB took
+  // 16 times the system calls and context switches). Best effort: the pipe works either way.
+  fcntl(out.read, F_SETPIPE_SZ, kPipeBytes);
+  std::vector<char> buf(kPipeBytes);
+  const pid_t pid = spawn(args, out, err);
   bool out_open = true, err_open = true;
   while (out_open || err_open) {
     const auto now = Clock::now();
@@ -112,8 +118,8 @@ Outcome run(const std::filesystem::path& helper, const std::filesystem::path& fi
     pollfd fds[2] = {{out_open ? out.read : -1, POLLIN, 0}, {err_open ? err.read : -1, POLLIN, 0}};
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count();
     if (poll(fds, 2, static_cast<int>(std::min<long long>(left + 1, 100))) < 0 && errno != EINTR) break;
-    if (out_open && fds[0].revents) out_open = drain(out.read, o.output);
-    if (err_open && fds[1].revents) err_open = drain(err.read, o.error_tail);
+    if (out_open && fds[0].revents) out_open = drain(out.read, o.output, buf);
+    if (err_open && fds[1].revents) err_open = drain(err.read, o.error_tail, buf);
     if (o.error_tail.size() > 2 * kErrorTail) o.error_tail.erase(0, o.error_tail.size() - kErrorTail);
   }
   if (out_open || err_open) kill(pid, SIGKILL);

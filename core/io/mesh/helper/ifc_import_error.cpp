@@ -4,7 +4,7 @@
 
 #include "common/error.hpp"
 #include "io/mesh/file_extension.hpp"
-#include "io/mesh/import_helper/assimp_reader.hpp"
+#include "io/mesh/helper/assimp_reader.hpp"
 
 namespace plumb::import_helper {
 namespace {

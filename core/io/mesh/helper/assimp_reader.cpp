@@ -1,6 +1,6 @@
 // assimp scene -> BimModel, inside the plumb-import helper. The node tree is walked with an
 // explicit stack: deeply nested files must not overflow ours once assimp has read them.
-#include "io/mesh/import_helper/assimp_reader.hpp"
+#include "io/mesh/helper/assimp_reader.hpp"
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
