@@ -3,13 +3,27 @@
 #include "ui/app_context.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
+#include "ui/tasks/task_manager.hpp"
 
 namespace plumb::ui {
 
-void RemoveLayerReaction::onTriggered() {
+RemoveLayerReaction::RemoveLayerReaction(QAction* action, AppContext& app) : Reaction(action, app) {
+  connect(&app.layers, &LayerTreePanel::currentLayerChanged, this, &Reaction::updateEnableState);
+  connect(&app.scene, &Scene::layersChanged, this, &Reaction::updateEnableState);
+  followTasks();
+}
+
+Layer* RemoveLayerReaction::currentRoot() const {
   Layer* layer = app().layers.currentLayer();
   while (layer && layer->parent()) layer = layer->parent();
-  if (layer) app().scene.removeLayer(layer);
+  return layer;
 }
+
+bool RemoveLayerReaction::canRun() const {
+  const Layer* layer = currentRoot();
+  return layer && !app().tasks.holds(layer);
+}
+
+void RemoveLayerReaction::onTriggered() { app().scene.removeLayer(currentRoot()); }
 
 }  // namespace plumb::ui

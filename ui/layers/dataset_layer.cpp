@@ -76,7 +76,7 @@ Task* DatasetLayer::requestStyle(const PointStyle& style, TaskManager& tasks,
     s->setPointSize(style_.point_size);
     jobs.push_back(s->colorJob(style_, b.min.z(), b.max.z()));
   }
-  std::weak_ptr<char> alive = alive_;
+  std::weak_ptr<const char> alive = lifetime();
   coloring_task_ = tasks.run(
       QObject::tr("Colouring %1").arg(name()),
       [this, jobs = std::move(jobs), generation, alive,

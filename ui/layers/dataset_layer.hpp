@@ -73,10 +73,6 @@ class DatasetLayer : public Layer {
   /// The trajectory file attached (empty: none).
   const QString& trajectoryPath() const { return trajectory_; }
 
-  /// Expires when this layer is destroyed: background work that outlives the layer checks it
-  /// before touching the layer.
-  std::weak_ptr<const char> lifetime() const { return alive_; }
-
   /// True once when the colours no longer match the style (new distances, or a transform
   /// change under Elevation colours); Scene::layerChanged then recolours in the background.
   bool takeStaleColours();
@@ -95,7 +91,6 @@ class DatasetLayer : public Layer {
   std::uint64_t style_generation_ = 0;  ///< bumped by every setStyle / requestStyle
   bool coloring_pending_ = false;
   QPointer<Task> coloring_task_;
-  std::shared_ptr<char> alive_ = std::make_shared<char>();  ///< expires with this layer
 };
 
 }  // namespace plumb::ui

@@ -195,6 +195,10 @@ void RegistrationPanel::forgetLayer(Layer* layer) {
 
 void RegistrationPanel::updateEnabled() {
   const bool inputs = source_->count() >= 2;
+  // A running task keeps the layers it started with: the choice of them waits.
+  source_->setEnabled(!busy_);
+  target_->setEnabled(!busy_);
+  use_features_->setEnabled(!busy_);
   detect_->setEnabled(!busy_ && inputs);
   register_->setEnabled(!busy_ && inputs);
   distance_->setEnabled(!busy_ && inputs);
@@ -245,8 +249,11 @@ bool RegistrationPanel::startRegistration() {
   updateEnabled();
   app_.log.info(tr("Registering %1 onto %2 (%3)")
                     .arg(s->name(), t->name(), QString::fromStdString(methodName(params_.method))));
-  Task* task = ui::startRegistration(app_, *s, *t, params_, use_features_->isChecked(),
-                                 [this](std::shared_ptr<const PipelineResult> r) { applyResult(r); });
+  Task* task = ui::startRegistration(
+      app_, *s, *t, params_, use_features_->isChecked(),
+      [this](std::shared_ptr<const PipelineResult> r, Layer& source, const RigidTransform& start) {
+        applyResult(std::move(r), source, start);
+      });
   connect(task, &Task::finished, this, [this](bool ok, const QString& message) {
     busy_ = false;
     updateEnabled();
@@ -260,7 +267,8 @@ bool RegistrationPanel::startRegistration() {
   return true;
 }
 
-void RegistrationPanel::applyResult(std::shared_ptr<const PipelineResult> result) {
+void RegistrationPanel::applyResult(std::shared_ptr<const PipelineResult> result, Layer& source,
+                                    const RigidTransform& start) {
   result_ = std::move(result);
   report_->showResult(*result_);
   for (const auto& line : result_->log) app_.log.info(QString::fromStdString(line));
@@ -268,15 +276,15 @@ void RegistrationPanel::applyResult(std::shared_ptr<const PipelineResult> result
     app_.log.error(tr("Registration failed: %1").arg(QString::fromStdString(result_->report.verdict)));
     return;
   }
-  Layer* s = sourceLayer();
-  if (!s) return;
+  // The layer the task started with (not the one selected now), from where it was then.
+  Layer* s = &source;
   before_->blockSignals(true);
   before_->setChecked(false);
   before_->blockSignals(false);
   result_layer_ = s;
-  before_transform_ = layerTransform(*s);
+  before_transform_ = start;
   after_transform_ = result_->transform() * before_transform_;
-  auto* command = new TransformCommand(app_.scene, *s, before_transform_, after_transform_,
+  auto* command = new TransformCommand(app_.scene, *s, layerTransform(*s), after_transform_,
                                        tr("Register %1 (%2)").arg(s->name(),
                                                                   QString::fromStdString(result_->method_used)));
   app_.undo.push(command);  // applies it
@@ -330,14 +338,13 @@ bool RegistrationPanel::colourByDistance() {
   busy_ = true;
   updateEnabled();
   const double max = distance_params_.max_distance;
-  auto* source = static_cast<DatasetLayer*>(s);
   const QString what = t->kind() == LayerKind::Model ? tr("cloud-to-mesh") : tr("cloud-to-cloud");
   Task* task = startDistanceComputation(
       app_, *s, *t, distance_params_,
-      [this, source, max, what](std::shared_ptr<const LayerDistances> d) {
+      [this, max, what](std::shared_ptr<const LayerDistances> d, DatasetLayer& source) {
         distances_ = d;
-        source->setDistances(d->per_scan, max);
-        app_.scene.layerChanged(source);
+        source.setDistances(d->per_scan, max);
+        app_.scene.layerChanged(&source);
         legend_->show(max, tr("Distance (m)"));
         histogram_->setHistogram(distanceHistogram(d->all.distances, 0.0, max, kHistogramBins));
         const DistanceResult& a = d->all;

@@ -69,7 +69,8 @@ class RegistrationPanel : public QWidget {
  private:
   void rebuildLayerCombos();
   void updateEnabled();
-  void applyResult(std::shared_ptr<const PipelineResult> result);
+  void applyResult(std::shared_ptr<const PipelineResult> result, Layer& source,
+                   const RigidTransform& start);
   void forgetLayer(Layer* layer);
   bool checkInputs(Layer*& source, Layer*& target);
 

@@ -1,0 +1,172 @@
+// The Registration dock keeps its promises while it works and after (issue 17): a running task
+// holds its layers (Remove layer and Open project wait, the layer choice is locked), and a
+// result whose layer went away anyway is dropped instead of landing on another layer. On a
+// small synthetic room (tests/gui/room_scene.hpp) so each task takes a second or two.
+#include <QApplication>
+#include <QComboBox>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTest>
+
+#include <fstream>
+
+#include "gui/menu_actions.hpp"
+#include "gui/open_window.hpp"
+#include "gui/room_scene.hpp"
+#include "support/test_support.hpp"
+#include "ui/actions/file_dialogs.hpp"
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/layer_transform.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/panels/layer_tree_panel.hpp"
+#include "ui/panels/log_panel.hpp"
+#include "ui/registration/registration_panel.hpp"
+#include "ui/registration/registration_tasks.hpp"
+#include "ui/tasks/task_manager.hpp"
+#include "ui/view/surface_format.hpp"
+
+using namespace plumb;
+using namespace plumb::ui;
+
+namespace {
+
+constexpr int kTaskTimeoutMs = 120000;
+
+/// An empty project: opening it would clear the scene.
+QString emptyProject() {
+  static const QString path = [] {
+    const auto file = test::scratchDir("gui_registration_dock") / "empty.plumb.json";
+    std::ofstream(file) << R"({"plumb-project": 1, "layers": []})";
+    return QString::fromStdString(file.string());
+  }();
+  return path;
+}
+
+}  // namespace
+
+class GuiRegistrationDockTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void init() {
+    test::showMainWindow(window_, QSize(1400, 900));
+    if (QTest::currentTestFailed()) return;
+    AppContext& app = window_->context();
+    scan_ = &app.scene.addDataset(test::roomScan(0.1, test::scanOffset(), "scan"));
+    reference_ = &app.scene.addDataset(test::roomScan(0.08, RigidTransform(), "reference"));
+    RegistrationPanel& panel = *app.registration;
+    panel.setSourceLayer(scan_);
+    panel.setTargetLayer(reference_);
+    panel.setMethod(RegistrationMethod::Icp);
+    for (auto signal : {&RegistrationPanel::featuresDetected, &RegistrationPanel::registrationFinished,
+                        &RegistrationPanel::distancesComputed})
+      connect(&panel, signal, this, [this](bool ok) {
+        lastOk_ = ok;
+        ++finished_;
+      });
+    setFileChooser([](FileRequest, const QString&, const QString&, const QString&) {
+      return QStringList{emptyProject()};
+    });
+  }
+  void cleanup() {
+    setFileChooser({});
+    window_.reset();
+  }
+
+  void tasks_data() {
+    QTest::addColumn<QString>("button");
+    QTest::newRow("detect features") << "detectFeatures";
+    QTest::newRow("register") << "register";
+    QTest::newRow("colour by distance") << "colourByDistance";
+  }
+
+  // While a task runs, nothing the user can do removes or swaps the layers it works on; when
+  // it is done, the actions come back and the result is on the layers it started with.
+  void aRunningTaskHoldsItsLayers_data() { tasks_data(); }
+  void aRunningTaskHoldsItsLayers() {
+    QFETCH(QString, button);
+    AppContext& app = window_->context();
+    RegistrationPanel& panel = *app.registration;
+    QAction* remove = test::menuAction(*window_, "Edit", "Remove layer");
+    QAction* open = test::menuAction(*window_, "File", "Open project...");
+    QVERIFY(remove && open);
+    app.layers.setCurrentLayer(scan_);
+    QVERIFY(remove->isEnabled() && open->isEnabled());
+
+    const int done = startTask(button);
+    auto* source = panel.findChild<QComboBox*>("sourceLayer");
+    auto* target = panel.findChild<QComboBox*>("targetLayer");
+    QVERIFY(!source->isEnabled() && !target->isEnabled());
+    for (Layer* layer : {scan_, reference_}) {
+      app.layers.setCurrentLayer(layer);
+      QVERIFY2(!remove->isEnabled(), qPrintable(layer->name()));
+      remove->trigger();
+    }
+    QVERIFY(!open->isEnabled());
+    open->trigger();
+    QCOMPARE(app.scene.layers().size(), std::size_t{2});
+
+    QVERIFY(waitForTask(done));
+    QVERIFY2(lastOk_, qPrintable(app.log.toPlainText()));
+    QVERIFY(source->isEnabled() && target->isEnabled());
+    QVERIFY(remove->isEnabled() && open->isEnabled());
+    QCOMPARE(panel.sourceLayer(), scan_);
+    if (button == "register") {
+      // ICP put the scan back where the reference is; the reference did not move.
+      QVERIFY(RigidTransform::translationError(layerTransform(*scan_), test::scanOffset().inverse()) < 0.01);
+      QVERIFY(layerTransform(*reference_).isIdentity());
+    }
+  }
+
+  // A layer removed by other means while a task runs (the scene API, a script): the task
+  // finishes with an error naming it, and its result goes nowhere (before, the registration
+  // moved whatever was selected as the source by then, the others touched freed layers).
+  void aResultWhoseLayerWentAwayIsDropped_data() { tasks_data(); }
+  void aResultWhoseLayerWentAwayIsDropped() {
+    QFETCH(QString, button);
+    AppContext& app = window_->context();
+    const int done = startTask(button);
+    app.scene.removeLayer(scan_);
+    scan_ = nullptr;
+    QVERIFY(waitForTask(done));
+    QVERIFY(!lastOk_);
+    QVERIFY2(app.log.toPlainText().contains("'scan.ply' was removed"), qPrintable(app.log.toPlainText()));
+    QVERIFY(layerTransform(*reference_).isIdentity());
+    QVERIFY(featureOverlay(*reference_) == nullptr);
+    QVERIFY(!static_cast<DatasetLayer*>(reference_)->hasDistances());
+  }
+
+ private:
+  /// Clicks the dock's `button`; returns how many results the panel reported before.
+  int startTask(const QString& button) {
+    RegistrationPanel& panel = *window_->context().registration;
+    auto* b = panel.findChild<QPushButton*>(button);
+    if (!b || !b->isEnabled()) return -1;
+    const int before = finished_;
+    QTest::mouseClick(b, Qt::LeftButton);
+    return before;
+  }
+  bool waitForTask(int before) {
+    if (before < 0) return false;
+    // Recolouring the distances runs after: let every task end before the window goes.
+    return QTest::qWaitFor([&] { return finished_ > before; }, kTaskTimeoutMs) &&
+           QTest::qWaitFor([&] { return window_->context().tasks.runningCount() == 0; },
+                           kTaskTimeoutMs);
+  }
+
+  std::unique_ptr<MainWindow> window_;
+  Layer* scan_ = nullptr;
+  Layer* reference_ = nullptr;
+  int finished_ = 0;
+  bool lastOk_ = false;
+};
+
+int main(int argc, char** argv) {
+  setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  QCoreApplication::setOrganizationName("PlumbTests");
+  GuiRegistrationDockTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_gui_registration_dock.moc"
