@@ -17,6 +17,7 @@
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/panels/focus_wheel.hpp"
 #include "ui/panels/histogram_widget.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/panels/param_panel.hpp"
@@ -39,9 +40,9 @@ const RegistrationMethod kMethods[] = {RegistrationMethod::Auto, RegistrationMet
 RegistrationPanel::RegistrationPanel(AppContext& app, QWidget* parent)
     : QWidget(parent),
       app_(app),
-      source_(new QComboBox(this)),
-      target_(new QComboBox(this)),
-      method_(new QComboBox(this)),
+      source_(new FocusWheel<QComboBox>(this)),
+      target_(new FocusWheel<QComboBox>(this)),
+      method_(new FocusWheel<QComboBox>(this)),
       use_features_(new QCheckBox(tr("Use detected features"), this)),
       groups_(new QToolBox(this)),
       detect_(new QPushButton(tr("Detect features"), this)),

@@ -4,7 +4,9 @@
 // small synthetic room (tests/gui/room_scene.hpp) so each task takes a second or two.
 #include <QApplication>
 #include <QComboBox>
+#include <QLabel>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -136,7 +138,59 @@ class GuiRegistrationDockTest : public QObject {
     QVERIFY(!static_cast<DatasetLayer*>(reference_)->hasDistances());
   }
 
+  // The wheel over the dock scrolls past the parameters; it changes a value only once the
+  // user clicked into it, the changed value's label turns bold, and the group's "Reset to
+  // defaults" puts it back (before, scrolling the dock turned "Maximum planes" from 60 to 63).
+  void theWheelChangesOnlyFocusedParameters() {
+    AppContext& app = window_->context();
+    RegistrationPanel& panel = *app.registration;
+    auto* planes = panel.findChild<QSpinBox*>("max-planes");
+    auto* method = panel.findChild<QComboBox*>("method");
+    QVERIFY(planes && method);
+    const int defaults = panel.params().plane_extraction.max_planes;
+    const int method_index = method->currentIndex();
+    QVERIFY(!planes->hasFocus() && !method->hasFocus());
+    wheel(planes, -3);
+    wheel(method, -1);
+    QCOMPARE(planes->value(), defaults);
+    QCOMPARE(panel.params().plane_extraction.max_planes, defaults);
+    QCOMPARE(method->currentIndex(), method_index);
+    QLabel* label = labelFor(panel, "Maximum planes");
+    QVERIFY(label && !label->font().bold());
+
+    window_->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+    planes->setFocus(Qt::MouseFocusReason);
+    QTRY_VERIFY(planes->hasFocus());
+    wheel(planes, 1);
+    QVERIFY(planes->value() != defaults);
+    QCOMPARE(panel.params().plane_extraction.max_planes, planes->value());
+    QVERIFY(label->font().bold());
+    QVERIFY(label->toolTip().contains(QString::number(defaults)));
+
+    auto* reset = planes->parentWidget()->findChild<QPushButton*>("resetToDefaults");
+    QVERIFY(reset && reset->isEnabled());
+    QTest::mouseClick(reset, Qt::LeftButton);
+    QCOMPARE(planes->value(), defaults);
+    QCOMPARE(panel.params().plane_extraction.max_planes, defaults);
+    QVERIFY(!label->font().bold());
+    QVERIFY(!reset->isEnabled());
+  }
+
  private:
+  /// One wheel notch (`notches` of them, up when positive) over the middle of `w`, delivered
+  /// the way Qt delivers it (to the widget, then its parents while ignored).
+  static void wheel(QWidget* w, int notches) {
+    const QPointF at(w->width() / 2.0, w->height() / 2.0);
+    QWheelEvent e(at, w->mapToGlobal(at), QPoint(), QPoint(0, 120 * notches), Qt::NoButton,
+                  Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(w, &e);
+  }
+  static QLabel* labelFor(const QWidget& panel, const QString& text) {
+    for (QLabel* l : panel.findChildren<QLabel*>())
+      if (l->text() == text) return l;
+    return nullptr;
+  }
   /// Clicks the dock's `button`; returns how many results the panel reported before.
   int startTask(const QString& button) {
     RegistrationPanel& panel = *window_->context().registration;
