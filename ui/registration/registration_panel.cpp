@@ -21,6 +21,7 @@
 #include "ui/panels/histogram_widget.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/panels/param_panel.hpp"
+#include "ui/registration/default_layers.hpp"
 #include "ui/registration/quality_report_view.hpp"
 #include "ui/registration/registration_tasks.hpp"
 #include "ui/registration/transform_command.hpp"
@@ -123,6 +124,8 @@ RegistrationPanel::RegistrationPanel(AppContext& app, QWidget* parent)
     for (int g = 0; g < groups_->count(); ++g)
       groups_->setItemEnabled(g, paramGroupUsedBy(panels_[std::size_t(g)].first, params_.method));
   });
+  for (QComboBox* c : {source_, target_})
+    connect(c, &QComboBox::activated, this, [this] { chosen_ = true; });
   connect(detect_, &QPushButton::clicked, this, [this] { detectFeatures(); });
   connect(register_, &QPushButton::clicked, this, [this] { startRegistration(); });
   connect(accept_, &QPushButton::clicked, this, &RegistrationPanel::accept);
@@ -136,6 +139,10 @@ RegistrationPanel::RegistrationPanel(AppContext& app, QWidget* parent)
 }
 
 RegistrationPanel::~RegistrationPanel() = default;
+
+void RegistrationPanel::selectLayer(QComboBox& combo, const Layer* layer) {
+  combo.setCurrentIndex(combo.findData(QVariant::fromValue(const_cast<void*>(static_cast<const void*>(layer)))));
+}
 
 bool RegistrationPanel::legendVisible() const { return legend_->visible(); }
 
@@ -154,10 +161,12 @@ Layer* RegistrationPanel::targetLayer() const {
 }
 
 void RegistrationPanel::setSourceLayer(const Layer* layer) {
-  source_->setCurrentIndex(source_->findData(QVariant::fromValue(const_cast<void*>(static_cast<const void*>(layer)))));
+  chosen_ = true;
+  selectLayer(*source_, layer);
 }
 void RegistrationPanel::setTargetLayer(const Layer* layer) {
-  target_->setCurrentIndex(target_->findData(QVariant::fromValue(const_cast<void*>(static_cast<const void*>(layer)))));
+  chosen_ = true;
+  selectLayer(*target_, layer);
 }
 
 void RegistrationPanel::setMethod(RegistrationMethod method) {
@@ -177,10 +186,15 @@ void RegistrationPanel::rebuildLayerCombos() {
                    QVariant::fromValue(static_cast<void*>(l.get())));
     c->blockSignals(false);
   }
-  // Defaults: the first layer moves onto the second.
-  if (s) setSourceLayer(s);
-  if (t) setTargetLayer(t);
-  else if (target_->count() > 1) target_->setCurrentIndex(1);
+  if (app_.scene.layers().empty()) chosen_ = false;
+  // The user's choice while both are still there; until then (or after) the default pair.
+  selectLayer(*source_, s);
+  selectLayer(*target_, t);
+  if (!chosen_ || !sourceLayer() || !targetLayer() || sourceLayer() == targetLayer()) {
+    const LayerPair pair = defaultRegistrationPair(app_.scene.layers());
+    selectLayer(*source_, pair.source);
+    selectLayer(*target_, pair.target);
+  }
   updateEnabled();
 }
 

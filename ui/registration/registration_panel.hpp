@@ -39,6 +39,7 @@ class RegistrationPanel : public QWidget {
   void refreshParams();
   DistanceParams& distanceParams() { return distance_params_; }
 
+  /// The layers to register; until chosen (here or in the combos), defaultRegistrationPair.
   Layer* sourceLayer() const;
   Layer* targetLayer() const;
   void setSourceLayer(const Layer* layer);
@@ -68,6 +69,7 @@ class RegistrationPanel : public QWidget {
 
  private:
   void rebuildLayerCombos();
+  static void selectLayer(QComboBox& combo, const Layer* layer);
   void updateEnabled();
   void applyResult(std::shared_ptr<const PipelineResult> result, Layer& source,
                    const RigidTransform& start);
@@ -100,6 +102,7 @@ class RegistrationPanel : public QWidget {
   RigidTransform before_transform_, after_transform_;
   const QUndoCommand* pushed_ = nullptr;
   bool busy_ = false;
+  bool chosen_ = false;  ///< the user (or a project) chose the source/target
 };
 
 }  // namespace plumb::ui

@@ -19,6 +19,7 @@
 #include "ui/actions/file_dialogs.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
+#include "ui/layers/model_layer.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
 #include "ui/panels/log_panel.hpp"
@@ -136,6 +137,40 @@ class GuiRegistrationDockTest : public QObject {
     QVERIFY(layerTransform(*reference_).isIdentity());
     QVERIFY(featureOverlay(*reference_) == nullptr);
     QVERIFY(!static_cast<DatasetLayer*>(reference_)->hasDistances());
+  }
+
+  // Whatever order the files come in, the dock proposes the scan as the source and the model
+  // (else the largest dataset) as the target, so the first click on Register registers (it
+  // proposed the first layer twice: "the source and the target are the same layer").
+  void theFirstClickOnRegisterWorks_data() {
+    QTest::addColumn<bool>("model");
+    QTest::addColumn<bool>("targetFirst");
+    QTest::newRow("scan, then model") << true << false;
+    QTest::newRow("model, then scan") << true << true;
+    QTest::newRow("scan, then larger scan") << false << false;
+    QTest::newRow("larger scan, then scan") << false << true;
+  }
+  void theFirstClickOnRegisterWorks() {
+    QFETCH(bool, model);
+    QFETCH(bool, targetFirst);
+    AppContext& app = window_->context();
+    RegistrationPanel& panel = *app.registration;
+    app.scene.clear();
+    const auto addTarget = [&]() -> Layer* {
+      if (model) return &app.scene.addModel(test::roomModel());
+      return &app.scene.addDataset(test::roomScan(0.08, RigidTransform(), "reference"));
+    };
+    Layer* target = targetFirst ? addTarget() : nullptr;
+    Layer* scan = &app.scene.addDataset(test::roomScan(0.1, test::scanOffset(), "scan"));
+    if (!targetFirst) target = addTarget();
+    QCOMPARE(panel.sourceLayer(), scan);
+    QCOMPARE(panel.targetLayer(), target);
+
+    panel.setMethod(RegistrationMethod::Icp);
+    const int done = startTask("register");
+    QVERIFY2(waitForTask(done), qPrintable(app.log.toPlainText()));
+    QVERIFY2(lastOk_, qPrintable(app.log.toPlainText()));
+    QVERIFY(RigidTransform::translationError(layerTransform(*scan), test::scanOffset().inverse()) < 0.01);
   }
 
   // The wheel over the dock scrolls past the parameters; it changes a value only once the
