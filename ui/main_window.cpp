@@ -88,6 +88,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
 MainWindow::~MainWindow() {
   context_->tasks.cancelAll();
+  // While the scene and the panels still exist: the stack tells them it empties.
+  context_->undo.clear();
 }
 
 void MainWindow::createDocks() {

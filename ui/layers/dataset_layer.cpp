@@ -111,7 +111,17 @@ void DatasetLayer::setDistances(std::vector<std::vector<float>> per_scan, double
     list[i]->setDistances(i < per_scan.size() ? std::move(per_scan[i]) : std::vector<float>{},
                           max_distance);
   has_distances_ = !per_scan.empty();
-  if (has_distances_) style_.mode = PointColorMode::Distance;
+  if (has_distances_ && style_.mode != PointColorMode::Distance) {
+    mode_before_distances_ = style_.mode;
+    style_.mode = PointColorMode::Distance;
+  }
+  colours_stale_ = true;
+}
+
+void DatasetLayer::clearDistances() {
+  for (ScanLayer* s : scans()) s->setDistances({}, 1.0);
+  if (style_.mode == PointColorMode::Distance) style_.mode = mode_before_distances_;
+  has_distances_ = false;
   colours_stale_ = true;
 }
 

@@ -65,6 +65,8 @@ class DatasetLayer : public Layer {
   /// colours follow in the background once the scene is told (Scene::layerChanged).
   void setDistances(std::vector<std::vector<float>> per_scan, double max_distance);
   bool hasDistances() const { return has_distances_; }
+  /// Drops the distances; the colour mode goes back to the one before them.
+  void clearDistances();
 
   /// Swaps in `with_origins`, the same points with per-point sensor origins interpolated from
   /// the trajectory file `path` (startAttachTrajectory): feature detection, registration and
@@ -86,6 +88,7 @@ class DatasetLayer : public Layer {
   RigidTransform transform_;
   bool shows_transform_ = true;
   bool has_distances_ = false;
+  PointColorMode mode_before_distances_ = PointColorMode::Rgb;
   bool colours_stale_ = false;
   QString trajectory_;
   std::uint64_t style_generation_ = 0;  ///< bumped by every setStyle / requestStyle

@@ -74,10 +74,10 @@ QualityReportView::QualityReportView(QWidget* parent)
   clear();
 }
 
-void QualityReportView::clear() {
+void QualityReportView::clear(const QString& note) {
   level_->clear();
   level_->setStyleSheet({});
-  verdict_->setText(tr("<i>No registration yet.</i>"));
+  verdict_->setText(note.isEmpty() ? tr("<i>No registration yet.</i>") : note);
   table_->setRowCount(0);
   candidates_->setRowCount(0);
 }

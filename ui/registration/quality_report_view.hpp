@@ -23,7 +23,8 @@ class QualityReportView : public QWidget {
  public:
   explicit QualityReportView(QWidget* parent = nullptr);
   void showResult(const PipelineResult& result);
-  void clear();
+  /// No result shown; `note` (rich text) says why, e.g. that it was undone.
+  void clear(const QString& note = {});
   QString verdict() const;
   /// The level band's text, e.g. "USABLE", "CHECK VISUALLY", "FAILED OR AMBIGUOUS".
   QString level() const;

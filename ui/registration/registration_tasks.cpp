@@ -151,8 +151,8 @@ Task* startDistanceComputation(AppContext& app, Layer& source, Layer& target,
     summarizeDistances(out->all);
     return [s, t, src, tgt, out, done] {
       Layer& source = stillThere(src, s.name, "the distance computation");
-      stillThere(tgt, t.name, "the distance computation");
-      done(out, static_cast<DatasetLayer&>(source));
+      Layer& target = stillThere(tgt, t.name, "the distance computation");
+      done(out, static_cast<DatasetLayer&>(source), target);
     };
   }, {src, tgt});
 }

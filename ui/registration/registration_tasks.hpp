@@ -39,8 +39,8 @@ struct LayerDistances {
   std::vector<std::vector<float>> per_scan;
   DistanceResult all;  ///< statistics over all scans (distances concatenated)
 };
-using DistancesDone =
-    std::function<void(std::shared_ptr<const LayerDistances> distances, DatasetLayer& source)>;
+using DistancesDone = std::function<void(std::shared_ptr<const LayerDistances> distances,
+                                         DatasetLayer& source, Layer& target)>;
 Task* startDistanceComputation(AppContext& app, Layer& source, Layer& target,
                                const DistanceParams& params, DistancesDone done);
 

@@ -3,7 +3,9 @@
 // result whose layer went away anyway is dropped instead of landing on another layer. On a
 // small synthetic room (tests/gui/room_scene.hpp) so each task takes a second or two.
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
+#include <QUndoStack>
 #include <QLabel>
 #include <QPushButton>
 #include <QSpinBox>
@@ -23,6 +25,8 @@
 #include "ui/layers/scene.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
 #include "ui/panels/log_panel.hpp"
+#include "ui/panels/histogram_widget.hpp"
+#include "ui/registration/quality_report_view.hpp"
 #include "ui/registration/registration_panel.hpp"
 #include "ui/registration/registration_tasks.hpp"
 #include "ui/tasks/task_manager.hpp"
@@ -171,6 +175,70 @@ class GuiRegistrationDockTest : public QObject {
     QVERIFY2(waitForTask(done), qPrintable(app.log.toPlainText()));
     QVERIFY2(lastOk_, qPrintable(app.log.toPlainText()));
     QVERIFY(RigidTransform::translationError(layerTransform(*scan), test::scanOffset().inverse()) < 0.01);
+  }
+
+  // The report, Accept/Revert and the distance check describe the result only while it is in
+  // effect: Undo withdraws them (Redo brings the report back), a new registration drops the
+  // old distance check, Open project drops the report (all stayed as they were before).
+  void staleResultsAreWithdrawn() {
+    AppContext& app = window_->context();
+    RegistrationPanel& panel = *app.registration;
+    auto* accept = panel.findChild<QPushButton*>("acceptResult");
+    auto* revert = panel.findChild<QPushButton*>("revertResult");
+    auto* scan = static_cast<DatasetLayer*>(scan_);
+    QVERIFY(waitForTask(startTask("register")) && lastOk_);
+    QVERIFY(!panel.report().level().isEmpty());
+    QVERIFY(accept->isEnabled() && revert->isEnabled());
+    QVERIFY(waitForTask(startTask("colourByDistance")) && lastOk_);
+    QVERIFY(panel.legendVisible() && scan->hasDistances());
+    QVERIFY(!panel.histogram().histogram().counts.empty());
+
+    app.undo.undo();
+    QVERIFY(layerTransform(*scan_).isIdentity());
+    QVERIFY(panel.report().level().isEmpty());
+    QCOMPARE(panel.report().rowCount(), 0);
+    QVERIFY2(panel.report().verdict().contains("undone"), qPrintable(panel.report().verdict()));
+    QVERIFY(!accept->isEnabled() && !revert->isEnabled());
+    QVERIFY(!panel.legendVisible() && !scan->hasDistances());
+    QVERIFY(scan->style().mode != PointColorMode::Distance);
+    QVERIFY(panel.histogram().histogram().counts.empty());
+    app.undo.redo();
+    QVERIFY(!panel.report().level().isEmpty());
+    QVERIFY(accept->isEnabled() && revert->isEnabled());
+
+    // Registering onto another target: the distances to the first one go.
+    QVERIFY(waitForTask(startTask("colourByDistance")) && lastOk_);
+    Layer* other = &app.scene.addDataset(test::roomScan(0.09, RigidTransform(), "other"));
+    panel.setTargetLayer(other);
+    QVERIFY(waitForTask(startTask("register")) && lastOk_);
+    QVERIFY(!panel.legendVisible() && !scan->hasDistances());
+    QVERIFY(panel.histogram().histogram().counts.empty());
+    QVERIFY(!panel.report().level().isEmpty());
+
+    // Open project: the report of the layers it replaced goes.
+    test::menuAction(*window_, "File", "Open project...")->trigger();
+    QTRY_VERIFY(app.scene.layers().empty());
+    QVERIFY(panel.report().level().isEmpty());
+    QCOMPARE(panel.report().rowCount(), 0);
+    QVERIFY(!accept->isEnabled() && !revert->isEnabled());
+  }
+
+  // Features detected with other extraction parameters are marked out of date and not used:
+  // Register extracts again and says so (before, they were reused silently).
+  void featuresDetectedWithOtherParametersAreNotReused() {
+    AppContext& app = window_->context();
+    RegistrationPanel& panel = *app.registration;
+    auto* use = panel.findChild<QCheckBox*>("useFeatures");
+    QVERIFY(waitForTask(startTask("detectFeatures")) && lastOk_);
+    QVERIFY(use->isChecked() && !use->text().contains("out of date"));
+    auto* planes = panel.findChild<QSpinBox*>("max-planes");
+    planes->setValue(planes->value() / 2);  // as typed in
+    QVERIFY2(use->text().contains("out of date"), qPrintable(use->text()));
+    QVERIFY(waitForTask(startTask("register")) && lastOk_);
+    QVERIFY(app.log.toPlainText().contains("detected with other parameters"));
+    // Detected again with these parameters: up to date.
+    QVERIFY(waitForTask(startTask("detectFeatures")) && lastOk_);
+    QVERIFY(!use->text().contains("out of date"));
   }
 
   // The wheel over the dock scrolls past the parameters; it changes a value only once the
