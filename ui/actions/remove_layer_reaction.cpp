@@ -1,5 +1,8 @@
 #include "ui/actions/remove_layer_reaction.hpp"
 
+#include <QUndoStack>
+
+#include "ui/actions/remove_layer_command.hpp"
 #include "ui/app_context.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
@@ -24,6 +27,8 @@ bool RemoveLayerReaction::canRun() const {
   return layer && !app().tasks.holds(layer);
 }
 
-void RemoveLayerReaction::onTriggered() { app().scene.removeLayer(currentRoot()); }
+void RemoveLayerReaction::onTriggered() {
+  if (Layer* layer = currentRoot()) app().undo.push(new RemoveLayerCommand(app().scene, *layer));
+}
 
 }  // namespace plumb::ui

@@ -5,8 +5,9 @@ namespace plumb::ui {
 
 class Layer;
 
-/// Edit > Remove layer: removes the current root layer. Disabled when there is none or while
-/// a running task holds it (its result goes to that layer).
+/// Edit > Remove layer: removes the current root layer, undoably (RemoveLayerCommand: the rest
+/// of the history stays). Disabled when there is none or while a running task holds it (its
+/// result goes to that layer).
 class RemoveLayerReaction : public Reaction {
   Q_OBJECT
  public:

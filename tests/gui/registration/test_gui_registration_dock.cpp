@@ -29,6 +29,7 @@
 #include "ui/registration/quality_report_view.hpp"
 #include "ui/registration/registration_panel.hpp"
 #include "ui/registration/registration_tasks.hpp"
+#include "ui/registration/transform_command.hpp"
 #include "ui/tasks/task_manager.hpp"
 #include "ui/view/surface_format.hpp"
 
@@ -239,6 +240,45 @@ class GuiRegistrationDockTest : public QObject {
     // Detected again with these parameters: up to date.
     QVERIFY(waitForTask(startTask("detectFeatures")) && lastOk_);
     QVERIFY(!use->text().contains("out of date"));
+  }
+
+  // Edit > Remove layer is undoable and keeps the history of the other layers (it cleared the
+  // whole undo stack, without asking).
+  void removingALayerKeepsTheHistory() {
+    AppContext& app = window_->context();
+    QAction* remove = test::menuAction(*window_, "Edit", "Remove layer");
+    QVERIFY(waitForTask(startTask("register")) && lastOk_);
+    const RigidTransform registered = layerTransform(*scan_);
+    const RigidTransform moved(Eigen::Matrix3d::Identity(), Eigen::Vector3d(1, 2, 3));
+    app.undo.push(new TransformCommand(app.scene, *reference_, RigidTransform(), moved, "move"));
+    Layer* extra = &app.scene.addDataset(test::roomScan(0.2, RigidTransform(), "extra"));
+    QCOMPARE(app.undo.count(), 2);
+
+    app.layers.setCurrentLayer(extra);
+    remove->trigger();
+    QCOMPARE(app.scene.layers().size(), std::size_t{2});
+    QCOMPARE(app.undo.count(), 3);
+    app.undo.undo();  // the layer is back, in its place
+    QCOMPARE(app.scene.layers().size(), std::size_t{3});
+    QCOMPARE(app.scene.layers().back().get(), extra);
+    app.undo.undo();
+    QVERIFY(layerTransform(*reference_).isIdentity());
+    app.undo.undo();
+    QVERIFY(layerTransform(*scan_).isIdentity());
+    app.undo.redo();
+    app.undo.redo();
+    QVERIFY(RigidTransform::translationError(layerTransform(*scan_), registered) < 1e-12);
+    QVERIFY(RigidTransform::translationError(layerTransform(*reference_), moved) < 1e-12);
+
+    // Removing the registered scan itself: undoing it brings it back with its history.
+    app.layers.setCurrentLayer(scan_);
+    remove->trigger();
+    QCOMPARE(app.scene.layers().size(), std::size_t{2});
+    app.undo.undo();
+    QCOMPARE(app.scene.layers().front().get(), scan_);
+    app.undo.undo();
+    app.undo.undo();
+    QVERIFY(layerTransform(*scan_).isIdentity());
   }
 
   // The wheel over the dock scrolls past the parameters; it changes a value only once the
