@@ -56,10 +56,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
       new AppContext{*this, *view, *scene, *tasks, *log, *tree, *properties, *recent, *undo});
   context_->registration = new RegistrationPanel(*context_, this);
   context_->manual = new ManualAlignPanel(*context_, this);
-  // Commands hold layer pointers: forget them when a layer goes.
-  connect(scene, &Scene::layerAboutToBeRemoved, undo, [undo](Layer* layer) {
-    if (layer->parent() == nullptr) undo->clear();
-  });
   lod_ = new LodController(*view, *scene, this);
 
   connect(scene, &Scene::renderNeeded, view, &VtkViewWidget::requestRender);
@@ -88,6 +84,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
 MainWindow::~MainWindow() {
   context_->tasks.cancelAll();
+  // While the scene and the panels still exist: the stack tells them it empties.
+  context_->undo.clear();
 }
 
 void MainWindow::createDocks() {

@@ -6,12 +6,19 @@
 #include "ui/app_context.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/project/project_file.hpp"
+#include "ui/tasks/task_manager.hpp"
 
 namespace plumb::ui {
 
 namespace {
 QString filter() { return QObject::tr("Plumb project (*.plumb.json);;JSON (*.json)"); }
 }  // namespace
+
+OpenProjectReaction::OpenProjectReaction(QAction* action, AppContext& app) : Reaction(action, app) {
+  followTasks();
+}
+
+bool OpenProjectReaction::canRun() const { return !app().tasks.holdsLayers(); }
 
 void OpenProjectReaction::onTriggered() {
   const QString path =

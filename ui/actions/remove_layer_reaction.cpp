@@ -1,15 +1,34 @@
 #include "ui/actions/remove_layer_reaction.hpp"
 
+#include <QUndoStack>
+
+#include "ui/actions/remove_layer_command.hpp"
 #include "ui/app_context.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
+#include "ui/tasks/task_manager.hpp"
 
 namespace plumb::ui {
 
-void RemoveLayerReaction::onTriggered() {
+RemoveLayerReaction::RemoveLayerReaction(QAction* action, AppContext& app) : Reaction(action, app) {
+  connect(&app.layers, &LayerTreePanel::currentLayerChanged, this, &Reaction::updateEnableState);
+  connect(&app.scene, &Scene::layersChanged, this, &Reaction::updateEnableState);
+  followTasks();
+}
+
+Layer* RemoveLayerReaction::currentRoot() const {
   Layer* layer = app().layers.currentLayer();
   while (layer && layer->parent()) layer = layer->parent();
-  if (layer) app().scene.removeLayer(layer);
+  return layer;
+}
+
+bool RemoveLayerReaction::canRun() const {
+  const Layer* layer = currentRoot();
+  return layer && !app().tasks.holds(layer);
+}
+
+void RemoveLayerReaction::onTriggered() {
+  if (Layer* layer = currentRoot()) app().undo.push(new RemoveLayerCommand(app().scene, *layer));
 }
 
 }  // namespace plumb::ui

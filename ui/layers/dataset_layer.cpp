@@ -76,7 +76,7 @@ Task* DatasetLayer::requestStyle(const PointStyle& style, TaskManager& tasks,
     s->setPointSize(style_.point_size);
     jobs.push_back(s->colorJob(style_, b.min.z(), b.max.z()));
   }
-  std::weak_ptr<char> alive = alive_;
+  std::weak_ptr<const char> alive = lifetime();
   coloring_task_ = tasks.run(
       QObject::tr("Colouring %1").arg(name()),
       [this, jobs = std::move(jobs), generation, alive,
@@ -111,7 +111,17 @@ void DatasetLayer::setDistances(std::vector<std::vector<float>> per_scan, double
     list[i]->setDistances(i < per_scan.size() ? std::move(per_scan[i]) : std::vector<float>{},
                           max_distance);
   has_distances_ = !per_scan.empty();
-  if (has_distances_) style_.mode = PointColorMode::Distance;
+  if (has_distances_ && style_.mode != PointColorMode::Distance) {
+    mode_before_distances_ = style_.mode;
+    style_.mode = PointColorMode::Distance;
+  }
+  colours_stale_ = true;
+}
+
+void DatasetLayer::clearDistances() {
+  for (ScanLayer* s : scans()) s->setDistances({}, 1.0);
+  if (style_.mode == PointColorMode::Distance) style_.mode = mode_before_distances_;
+  has_distances_ = false;
   colours_stale_ = true;
 }
 

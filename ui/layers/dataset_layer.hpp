@@ -65,6 +65,8 @@ class DatasetLayer : public Layer {
   /// colours follow in the background once the scene is told (Scene::layerChanged).
   void setDistances(std::vector<std::vector<float>> per_scan, double max_distance);
   bool hasDistances() const { return has_distances_; }
+  /// Drops the distances; the colour mode goes back to the one before them.
+  void clearDistances();
 
   /// Swaps in `with_origins`, the same points with per-point sensor origins interpolated from
   /// the trajectory file `path` (startAttachTrajectory): feature detection, registration and
@@ -72,10 +74,6 @@ class DatasetLayer : public Layer {
   void attachTrajectory(std::shared_ptr<const Dataset> with_origins, const QString& path);
   /// The trajectory file attached (empty: none).
   const QString& trajectoryPath() const { return trajectory_; }
-
-  /// Expires when this layer is destroyed: background work that outlives the layer checks it
-  /// before touching the layer.
-  std::weak_ptr<const char> lifetime() const { return alive_; }
 
   /// True once when the colours no longer match the style (new distances, or a transform
   /// change under Elevation colours); Scene::layerChanged then recolours in the background.
@@ -90,12 +88,12 @@ class DatasetLayer : public Layer {
   RigidTransform transform_;
   bool shows_transform_ = true;
   bool has_distances_ = false;
+  PointColorMode mode_before_distances_ = PointColorMode::Rgb;
   bool colours_stale_ = false;
   QString trajectory_;
   std::uint64_t style_generation_ = 0;  ///< bumped by every setStyle / requestStyle
   bool coloring_pending_ = false;
   QPointer<Task> coloring_task_;
-  std::shared_ptr<char> alive_ = std::make_shared<char>();  ///< expires with this layer
 };
 
 }  // namespace plumb::ui

@@ -48,6 +48,10 @@ class Layer {
   /// Level of detail: show the reduced representation while the camera moves.
   virtual void setReducedDetail(bool /*reduced*/) {}
 
+  /// Expires when this layer is destroyed: background work and undo commands that outlive the
+  /// layer check it before touching the layer (LayerRef).
+  std::weak_ptr<const char> lifetime() const { return alive_; }
+
  protected:
   /// Called when the effective visibility of this layer may have changed.
   virtual void applyVisibility(bool /*effective*/) {}
@@ -59,6 +63,22 @@ class Layer {
   Layer* parent_ = nullptr;
   bool visible_ = true;
   std::vector<std::unique_ptr<Layer>> children_;
+  std::shared_ptr<char> alive_ = std::make_shared<char>();  ///< expires with this layer
+};
+
+/// A layer that may be destroyed while this is held (a running task, an undo command): get()
+/// is the layer while it exists, nullptr once it was destroyed.
+class LayerRef {
+ public:
+  LayerRef() = default;
+  explicit LayerRef(Layer& layer) : layer_(&layer), alive_(layer.lifetime()) {}
+  Layer* get() const { return alive_.expired() ? nullptr : layer_; }
+  /// Whether this refers to `layer` (also after it was destroyed: compares addresses only).
+  bool is(const Layer* layer) const { return layer_ && layer_ == layer && !alive_.expired(); }
+
+ private:
+  Layer* layer_ = nullptr;  ///< not owned; dereferenced only while alive_ holds
+  std::weak_ptr<const char> alive_;
 };
 
 QString layerKindName(LayerKind kind);

@@ -116,12 +116,29 @@ void Scene::removeLayer(Layer* layer) {
     emit renderNeeded();
     return;
   }
+  takeLayer(layer);  // destroyed here
+}
+
+std::unique_ptr<Layer> Scene::takeLayer(Layer* layer) {
   auto it = std::find_if(layers_.begin(), layers_.end(),
                          [layer](const auto& l) { return l.get() == layer; });
-  if (it == layers_.end()) return;
+  if (it == layers_.end()) return nullptr;
   emit layerAboutToBeRemoved(layer);
   removeProps(**it);
+  std::unique_ptr<Layer> taken = std::move(*it);
   layers_.erase(it);
+  emit layersChanged();
+  emit renderNeeded();
+  return taken;
+}
+
+void Scene::restoreLayer(std::unique_ptr<Layer> layer, std::size_t index) {
+  if (!layer) return;
+  Layer& restored = **layers_.insert(layers_.begin() + std::ptrdiff_t(std::min(index, layers_.size())),
+                                     std::move(layer));
+  addProps(restored);
+  applyLodBudget();
+  restored.setReducedDetail(moving_);
   emit layersChanged();
   emit renderNeeded();
 }

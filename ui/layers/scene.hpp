@@ -59,6 +59,11 @@ class Scene : public QObject {
                             Layer* parent = nullptr);
   /// Removes a layer (root or child) and its children.
   void removeLayer(Layer* layer);
+  /// Takes a root layer out of the scene without destroying it (undoable removal), with the
+  /// signals of removeLayer; nullptr if `layer` is not a root layer.
+  std::unique_ptr<Layer> takeLayer(Layer* layer);
+  /// Puts a taken root layer back at `index` among the root layers (the end if beyond).
+  void restoreLayer(std::unique_ptr<Layer> layer, std::size_t index);
   void clear();
 
   /// World bounds of the visible layers.

@@ -6,11 +6,14 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
 #include <climits>
 #include <cmath>
+
+#include "ui/panels/focus_wheel.hpp"
 
 namespace plumb::ui {
 
@@ -49,13 +52,62 @@ ParamPanel::ParamPanel(std::vector<ParamSpec> specs, Getter get, Setter set, QWi
     e->setToolTip(QString::fromStdString(s.help));
     auto* label = new QLabel(QString::fromStdString(s.label), this);
     label->setToolTip(QString::fromStdString(s.help));
+    labels_.push_back(label);
     (s.advanced ? advanced_form : basic)->addRow(label, e);
     any_advanced |= s.advanced;
   }
   if (any_advanced) layout->addWidget(advanced_box);
   else advanced_box->hide();
+  reset_ = new QPushButton(tr("Reset to defaults"), this);
+  reset_->setObjectName("resetToDefaults");
+  reset_->setToolTip(tr("Sets every parameter of this group back to its default"));
+  reset_->hide();  // until defaults are known
+  connect(reset_, &QPushButton::clicked, this, &ParamPanel::resetToDefaults);
+  layout->addWidget(reset_, 0, Qt::AlignLeft);
   layout->addStretch(1);
   refresh();
+}
+
+void ParamPanel::setDefaults(std::vector<double> defaults) {
+  defaults_ = std::move(defaults);
+  defaults_.resize(specs_.size(), 0.0);
+  reset_->show();
+  markModified();
+}
+
+bool ParamPanel::modified(std::size_t i) const {
+  if (i >= defaults_.size()) return false;
+  const double v = get_(i), d = defaults_[i];
+  return std::abs(v - d) > 1e-9 * std::max(1.0, std::abs(d));
+}
+
+bool ParamPanel::isModified(const std::string& key) const {
+  for (std::size_t i = 0; i < specs_.size(); ++i)
+    if (specs_[i].key == key) return modified(i);
+  return false;
+}
+
+void ParamPanel::markModified() {
+  bool any = false;
+  for (std::size_t i = 0; i < specs_.size(); ++i) {
+    const bool m = modified(i);
+    any |= m;
+    QFont f = labels_[i]->font();
+    f.setBold(m);
+    labels_[i]->setFont(f);
+    QString tip = QString::fromStdString(specs_[i].help);
+    if (m)
+      tip = tr("Changed (default %1). %2")
+                .arg(QString::fromStdString(formatParamValue(specs_[i], defaults_[i])), tip);
+    labels_[i]->setToolTip(tip);
+  }
+  reset_->setEnabled(any);
+}
+
+void ParamPanel::resetToDefaults() {
+  for (std::size_t i = 0; i < defaults_.size(); ++i) set_(i, defaults_[i]);
+  refresh();
+  emit changed();
 }
 
 QWidget* ParamPanel::makeEditor(std::size_t i) {
@@ -63,12 +115,13 @@ QWidget* ParamPanel::makeEditor(std::size_t i) {
   auto commit = [this, i](double v) {
     if (loading_) return;
     set_(i, v);
+    markModified();
     emit changed();
   };
   const QString unit = s.unit.empty() ? QString() : " " + QString::fromStdString(s.unit);
   switch (s.kind) {
     case ParamKind::Real: {
-      auto* e = new QDoubleSpinBox(this);
+      auto* e = new FocusWheel<QDoubleSpinBox>(this);
       e->setDecimals(decimalsFor(s));
       e->setRange(s.min, s.max);
       e->setSingleStep((s.max - s.min) / 100.0);
@@ -77,7 +130,7 @@ QWidget* ParamPanel::makeEditor(std::size_t i) {
       return e;
     }
     case ParamKind::Integer: {
-      auto* e = new QSpinBox(this);
+      auto* e = new FocusWheel<QSpinBox>(this);
       e->setRange(static_cast<int>(std::max<double>(s.min, INT_MIN)),
                   static_cast<int>(std::min<double>(s.max, INT_MAX)));
       e->setSuffix(unit);
@@ -91,7 +144,7 @@ QWidget* ParamPanel::makeEditor(std::size_t i) {
     }
     case ParamKind::Choice: break;
   }
-  auto* e = new QComboBox(this);
+  auto* e = new FocusWheel<QComboBox>(this);
   for (const auto& c : s.choices) e->addItem(QString::fromStdString(c));
   connect(e, &QComboBox::currentIndexChanged, this, [commit](int v) { commit(v); });
   return e;
@@ -107,6 +160,7 @@ void ParamPanel::refresh() {
     else if (auto* c = qobject_cast<QComboBox*>(editors_[i])) c->setCurrentIndex(static_cast<int>(v));
   }
   loading_ = false;
+  markModified();
 }
 
 QWidget* ParamPanel::editor(const std::string& key) const {

@@ -21,6 +21,7 @@
 #include "ui/panels/log_panel.hpp"
 #include "ui/registration/registration_panel.hpp"
 #include "ui/tasks/load_files.hpp"
+#include "ui/tasks/task_manager.hpp"
 
 namespace plumb::ui {
 
@@ -96,6 +97,9 @@ json readJson(const QString& path) {
 }  // namespace
 
 void openProject(AppContext& app, const QString& path, ProjectDone done) {
+  if (app.tasks.holdsLayers())
+    throw InputError("cannot open the project " + path.toStdString() +
+                     " while a task works on the open layers: wait for it or cancel it");
   const json j = readJson(path);
   const std::string file = path.toStdString();
   if (!j.is_object() || !j.contains("plumb-project"))

@@ -25,7 +25,8 @@ constexpr int kProjectVersion = 1;
 void saveProject(const AppContext& app, const QString& path);
 /// Clears the scene, loads the project's files in the background, applies their transforms
 /// and the registration setup. `done` runs when every file finished (ok: all loaded).
-/// Throws FileError when the project file itself cannot be read or is invalid.
+/// Throws FileError when the project file itself cannot be read or is invalid, InputError
+/// while a running task holds layers (TaskManager::holds).
 void openProject(AppContext& app, const QString& path, ProjectDone done = {});
 
 /// True for a path named like a project file (*.plumb.json or *.json holding a project).

@@ -5,6 +5,9 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <cmath>
+#include <cstdint>
+
 #include "registration/auto/registration_pipeline.hpp"
 
 namespace plumb::ui {
@@ -31,10 +34,24 @@ QTableWidget* makeTable(QWidget* parent, const QStringList& headers, const char*
   t->setObjectName(name);
   t->setHorizontalHeaderLabels(headers);
   t->horizontalHeader()->setStretchLastSection(true);
+  t->setWordWrap(true);  // long values wrap onto more lines instead of being cut
+  t->setTextElideMode(Qt::ElideNone);
   t->verticalHeader()->hide();
   t->setEditTriggers(QAbstractItemView::NoEditTriggers);
   return t;
 }
+
+/// A method figure as a reader expects it: counts without decimals, flags ("... measured") as
+/// yes/no, other values with three decimals.
+QString figureText(const std::string& name, double value) {
+  const bool flag = name.size() > 9 && name.compare(name.size() - 9, 9, " measured") == 0;
+  if (flag && (value == 0.0 || value == 1.0)) return value != 0.0 ? QObject::tr("yes") : QObject::tr("no");
+  if (std::abs(value) < 1e15 && value == std::round(value)) return QString::number(std::int64_t(value));
+  return num(value, 3);
+}
+
+/// Internal timings ("seconds features") are listed apart, last.
+bool isTiming(const std::string& name) { return name.rfind("seconds ", 0) == 0; }
 
 QString cell(const QTableWidget* t, int row, int col) {
   const QTableWidgetItem* item = t->item(row, col);
@@ -74,10 +91,10 @@ QualityReportView::QualityReportView(QWidget* parent)
   clear();
 }
 
-void QualityReportView::clear() {
+void QualityReportView::clear(const QString& note) {
   level_->clear();
   level_->setStyleSheet({});
-  verdict_->setText(tr("<i>No registration yet.</i>"));
+  verdict_->setText(note.isEmpty() ? tr("<i>No registration yet.</i>") : note);
   table_->setRowCount(0);
   candidates_->setRowCount(0);
 }
@@ -93,8 +110,11 @@ QString QualityReportView::candidateRole(int row) const { return cell(candidates
 void QualityReportView::addRow(const QString& name, const QString& value) {
   const int r = table_->rowCount();
   table_->insertRow(r);
-  table_->setItem(r, 0, new QTableWidgetItem(name));
-  table_->setItem(r, 1, new QTableWidgetItem(value));
+  for (int c = 0; c < 2; ++c) {
+    auto* item = new QTableWidgetItem(c == 0 ? name : value);
+    item->setToolTip(name + ": " + value);  // the whole text, however narrow the dock
+    table_->setItem(r, c, item);
+  }
 }
 
 void QualityReportView::addVisibilityRows(const VisibilitySummary& v) {
@@ -120,7 +140,7 @@ void QualityReportView::showResult(const PipelineResult& result) {
   verdict_->setText(QString::fromStdString(q.verdict).toHtmlEscaped());
   table_->setRowCount(0);
   addFigures(result);
-  table_->resizeColumnToContents(0);
+  fitColumns();
   addCandidates(q);
 }
 
@@ -158,8 +178,12 @@ void QualityReportView::addFigures(const PipelineResult& result) {
   }
   addVisibilityRows(q.visibility);
   for (const auto& w : q.weak_directions) addRow(tr("Weak"), QString::fromStdString(w.description));
-  for (const auto& [name, value] : q.figures) addRow(QString::fromStdString(name), num(value, 3));
+  for (const auto& [name, value] : q.figures)
+    if (!isTiming(name)) addRow(QString::fromStdString(name), figureText(name, value));
   for (const auto& w : q.warnings) addRow(tr("Warning"), QString::fromStdString(w));
+  for (const auto& [name, value] : q.figures)
+    if (isTiming(name))
+      addRow(tr("Time: %1").arg(QString::fromStdString(name.substr(8))), num(value, 2) + " s");
 }
 
 void QualityReportView::addCandidates(const QualityReport& q) {
@@ -182,6 +206,19 @@ void QualityReportView::addCandidates(const QualityReport& q) {
     for (int k = 0; k < cells.size(); ++k) candidates_->setItem(r, k, new QTableWidgetItem(cells[k]));
   }
   candidates_->resizeColumnsToContents();
+}
+
+void QualityReportView::fitColumns() {
+  // Names take what they need up to 45 % of the width; values get the rest and wrap.
+  table_->resizeColumnToContents(0);
+  const int most = table_->viewport()->width() * 45 / 100;
+  if (table_->columnWidth(0) > most) table_->setColumnWidth(0, most);
+  table_->resizeRowsToContents();
+}
+
+void QualityReportView::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  if (table_->rowCount() > 0) fitColumns();
 }
 
 }  // namespace plumb::ui

@@ -4,7 +4,9 @@
 // verdict paragraph, a table of every figure of the report (method, transform, RMS, overlap,
 // features, runner-up gap, slide resistances, weak directions, method figures, warnings) and a
 // table of the candidate placements (role, transform, feature score, refined overlap, RMS,
-// inliers, fit cost and any further evidence figures).
+// inliers, fit cost and any further evidence figures). Values wrap (no cut-off text at the
+// dock's width) and every cell's tooltip holds its whole row; counts print without decimals,
+// flags as yes/no, internal timings last.
 #include <QWidget>
 
 class QLabel;
@@ -23,7 +25,8 @@ class QualityReportView : public QWidget {
  public:
   explicit QualityReportView(QWidget* parent = nullptr);
   void showResult(const PipelineResult& result);
-  void clear();
+  /// No result shown; `note` (rich text) says why, e.g. that it was undone.
+  void clear(const QString& note = {});
   QString verdict() const;
   /// The level band's text, e.g. "USABLE", "CHECK VISUALLY", "FAILED OR AMBIGUOUS".
   QString level() const;
@@ -36,7 +39,11 @@ class QualityReportView : public QWidget {
   int candidateCount() const;
   QString candidateRole(int row) const;
 
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+
  private:
+  void fitColumns();
   void addRow(const QString& name, const QString& value);
   /// Free-space evidence: each direction's contradiction ratio (or why there is none) and
   /// the expected overlap.

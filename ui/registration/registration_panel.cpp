@@ -12,36 +12,48 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include <nlohmann/json.hpp>
+
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "ui/app_context.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/panels/focus_wheel.hpp"
 #include "ui/panels/histogram_widget.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/panels/param_panel.hpp"
+#include "ui/registration/applied_registration.hpp"
+#include "ui/registration/default_layers.hpp"
+#include "ui/registration/distance_check.hpp"
 #include "ui/registration/quality_report_view.hpp"
 #include "ui/registration/registration_tasks.hpp"
-#include "ui/registration/transform_command.hpp"
 #include "ui/tasks/task.hpp"
-#include "ui/view/distance_legend.hpp"
 #include "ui/view/vtk_view_widget.hpp"
 
 namespace plumb::ui {
 
 namespace {
-constexpr int kHistogramBins = 40;
 const RegistrationMethod kMethods[] = {RegistrationMethod::Auto, RegistrationMethod::Planes,
                                        RegistrationMethod::Openings, RegistrationMethod::Segments,
                                        RegistrationMethod::Icp};
+/// The parameters the detected features depend on (the extraction groups), as text.
+std::string extractionParams(const PipelineParams& params) {
+  const nlohmann::json all = pipelineParamsToJson(params);
+  nlohmann::json used;
+  for (const char* key : {"plane-extraction", "opening-detection", "segment-detection",
+                          "mesh-edges", "model-sample-spacing"})
+    if (all.contains(key)) used[key] = all.at(key);
+  return used.dump();
+}
 }  // namespace
 
 RegistrationPanel::RegistrationPanel(AppContext& app, QWidget* parent)
     : QWidget(parent),
       app_(app),
-      source_(new QComboBox(this)),
-      target_(new QComboBox(this)),
-      method_(new QComboBox(this)),
+      source_(new FocusWheel<QComboBox>(this)),
+      target_(new FocusWheel<QComboBox>(this)),
+      method_(new FocusWheel<QComboBox>(this)),
       use_features_(new QCheckBox(tr("Use detected features"), this)),
       groups_(new QToolBox(this)),
       detect_(new QPushButton(tr("Detect features"), this)),
@@ -53,7 +65,9 @@ RegistrationPanel::RegistrationPanel(AppContext& app, QWidget* parent)
       report_(new QualityReportView(this)),
       histogram_(new HistogramWidget(this)),
       distance_stats_(new QLabel(this)),
-      legend_(std::make_unique<DistanceLegend>(app.view.renderer())) {
+      applied_(new AppliedRegistration(app.scene, app.undo, this)),
+      check_(std::make_unique<DistanceCheck>(app.scene, app.view.renderer(), *histogram_,
+                                             *distance_stats_)) {
   setObjectName("registrationPanel");
   source_->setObjectName("sourceLayer");
   target_->setObjectName("targetLayer");
@@ -117,11 +131,15 @@ RegistrationPanel::RegistrationPanel(AppContext& app, QWidget* parent)
   ql->addWidget(distance_stats_);
   layout->addWidget(qa);
 
+  for (QComboBox* c : {source_, target_})
+    connect(c, &QComboBox::currentIndexChanged, this, &RegistrationPanel::updateFeaturesState);
   connect(method_, &QComboBox::currentIndexChanged, this, [this](int i) {
     params_.method = kMethods[i];
     for (int g = 0; g < groups_->count(); ++g)
       groups_->setItemEnabled(g, paramGroupUsedBy(panels_[std::size_t(g)].first, params_.method));
   });
+  for (QComboBox* c : {source_, target_})
+    connect(c, &QComboBox::activated, this, [this] { chosen_ = true; });
   connect(detect_, &QPushButton::clicked, this, [this] { detectFeatures(); });
   connect(register_, &QPushButton::clicked, this, [this] { startRegistration(); });
   connect(accept_, &QPushButton::clicked, this, &RegistrationPanel::accept);
@@ -130,13 +148,23 @@ RegistrationPanel::RegistrationPanel(AppContext& app, QWidget* parent)
   connect(before_, &QCheckBox::toggled, this, &RegistrationPanel::showBefore);
   connect(&app_.scene, &Scene::layersChanged, this, &RegistrationPanel::rebuildLayerCombos);
   connect(&app_.scene, &Scene::layerAboutToBeRemoved, this, &RegistrationPanel::forgetLayer);
+  connect(applied_, &AppliedRegistration::changed, this, &RegistrationPanel::followAppliedResult);
+  for (auto& [key, panel] : panels_)
+    connect(panel, &ParamPanel::changed, this, &RegistrationPanel::updateFeaturesState);
   rebuildLayerCombos();
   updateEnabled();
 }
 
 RegistrationPanel::~RegistrationPanel() = default;
 
-bool RegistrationPanel::legendVisible() const { return legend_->visible(); }
+void RegistrationPanel::selectLayer(QComboBox& combo, const Layer* layer) {
+  combo.setCurrentIndex(combo.findData(QVariant::fromValue(const_cast<void*>(static_cast<const void*>(layer)))));
+}
+
+bool RegistrationPanel::legendVisible() const { return check_->legendVisible(); }
+std::shared_ptr<const LayerDistances> RegistrationPanel::lastDistances() const {
+  return check_->distances();
+}
 
 void RegistrationPanel::refreshParams() {
   for (auto& [key, panel] : panels_) panel->refresh();
@@ -153,10 +181,12 @@ Layer* RegistrationPanel::targetLayer() const {
 }
 
 void RegistrationPanel::setSourceLayer(const Layer* layer) {
-  source_->setCurrentIndex(source_->findData(QVariant::fromValue(const_cast<void*>(static_cast<const void*>(layer)))));
+  chosen_ = true;
+  selectLayer(*source_, layer);
 }
 void RegistrationPanel::setTargetLayer(const Layer* layer) {
-  target_->setCurrentIndex(target_->findData(QVariant::fromValue(const_cast<void*>(static_cast<const void*>(layer)))));
+  chosen_ = true;
+  selectLayer(*target_, layer);
 }
 
 void RegistrationPanel::setMethod(RegistrationMethod method) {
@@ -176,32 +206,84 @@ void RegistrationPanel::rebuildLayerCombos() {
                    QVariant::fromValue(static_cast<void*>(l.get())));
     c->blockSignals(false);
   }
-  // Defaults: the first layer moves onto the second.
-  if (s) setSourceLayer(s);
-  if (t) setTargetLayer(t);
-  else if (target_->count() > 1) target_->setCurrentIndex(1);
+  if (app_.scene.layers().empty()) chosen_ = false;
+  // The user's choice while both are still there; until then (or after) the default pair.
+  selectLayer(*source_, s);
+  selectLayer(*target_, t);
+  if (!chosen_ || !sourceLayer() || !targetLayer() || sourceLayer() == targetLayer()) {
+    const LayerPair pair = defaultRegistrationPair(app_.scene.layers());
+    selectLayer(*source_, pair.source);
+    selectLayer(*target_, pair.target);
+  }
   updateEnabled();
 }
 
 void RegistrationPanel::forgetLayer(Layer* layer) {
-  if (layer == result_layer_) {
-    result_layer_ = nullptr;
-    pushed_ = nullptr;
-    before_->setChecked(false);
+  if (applied_->layer() == layer) {
+    applied_->forget();
+    result_.reset();
+    report_->clear();
   }
-  if (layer == sourceLayer() || layer == targetLayer()) legend_->hide();
+  if (check_->involves(layer)) check_->clear();
+  updateEnabled();
+}
+
+void RegistrationPanel::followAppliedResult() {
+  // Undone (Edit > Undo, Revert) or redone: the report and the distance check describe the
+  // result only while it is in effect.
+  const bool in_effect = applied_->inEffect();
+  if (!in_effect) {
+    if (before_->isChecked()) {
+      before_->blockSignals(true);
+      before_->setChecked(false);
+      before_->blockSignals(false);
+    }
+    if (result_ && result_->success()) {
+      report_->clear(tr("<i>The registration of %1 was undone.</i>")
+                         .arg(applied_->layer() ? applied_->layer()->name() : QString()));
+      if (check_->involves(applied_->layer())) check_->clear();
+    }
+  } else if (result_ && report_->level().isEmpty()) {
+    report_->showResult(*result_);  // redone
+  }
   updateEnabled();
 }
 
 void RegistrationPanel::updateEnabled() {
   const bool inputs = source_->count() >= 2;
+  // A running task keeps the layers it started with: the choice of them waits.
+  source_->setEnabled(!busy_);
+  target_->setEnabled(!busy_);
+  use_features_->setEnabled(!busy_);
   detect_->setEnabled(!busy_ && inputs);
   register_->setEnabled(!busy_ && inputs);
   distance_->setEnabled(!busy_ && inputs);
-  const bool has_result = result_layer_ && result_ && result_->success();
-  accept_->setEnabled(has_result && pushed_);
-  revert_->setEnabled(has_result && pushed_);
-  before_->setEnabled(has_result);
+  accept_->setEnabled(applied_->undecided());
+  revert_->setEnabled(applied_->undecided());
+  before_->setEnabled(applied_->inEffect());
+  updateFeaturesState();
+}
+
+bool RegistrationPanel::featuresUpToDate() const {
+  const Layer* s = sourceLayer();
+  const Layer* t = targetLayer();
+  return s && t && featureOverlay(*s) && featureOverlay(*t) && features_.source.is(s) &&
+         features_.target.is(t) && features_.params == extractionParams(params_);
+}
+
+void RegistrationPanel::updateFeaturesState() {
+  const Layer* s = sourceLayer();
+  const Layer* t = targetLayer();
+  const bool shown = s && t && featureOverlay(*s) && featureOverlay(*t);
+  if (shown && !featuresUpToDate()) {
+    use_features_->setText(tr("Use detected features (out of date: detect again)"));
+    use_features_->setToolTip(tr("The features shown were detected with other parameters or "
+                                 "layers: registering extracts them again"));
+  } else {
+    use_features_->setText(tr("Use detected features"));
+    use_features_->setToolTip(tr("Register with the features shown (detected with the same "
+                                 "parameters); otherwise features are extracted again"));
+  }
 }
 
 bool RegistrationPanel::checkInputs(Layer*& source, Layer*& target) {
@@ -228,7 +310,10 @@ bool RegistrationPanel::detectFeatures() {
   busy_ = true;
   updateEnabled();
   app_.log.info(tr("Detecting features on %1 and %2").arg(s->name(), t->name()));
-  Task* task = startFeatureDetection(app_, *s, *t, params_);
+  const std::string params = extractionParams(params_);
+  Task* task = startFeatureDetection(app_, *s, *t, params_, [this, s, t, params] {
+    features_ = {LayerRef(*s), LayerRef(*t), params};  // called only while both exist
+  });
   connect(task, &Task::finished, this, [this](bool ok, const QString& message) {
     busy_ = false;
     updateEnabled();
@@ -241,12 +326,21 @@ bool RegistrationPanel::detectFeatures() {
 bool RegistrationPanel::startRegistration() {
   Layer *s, *t;
   if (!checkInputs(s, t)) return false;
+  bool use_features = use_features_->isChecked();
+  if (use_features && featureOverlay(*s) && featureOverlay(*t) && !featuresUpToDate()) {
+    app_.log.warning(tr("The features shown were detected with other parameters or layers: "
+                        "extracting them again"));
+    use_features = false;
+  }
   busy_ = true;
   updateEnabled();
   app_.log.info(tr("Registering %1 onto %2 (%3)")
                     .arg(s->name(), t->name(), QString::fromStdString(methodName(params_.method))));
-  Task* task = ui::startRegistration(app_, *s, *t, params_, use_features_->isChecked(),
-                                 [this](std::shared_ptr<const PipelineResult> r) { applyResult(r); });
+  Task* task = ui::startRegistration(
+      app_, *s, *t, params_, use_features,
+      [this](std::shared_ptr<const PipelineResult> r, Layer& source, const RigidTransform& start) {
+        applyResult(std::move(r), source, start);
+      });
   connect(task, &Task::finished, this, [this](bool ok, const QString& message) {
     busy_ = false;
     updateEnabled();
@@ -260,7 +354,11 @@ bool RegistrationPanel::startRegistration() {
   return true;
 }
 
-void RegistrationPanel::applyResult(std::shared_ptr<const PipelineResult> result) {
+void RegistrationPanel::applyResult(std::shared_ptr<const PipelineResult> result, Layer& source,
+                                    const RigidTransform& start) {
+  // A new result: the previous one and its distance check no longer describe what is shown.
+  check_->clear();
+  applied_->forget();
   result_ = std::move(result);
   report_->showResult(*result_);
   for (const auto& line : result_->log) app_.log.info(QString::fromStdString(line));
@@ -268,20 +366,12 @@ void RegistrationPanel::applyResult(std::shared_ptr<const PipelineResult> result
     app_.log.error(tr("Registration failed: %1").arg(QString::fromStdString(result_->report.verdict)));
     return;
   }
-  Layer* s = sourceLayer();
-  if (!s) return;
   before_->blockSignals(true);
   before_->setChecked(false);
   before_->blockSignals(false);
-  result_layer_ = s;
-  before_transform_ = layerTransform(*s);
-  after_transform_ = result_->transform() * before_transform_;
-  auto* command = new TransformCommand(app_.scene, *s, before_transform_, after_transform_,
-                                       tr("Register %1 (%2)").arg(s->name(),
-                                                                  QString::fromStdString(result_->method_used)));
-  app_.undo.push(command);  // applies it
-  pushed_ = command;
-  legend_->hide();
+  // The layer the task started with (not the one selected now), from where it was then.
+  applied_->apply(source, start, result_->transform() * start,
+                  tr("Register %1 (%2)").arg(source.name(), QString::fromStdString(result_->method_used)));
   if (result_->report.level == VerdictLevel::CheckVisually)
     app_.log.warning(tr("Check visually: %1").arg(QString::fromStdString(result_->report.verdict)));
   else
@@ -290,25 +380,17 @@ void RegistrationPanel::applyResult(std::shared_ptr<const PipelineResult> result
 }
 
 void RegistrationPanel::accept() {
-  if (!pushed_) return;
-  app_.log.info(tr("Registration of %1 accepted").arg(result_layer_ ? result_layer_->name() : QString()));
-  pushed_ = nullptr;
-  updateEnabled();
+  if (!applied_->undecided()) return;
+  app_.log.info(tr("Registration of %1 accepted").arg(applied_->layer()->name()));
+  applied_->accept();
 }
 
 void RegistrationPanel::revert() {
-  if (!pushed_ || !result_layer_) return;
-  showBefore(false);
-  const int i = app_.undo.index();
-  if (i > 0 && app_.undo.command(i - 1) == pushed_) {
-    app_.undo.undo();
-  } else {
-    app_.undo.push(new TransformCommand(app_.scene, *result_layer_, layerTransform(*result_layer_),
-                                        before_transform_, tr("Revert %1").arg(result_layer_->name())));
-  }
-  app_.log.info(tr("Registration of %1 reverted").arg(result_layer_->name()));
-  pushed_ = nullptr;
-  updateEnabled();
+  if (!applied_->undecided()) return;
+  const QString name = applied_->layer()->name();
+  before_->setChecked(false);
+  applied_->revert();
+  app_.log.info(tr("Registration of %1 reverted").arg(name));
 }
 
 void RegistrationPanel::showBefore(bool before) {
@@ -316,8 +398,7 @@ void RegistrationPanel::showBefore(bool before) {
     before_->setChecked(before);  // re-enters through toggled
     return;
   }
-  if (!result_layer_) return;
-  setLayerTransform(app_.scene, *result_layer_, before ? before_transform_ : after_transform_);
+  applied_->showBefore(before);
 }
 
 bool RegistrationPanel::colourByDistance() {
@@ -330,27 +411,11 @@ bool RegistrationPanel::colourByDistance() {
   busy_ = true;
   updateEnabled();
   const double max = distance_params_.max_distance;
-  auto* source = static_cast<DatasetLayer*>(s);
-  const QString what = t->kind() == LayerKind::Model ? tr("cloud-to-mesh") : tr("cloud-to-cloud");
   Task* task = startDistanceComputation(
       app_, *s, *t, distance_params_,
-      [this, source, max, what](std::shared_ptr<const LayerDistances> d) {
-        distances_ = d;
-        source->setDistances(d->per_scan, max);
-        app_.scene.layerChanged(source);
-        legend_->show(max, tr("Distance (m)"));
-        histogram_->setHistogram(distanceHistogram(d->all.distances, 0.0, max, kHistogramBins));
-        const DistanceResult& a = d->all;
-        distance_stats_->setText(tr("%1: %2 of %3 points matched; mean %4 m, median %5 m, "
-                                    "95%: %6 m, RMS %7 m")
-                                     .arg(what)
-                                     .arg(a.matched)
-                                     .arg(a.distances.size())
-                                     .arg(a.mean, 0, 'f', 4)
-                                     .arg(a.median, 0, 'f', 4)
-                                     .arg(a.p95, 0, 'f', 4)
-                                     .arg(a.rms, 0, 'f', 4));
-        app_.log.info(distance_stats_->text());
+      [this, max](std::shared_ptr<const LayerDistances> d, DatasetLayer& source, Layer& target) {
+        check_->show(std::move(d), source, target, max);
+        app_.log.info(check_->statistics());
       });
   connect(task, &Task::finished, this, [this](bool ok, const QString& message) {
     busy_ = false;

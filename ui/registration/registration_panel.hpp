@@ -10,18 +10,19 @@
 #include "quality/cloud_distance.hpp"
 #include "registration/auto/registration_pipeline.hpp"
 #include "model/rigid_transform.hpp"
+#include "ui/layers/layer.hpp"
 
 class QCheckBox;
 class QComboBox;
 class QLabel;
 class QPushButton;
 class QToolBox;
-class QUndoCommand;
 
 namespace plumb::ui {
 
 struct AppContext;
-class DistanceLegend;
+class AppliedRegistration;
+class DistanceCheck;
 class HistogramWidget;
 class Layer;
 class ParamPanel;
@@ -39,6 +40,7 @@ class RegistrationPanel : public QWidget {
   void refreshParams();
   DistanceParams& distanceParams() { return distance_params_; }
 
+  /// The layers to register; until chosen (here or in the combos), defaultRegistrationPair.
   Layer* sourceLayer() const;
   Layer* targetLayer() const;
   void setSourceLayer(const Layer* layer);
@@ -56,7 +58,7 @@ class RegistrationPanel : public QWidget {
   void showBefore(bool before);
 
   std::shared_ptr<const PipelineResult> lastResult() const { return result_; }
-  std::shared_ptr<const LayerDistances> lastDistances() const { return distances_; }
+  std::shared_ptr<const LayerDistances> lastDistances() const;
   const QualityReportView& report() const { return *report_; }
   const HistogramWidget& histogram() const { return *histogram_; }
   bool legendVisible() const;
@@ -68,9 +70,16 @@ class RegistrationPanel : public QWidget {
 
  private:
   void rebuildLayerCombos();
+  static void selectLayer(QComboBox& combo, const Layer* layer);
   void updateEnabled();
-  void applyResult(std::shared_ptr<const PipelineResult> result);
+  void applyResult(std::shared_ptr<const PipelineResult> result, Layer& source,
+                   const RigidTransform& start);
   void forgetLayer(Layer* layer);
+  void followAppliedResult();
+  /// The features shown on the source and target were detected by this dock for these two
+  /// layers with the current extraction parameters.
+  bool featuresUpToDate() const;
+  void updateFeaturesState();
   bool checkInputs(Layer*& source, Layer*& target);
 
   AppContext& app_;
@@ -92,13 +101,16 @@ class RegistrationPanel : public QWidget {
   QualityReportView* report_;
   HistogramWidget* histogram_;
   QLabel* distance_stats_;
-  std::unique_ptr<DistanceLegend> legend_;
+  AppliedRegistration* applied_;  ///< the last result applied (child QObject)
+  std::unique_ptr<DistanceCheck> check_;
   std::shared_ptr<const PipelineResult> result_;
-  std::shared_ptr<const LayerDistances> distances_;
-  Layer* result_layer_ = nullptr;  ///< the layer the last result moved
-  RigidTransform before_transform_, after_transform_;
-  const QUndoCommand* pushed_ = nullptr;
+  /// What the last feature detection ran on and with (extraction parameters as JSON text).
+  struct DetectedFeatures {
+    LayerRef source, target;
+    std::string params;
+  } features_;
   bool busy_ = false;
+  bool chosen_ = false;  ///< the user (or a project) chose the source/target
 };
 
 }  // namespace plumb::ui

@@ -47,6 +47,14 @@ RegistrationInput inputOf(const LayerData& d, const RigidTransform& to_world) {
                    : makeRegistrationInput(*d.model, to_world);
 }
 
+/// The layer, or an error naming it when it was removed while `what` ran (the task then
+/// finishes with that error and shows nothing).
+Layer& stillThere(const LayerRef& layer, const QString& name, const char* what) {
+  if (Layer* l = layer.get()) return *l;
+  throw InputError("'" + name.toStdString() + "' was removed during " + what +
+                   "; the result was dropped");
+}
+
 }  // namespace
 
 Layer* featureOverlay(const Layer& layer) {
@@ -58,8 +66,7 @@ Layer* featureOverlay(const Layer& layer) {
 Task* startFeatureDetection(AppContext& app, Layer& source, Layer& target,
                             const PipelineParams& params, std::function<void()> done) {
   const LayerData s = dataOf(source), t = dataOf(target);
-  Layer* src = &source;
-  Layer* tgt = &target;
+  const LayerRef src(source), tgt(target);
   Task* task = app.tasks.run(QObject::tr("Detecting features"), [&app, s, t, src, tgt, params,
                                                                   done](Progress& progress) {
     std::vector<std::string> log;
@@ -74,26 +81,28 @@ Task* startFeatureDetection(AppContext& app, Layer& source, Layer& target,
       const RegistrationInput in = inputOf(t, {});
       ft = std::make_shared<const FeatureSet>(extractFeatures(in.side(), params, true, &log, &p));
     }
-    return [&app, src, tgt, fs, ft, log, done] {
-      for (const auto& [layer, features] : {std::pair{src, fs}, std::pair{tgt, ft}}) {
+    return [&app, s, t, src, tgt, fs, ft, log, done] {
+      Layer& source = stillThere(src, s.name, "feature detection");
+      Layer& target = stillThere(tgt, t.name, "feature detection");
+      for (const auto& [layer, features] : {std::pair{&source, fs}, std::pair{&target, ft}}) {
         if (Layer* old = featureOverlay(*layer)) app.scene.removeLayer(old);
         auto& overlay = app.scene.addFeatures(QObject::tr("features"), features, layer);
         overlay.setTransform(layerTransform(*layer));
       }
       for (const auto& line : log) app.log.info(QString::fromStdString(line));
-      app.scene.layerChanged(src);
+      app.scene.layerChanged(&source);
       if (done) done();
     };
-  });
+  }, {src, tgt});
   return task;
 }
 
 Task* startRegistration(AppContext& app, Layer& source, Layer& target, const PipelineParams& params,
-                        bool use_features,
-                        std::function<void(std::shared_ptr<const PipelineResult>)> done) {
+                        bool use_features, RegistrationDone done) {
   const LayerData s = dataOf(source), t = dataOf(target);
+  const LayerRef src(source), tgt(target);
   return app.tasks.run(QObject::tr("Registering %1 onto %2").arg(s.name, t.name),
-                       [s, t, params, use_features, done](Progress& progress) {
+                       [s, t, src, tgt, params, use_features, done](Progress& progress) {
                          RegistrationInput in_s = inputOf(s, s.to_world);
                          RegistrationInput in_t = inputOf(t, t.to_world);
                          if (use_features && s.features && t.features) {
@@ -104,17 +113,21 @@ Task* startRegistration(AppContext& app, Layer& source, Layer& target, const Pip
                          }
                          auto result = std::make_shared<const PipelineResult>(
                              registerData(in_s.side(), in_t.side(), params, &progress));
-                         return [result, done] { done(result); };
-                       });
+                         return [s, t, src, tgt, result, done] {
+                           Layer& source = stillThere(src, s.name, "the registration");
+                           stillThere(tgt, t.name, "the registration");
+                           done(result, source, s.to_world);
+                         };
+                       }, {src, tgt});
 }
 
 Task* startDistanceComputation(AppContext& app, Layer& source, Layer& target,
-                               const DistanceParams& params,
-                               std::function<void(std::shared_ptr<const LayerDistances>)> done) {
+                               const DistanceParams& params, DistancesDone done) {
   if (source.kind() != LayerKind::Dataset)
     throw InputError("distance colouring needs a point dataset as the source");
   const LayerData s = dataOf(source), t = dataOf(target);
-  return app.tasks.run(QObject::tr("Distances %1 to %2").arg(s.name, t.name), [s, t, params, done](
+  const LayerRef src(source), tgt(target);
+  return app.tasks.run(QObject::tr("Distances %1 to %2").arg(s.name, t.name), [s, t, src, tgt, params, done](
                                                                                    Progress& progress) {
     auto out = std::make_shared<LayerDistances>();
     PointCloud target_cloud;
@@ -136,8 +149,12 @@ Task* startDistanceComputation(AppContext& app, Layer& source, Layer& target,
       out->per_scan.push_back(std::move(r.distances));
     }
     summarizeDistances(out->all);
-    return [out, done] { done(out); };
-  });
+    return [s, t, src, tgt, out, done] {
+      Layer& source = stillThere(src, s.name, "the distance computation");
+      Layer& target = stillThere(tgt, t.name, "the distance computation");
+      done(out, static_cast<DatasetLayer&>(source), target);
+    };
+  }, {src, tgt});
 }
 
 }  // namespace plumb::ui

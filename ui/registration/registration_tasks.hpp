@@ -2,16 +2,20 @@
 // The registration workflow's background work, on the same core calls as plumb-cli register
 // (makeRegistrationInput + extractFeatures / registerData, computeDistances): each function
 // starts a Task that copies what it needs from the layers, runs off the UI thread, and hands
-// its result back on the UI thread.
+// its result back on the UI thread. The task holds its layers (TaskManager::holds) and checks
+// they still exist before touching them: when one was destroyed meanwhile, the result is
+// dropped and the task finishes with an error saying so.
 #include <functional>
 #include <memory>
 
 #include "quality/cloud_distance.hpp"
+#include "model/rigid_transform.hpp"
 #include "registration/auto/registration_pipeline.hpp"
 
 namespace plumb::ui {
 
 struct AppContext;
+class DatasetLayer;
 class Layer;
 class Task;
 
@@ -22,10 +26,12 @@ Task* startFeatureDetection(AppContext& app, Layer& source, Layer& target,
 
 /// registerData(source, target) with both sides in world coordinates (their current
 /// transforms). `use_features`: the layers' detected overlays replace extraction. The result's
-/// transform maps the source's world position to its registered one.
+/// transform maps the source's world position at the start (`start`) to its registered one;
+/// `done` gets the source the task started with.
+using RegistrationDone = std::function<void(std::shared_ptr<const PipelineResult> result,
+                                            Layer& source, const RigidTransform& start)>;
 Task* startRegistration(AppContext& app, Layer& source, Layer& target, const PipelineParams& params,
-                        bool use_features,
-                        std::function<void(std::shared_ptr<const PipelineResult>)> done);
+                        bool use_features, RegistrationDone done);
 
 /// Per-scan distances of a dataset layer to the target (cloud-to-cloud for a dataset,
 /// cloud-to-mesh for a model), as shown (current transforms).
@@ -33,9 +39,10 @@ struct LayerDistances {
   std::vector<std::vector<float>> per_scan;
   DistanceResult all;  ///< statistics over all scans (distances concatenated)
 };
+using DistancesDone = std::function<void(std::shared_ptr<const LayerDistances> distances,
+                                         DatasetLayer& source, Layer& target)>;
 Task* startDistanceComputation(AppContext& app, Layer& source, Layer& target,
-                               const DistanceParams& params,
-                               std::function<void(std::shared_ptr<const LayerDistances>)> done);
+                               const DistanceParams& params, DistancesDone done);
 
 /// The overlay child of a layer holding detected features, or nullptr.
 Layer* featureOverlay(const Layer& layer);

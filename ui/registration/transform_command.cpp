@@ -8,7 +8,13 @@ TransformCommand::TransformCommand(Scene& scene, Layer& layer, const RigidTransf
                                    const RigidTransform& after, const QString& text)
     : QUndoCommand(text), scene_(scene), layer_(layer), before_(before), after_(after) {}
 
-void TransformCommand::undo() { setLayerTransform(scene_, layer_, before_); }
-void TransformCommand::redo() { setLayerTransform(scene_, layer_, after_); }
+void TransformCommand::undo() {
+  if (Layer* layer = layer_.get()) setLayerTransform(scene_, *layer, before_);
+  else setObsolete(true);
+}
+void TransformCommand::redo() {
+  if (Layer* layer = layer_.get()) setLayerTransform(scene_, *layer, after_);
+  else setObsolete(true);
+}
 
 }  // namespace plumb::ui

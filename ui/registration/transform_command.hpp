@@ -1,10 +1,12 @@
 #pragma once
 // An applied transform on the undo stack (Edit > Undo/Redo): registration results, manual
-// alignments, reverts. The layer is looked up by pointer; the main window clears the stack
-// when a layer is removed, so commands never outlive their layer.
+// alignments, reverts. Edit > Remove layer keeps removed layers alive in its own command, so
+// the history stays valid; a layer destroyed otherwise (scene API) makes its commands no-ops
+// that the stack drops (obsolete).
 #include <QUndoCommand>
 
 #include "model/rigid_transform.hpp"
+#include "ui/layers/layer.hpp"
 
 namespace plumb::ui {
 
@@ -17,11 +19,10 @@ class TransformCommand : public QUndoCommand {
                    const RigidTransform& after, const QString& text);
   void undo() override;
   void redo() override;
-  Layer& layer() const { return layer_; }
 
  private:
   Scene& scene_;
-  Layer& layer_;
+  LayerRef layer_;
   RigidTransform before_, after_;
 };
 

@@ -41,7 +41,8 @@ Task* startAttachTrajectory(AppContext& app, DatasetLayer& layer, const QString&
                            .arg(path)
                            .arg(poses));
         };
-      });
+      },
+      {LayerRef(layer)});
   QObject::connect(task, &Task::finished, &app.scene, [&app, alive, done](bool ok, const QString& message) {
     if (!ok && message != QLatin1String("cancelled")) app.log.error(message);
     if (done) done(ok && !alive.expired());

@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "ui/layers/layer.hpp"
 #include "ui/tasks/task.hpp"
 
 namespace plumb::ui {
@@ -14,11 +15,16 @@ class TaskManager : public QObject {
  public:
   explicit TaskManager(QObject* parent = nullptr);
 
-  /// Starts a task (owned by the manager until it finishes).
-  Task* run(const QString& title, Task::Work work);
+  /// Starts a task (owned by the manager until it finishes). `holds`: the layers whose result
+  /// the task applies when it finishes (registration inputs...): actions that would remove or
+  /// replace them stay disabled meanwhile (holds()).
+  Task* run(const QString& title, Task::Work work, std::vector<LayerRef> holds = {});
   int runningCount() const { return static_cast<int>(tasks_.size()); }
   const std::vector<Task*>& running() const { return tasks_; }
   void cancelAll();
+  /// A running task holds `layer` (a root layer) / any layer.
+  bool holds(const Layer* layer) const;
+  bool holdsLayers() const;
 
  signals:
   void taskStarted(plumb::ui::Task* task);
@@ -28,6 +34,7 @@ class TaskManager : public QObject {
 
  private:
   std::vector<Task*> tasks_;  ///< children of this object (Qt parent ownership)
+  std::vector<std::pair<const Task*, LayerRef>> held_;
 };
 
 }  // namespace plumb::ui

@@ -3,6 +3,7 @@
 // reports built by the core's assessRegistration.
 #include <QApplication>
 #include <QLabel>
+#include <QTableWidget>
 #include <QTest>
 
 #include "registration/auto/registration_pipeline.hpp"
@@ -85,6 +86,47 @@ class GuiQualityReportTest : public QObject {
     QCOMPARE(view.candidateCount(), 2);
     QCOMPARE(view.candidateRole(0), QString("chosen"));
     QCOMPARE(view.candidateRole(1), QString("worse"));
+  }
+
+  // At the dock's width every value is readable: the value column gets room, long values
+  // wrap onto taller rows, every cell's tooltip holds the whole row; counts print without
+  // decimals, flags as yes/no, and the internal timings come last (before: one letter of each
+  // value showed, warnings were cut off, "matched openings 6.000" amid "seconds ...").
+  void figuresAreReadableAtTheDockWidth() {
+    QualityReportView view;
+    view.resize(320, 600);
+    PipelineResult r = pipelineResult(RegistrationStatus::Success, false);
+    r.report.figures = {{"seconds features", 1.5}, {"matched openings", 6.0},
+                        {"wall thickness measured", 1.0}, {"wall thickness (m)", 0.31},
+                        {"façade directions with matched openings (long name)", 2.0}};
+    r.report.warnings.push_back(
+        "the refinement was switched off: the placement rests on the features alone, check "
+        "the overlap of the two data sets visually before using it");
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.showResult(r);
+    auto* table = view.findChild<QTableWidget*>("qualityFigures");
+    QVERIFY(table);
+    const int width = table->viewport()->width();
+    QVERIFY2(table->columnWidth(1) >= width / 2 - 2,
+             qPrintable(QString("%1 of %2").arg(table->columnWidth(1)).arg(width)));
+    for (int row = 0; row < table->rowCount(); ++row) {
+      const QString name = view.figureName(row), value = view.figureValue(row);
+      QCOMPARE(table->item(row, 1)->toolTip(), name + ": " + value);
+      QCOMPARE(table->item(row, 0)->toolTip(), name + ": " + value);
+      // The row is as tall as the value wrapped in its column.
+      const QRect needed = table->fontMetrics().boundingRect(
+          QRect(0, 0, table->columnWidth(1) - 8, 10000), Qt::TextWordWrap, value);
+      QVERIFY2(table->rowHeight(row) >= needed.height(), qPrintable(name));
+    }
+    QStringList names;
+    for (int row = 0; row < table->rowCount(); ++row) names << view.figureName(row);
+    QCOMPARE(view.figureValue(int(names.indexOf("matched openings"))), QString("6"));
+    QCOMPARE(view.figureValue(int(names.indexOf("wall thickness measured"))), QString("yes"));
+    QCOMPARE(view.figureValue(int(names.indexOf("wall thickness (m)"))), QString("0.310"));
+    QVERIFY(!names.contains("seconds features"));
+    QCOMPARE(names.last(), QString("Time: features"));
+    QCOMPARE(view.figureValue(int(names.size()) - 1), QString("1.50 s"));
   }
 
   void checkVisuallyIsAmberAndListsTheWarning() {
