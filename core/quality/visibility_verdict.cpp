@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -44,7 +45,7 @@ std::string describeContradiction(const VisibilitySummary& s, const VisibilityEv
 }
 
 /// The sentence naming the evidence the verdict rests on.
-std::string evidenceSentence(const VisibilitySummary& s, const QualityReport& q) {
+std::string evidenceSentence(const VisibilitySummary& s, const FitFigures& fit) {
   std::ostringstream o;
   if (!s.computed) return "";
   if (!s.conclusive()) {
@@ -60,46 +61,35 @@ std::string evidenceSentence(const VisibilitySummary& s, const QualityReport& q)
   if (s.expected_overlap >= 0)
     o << "; visibility predicts " << percent(s.expected_overlap) << " of the source visible to "
       << (s.model_target ? "the model" : "the target's scanners");
-  if (q.refined) o << " (refinement matched " << percent(q.overlap_ratio) << ")";
+  if (fit.refined) o << " (refinement matched " << percent(fit.overlap) << ")";
   o << ".";
   return o.str();
 }
 
-/// A success verdict that claimed no warnings now has one: the level drops to check visually
-/// and the closing sentence says so.
-void markCaution(QualityReport& q) {
-  const std::string clean = usableSentence();
-  const auto at = q.verdict.find(clean);
-  if (at != std::string::npos) q.verdict.replace(at, clean.size(), checkVisuallySentence(q.warnings.size()));
-  q.level = verdictLevelOf(q.success, q.warnings);
-}
-
 }  // namespace
 
-void applyVisibilityEvidence(QualityReport& q, const VisibilityParams& p) {
-  VisibilitySummary& s = q.visibility;
-  if (!q.success || !s.computed) return;
+FreeSpaceFinding judgeFreeSpace(const VisibilitySummary& s, const VisibilityParams& p,
+                                const FitFigures& fit) {
+  FreeSpaceFinding f;
+  if (!s.computed) return f;
   if (s.conclusive() && s.contradiction_ratio > p.fail_ratio) {
-    const auto& e = worstDirection(s, p);
-    q.success = false;
-    q.level = VerdictLevel::Failed;
-    q.status = "contradicted";
-    q.verdict = "Registration FAILED (contradicted): " + describeContradiction(s, e, p) +
+    f.contradicted = true;
+    f.failure = "Registration FAILED (contradicted): " +
+                describeContradiction(s, worstDirection(s, p), p) +
                 ", above the failure level of " + percent(p.fail_ratio) +
                 ": the scanners would have seen through the other data. This is another "
                 "building or a wrong placement, however well the surfaces match (point RMS " +
-                std::to_string(static_cast<int>(std::lround(1000.0 * q.point_rms))) +
+                std::to_string(static_cast<int>(std::lround(1000.0 * fit.point_rms))) +
                 " mm). No transform is given; check that the two datasets show the same place.";
-    return;
+    return f;
   }
-  if (s.conclusive() && s.contradiction_ratio > p.warn_ratio) {
-    q.warnings.push_back("free space: " + describeContradiction(s, worstDirection(s, p), p) +
+  if (s.conclusive() && s.contradiction_ratio > p.warn_ratio)
+    f.warnings.push_back("free space: " + describeContradiction(s, worstDirection(s, p), p) +
                          ", above the warning level of " + percent(p.warn_ratio) +
                          ": moving objects, glass, changes, or a partly wrong placement; check "
                          "visually");
-    markCaution(q);
-  }
-  q.verdict += evidenceSentence(s, q);
+  f.evidence = evidenceSentence(s, fit);
+  return f;
 }
 
 void addVisibilityJson(nlohmann::json& j, const VisibilitySummary& s) {

@@ -1,6 +1,5 @@
 #include "registration/auto/visibility_check.hpp"
 
-#include "quality/visibility_verdict.hpp"
 
 namespace plumb {
 
@@ -29,11 +28,14 @@ VisibilitySummary checkVisibility(const RegistrationSide& source, const Registra
   return s;
 }
 
-void addVisibilityEvidence(const RegistrationSide& source, const RegistrationSide& target,
-                           const VisibilityParams& p, QualityReport& report) {
-  if (!p.enabled || !report.success) return;
-  report.visibility = checkVisibility(source, target, report.transform, p);
-  applyVisibilityEvidence(report, p);
+std::optional<VerdictEvidence> measureVerdictEvidence(const RegistrationSide& source,
+                                                      const RegistrationSide& target,
+                                                      const GlobalRegistrationResult& g,
+                                                      const RefineResult* refined,
+                                                      const VisibilityParams& p) {
+  if (!p.enabled || !g.ok()) return std::nullopt;
+  const RigidTransform& t = refined ? refined->transform : g.transform;
+  return VerdictEvidence{checkVisibility(source, target, t, p), p};
 }
 
 }  // namespace plumb

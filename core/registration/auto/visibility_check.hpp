@@ -1,7 +1,10 @@
 #pragma once
 // The pipeline's free-space check (issue 13): after refinement, the final transform is tested
-// against the space each side's scanners saw through (quality/visibility_evidence.hpp), and
-// the verdict rule (quality/visibility_verdict.hpp) may fail or flag the report.
+// against the space each side's scanners saw through (quality/visibility_evidence.hpp); the
+// evidence goes into assessRegistration, whose rule (quality/visibility_verdict.hpp) may fail
+// or flag the report.
+#include <optional>
+
 #include "quality/quality_report.hpp"
 #include "quality/visibility_evidence.hpp"
 #include "registration/auto/registration_pipeline.hpp"
@@ -15,9 +18,12 @@ VisibilitySummary checkVisibility(const RegistrationSide& source, const Registra
                                   const RigidTransform& source_to_target,
                                   const VisibilityParams& params);
 
-/// When params.enabled and the report is a success: checkVisibility on report.transform,
-/// stored in report.visibility, then applyVisibilityEvidence.
-void addVisibilityEvidence(const RegistrationSide& source, const RegistrationSide& target,
-                           const VisibilityParams& params, QualityReport& report);
+/// The evidence of the final transform (the refined one when `refined` is given, else the
+/// global one) when params.enabled and the global step succeeded; nullopt otherwise.
+std::optional<VerdictEvidence> measureVerdictEvidence(const RegistrationSide& source,
+                                                      const RegistrationSide& target,
+                                                      const GlobalRegistrationResult& global,
+                                                      const RefineResult* refined,
+                                                      const VisibilityParams& params);
 
 }  // namespace plumb

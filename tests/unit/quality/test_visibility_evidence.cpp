@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "quality/visibility_evidence.hpp"
+#include "quality/quality_report.hpp"
 #include "quality/visibility_verdict.hpp"
 
 using namespace plumb;
@@ -160,15 +161,10 @@ TEST(ModelRays, WithoutSensorOriginsThereIsNoEvidence) {
 
 namespace {
 
-QualityReport successfulReport(double contradiction_ratio, bool available = true) {
-  QualityReport q;
-  q.success = true;
-  q.status = "success";
-  q.refined = true;
-  q.overlap_ratio = 0.4;
-  q.level = VerdictLevel::Usable;
-  q.verdict = "Registration succeeded. " + usableSentence();
-  auto& v = q.visibility;
+/// Free-space evidence of one direction with `contradiction_ratio` of 1000 visible points.
+VerdictEvidence freeSpace(double contradiction_ratio, bool available = true) {
+  VerdictEvidence ev;
+  auto& v = ev.visibility;
   v.computed = true;
   v.source_in_target.available = available;
   v.source_in_target.missing_reason = available ? "" : "the target has no sensor origins";
@@ -179,40 +175,60 @@ QualityReport successfulReport(double contradiction_ratio, bool available = true
   v.source_in_target.consistent = 1000 - v.source_in_target.contradicting;
   v.source_in_target.contradiction_ratio = contradiction_ratio;
   v.source_in_target.expected_overlap = 0.5;
-  summarizeVisibility(v, VisibilityParams{});
-  return q;
+  summarizeVisibility(v, ev.visibility_params);
+  return ev;
+}
+
+/// A report that passes every rule but the free-space one: a refinement holding all six
+/// directions, 40% overlap, 8 mm RMS.
+QualityReport assessWith(const VerdictEvidence& ev) {
+  GlobalRegistrationResult g;
+  g.status = RegistrationStatus::Success;
+  g.method = "planes";
+  RefineResult r;
+  r.rms = 0.008;
+  r.overlap = 0.4;
+  r.inliers = 5000;
+  r.normal_matrix = Eigen::Matrix<double, 6, 6>::Identity();
+  r.direction_resistance.fill(0.4);
+  return assessRegistration(g, &r, {}, {}, &ev);
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
 }
 
 }  // namespace
 
 TEST(VisibilityVerdict, ManyContradictionsFailFewWarnNoneSayWhatTheVerdictRestsOn) {
   const VisibilityParams p;
-  QualityReport fail = successfulReport(0.6);
-  applyVisibilityEvidence(fail, p);
+  const QualityReport fail = assessWith(freeSpace(0.6));
   EXPECT_FALSE(fail.success);
   EXPECT_EQ(fail.status, "contradicted");
   EXPECT_NE(fail.verdict.find("60.0%"), std::string::npos) << fail.verdict;
   EXPECT_NE(fail.verdict.find("another building or a wrong placement"), std::string::npos);
+  EXPECT_NE(fail.verdict.find("point RMS 8 mm"), std::string::npos) << fail.verdict;
 
-  QualityReport warn = successfulReport(0.5 * (p.warn_ratio + p.fail_ratio));
-  applyVisibilityEvidence(warn, p);
+  const QualityReport warn = assessWith(freeSpace(0.5 * (p.warn_ratio + p.fail_ratio)));
   EXPECT_TRUE(warn.success);
   ASSERT_EQ(warn.warnings.size(), 1u);
   EXPECT_NE(warn.warnings[0].find("check visually"), std::string::npos);
   EXPECT_EQ(warn.verdict.find("the result can be used"), std::string::npos) << warn.verdict;
-  EXPECT_NE(warn.verdict.find("CHECK VISUALLY: 1 warning(s)"), std::string::npos) << warn.verdict;
+  EXPECT_EQ(occurrences(warn.verdict, "CHECK VISUALLY: 1 warning(s)"), 1u) << warn.verdict;
   EXPECT_EQ(warn.level, VerdictLevel::CheckVisually);
   EXPECT_EQ(fail.level, VerdictLevel::Failed);
 
-  QualityReport good = successfulReport(0.01);
-  applyVisibilityEvidence(good, p);
+  const QualityReport good = assessWith(freeSpace(0.01));
   EXPECT_TRUE(good.success);
   EXPECT_TRUE(good.warnings.empty());
+  EXPECT_EQ(occurrences(good.verdict, "the result can be used"), 1u) << good.verdict;
   EXPECT_NE(good.verdict.find("Free space agrees"), std::string::npos) << good.verdict;
+  EXPECT_NE(good.verdict.find("(refinement matched 40.0%)"), std::string::npos) << good.verdict;
   EXPECT_EQ(good.level, VerdictLevel::Usable);
 
-  QualityReport missing = successfulReport(0.0, /*available=*/false);
-  applyVisibilityEvidence(missing, p);
+  const QualityReport missing = assessWith(freeSpace(0.0, /*available=*/false));
   EXPECT_TRUE(missing.success);
   EXPECT_NE(missing.verdict.find("No free-space evidence (the target has no sensor origins)"),
             std::string::npos)
