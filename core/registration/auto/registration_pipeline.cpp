@@ -280,7 +280,7 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
   if (out.candidates.empty()) out.candidates = unrefinedCandidates(out.global);
   out.seconds_refine = secondsSince(t0);
   const RefineResult* refined = out.refinement ? &*out.refinement : nullptr;
-  const auto evidence = measureVerdictEvidence(source, target, out.global, refined, p.visibility);
+  const auto evidence = measureVerdictEvidence(source, target, out, p.visibility);
   out.report = assessRegistration(out.global, refined, p.quality, out.candidates,
                                   evidence ? &*evidence : nullptr);
   out.report.figures.push_back({"seconds features", out.seconds_features});
