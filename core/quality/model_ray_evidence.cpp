@@ -1,6 +1,8 @@
 // Scan to model free-space test (VisibilityEvidence, modelRayEvidence): rays from the scan's
 // sensors to its points, in the model frame, against the model's structural surfaces with the
 // shared RayCaster (Embree when available).
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -9,6 +11,7 @@
 #include <set>
 
 #include "quality/station_range_images.hpp"
+#include "quality/structure_evidence.hpp"
 #include "quality/visibility_evidence.hpp"
 #include "simulation/ray_caster.hpp"
 #include "common/stopwatch.hpp"
@@ -62,6 +65,7 @@ std::vector<bool> seeThroughTriangles(const BimModel& m, const VisibilityParams&
 struct ScanRays {
   std::vector<Ray> rays;
   std::vector<double> ranges;  ///< sensor to measured point, m
+  std::vector<std::size_t> index;  ///< the scan point of each ray
   std::size_t origins = 0;     ///< distinct sensor origins among the rays
 };
 
@@ -84,6 +88,7 @@ ScanRays sampleRays(const PointCloud& scan, const std::optional<Eigen::Vector3d>
     if (!(r >= p.min_sensor_distance) || !std::isfinite(r)) continue;
     out.rays.push_back({o, d / r});
     out.ranges.push_back(r);
+    out.index.push_back(i);
   }
   out.origins = origins ? distinct.size() : 1;
   return out;
@@ -104,12 +109,33 @@ Sighting classifyRay(const Ray& ray, double range, const RayHit& hit, const RayC
   return Sighting::Occluded;  // measured in front of the model surface: clutter, furniture
 }
 
+/// For the structure figure: a point in front of every structural surface (Occluded) is
+/// still explained when some model surface lies at it, within twice the margin along its ray
+/// (a ceiling covering below the slab, a door, a window, furniture); otherwise the model is
+/// empty where the scan measured a surface, and the point stays Occluded (unexplained).
+std::vector<Sighting> explainedByAnySurface(const ScanRays& rays, std::vector<Sighting> s,
+                                            const BimModel& model, const VisibilityParams& p) {
+  const RayCaster any(model.mesh);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, s.size(), 512),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                        if (s[k] != Sighting::Occluded) continue;
+                        const Ray& ray = rays.rays[k];
+                        const double w = 2.0 * (p.min_margin + p.range_margin * rays.ranges[k]);
+                        const Ray near{ray.origin + (rays.ranges[k] - w) * ray.direction,
+                                       ray.direction};
+                        if (any.cast(near, 2.0 * w).hit()) s[k] = Sighting::Consistent;
+                      }
+                    });
+  return s;
+}
+
 }  // namespace
 
 VisibilityEvidence modelRayEvidence(const PointCloud& scan,
                                     const std::optional<Eigen::Vector3d>& viewpoint,
                                     const BimModel& model, const RigidTransform& to_model,
-                                    const VisibilityParams& p) {
+                                    const VisibilityParams& p, TestedSightings* detail) {
   const auto t0 = std::chrono::steady_clock::now();
   VisibilityEvidence e;
   e.what = "scan rays crossing model surfaces";
@@ -121,7 +147,8 @@ VisibilityEvidence modelRayEvidence(const PointCloud& scan,
     e.missing_reason = "no points or no model triangles";
     return e;
   }
-  const RayCaster caster(model.mesh, seeThroughTriangles(model, p));
+  const auto see_through = seeThroughTriangles(model, p);
+  const RayCaster caster(model.mesh, see_through);
   const ScanRays rays = sampleRays(scan, viewpoint, to_model, p);
   std::vector<RayHit> hits;
   caster.castAll(rays.rays, hits, 1e30, p.min_sensor_distance);
@@ -131,6 +158,12 @@ VisibilityEvidence modelRayEvidence(const PointCloud& scan,
   for (std::size_t k = 0; k < sightings.size(); ++k)
     sightings[k] = classifyRay(rays.rays[k], rays.ranges[k], hits[k], caster, p);
   tallySightings(sightings, e);
+  if (detail)
+    *detail = TestedSightings{
+        rays.index,
+        see_through.empty() ? std::move(sightings)
+                            : explainedByAnySurface(rays, std::move(sightings), model, p),
+        true};
   e.seconds = secondsSince(t0);
   return e;
 }

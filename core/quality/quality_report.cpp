@@ -114,21 +114,19 @@ namespace {
 bool runnerUpRefined(const std::vector<PlacementCandidate>& c) {
   return c.size() > 1 && c[1].refined;
 }
-}  // namespace
 
-std::string usableSentence() {
-  return "All six degrees of freedom are well constrained and no competing placement fits as "
-         "well: the result can be used.";
-}
+const char* kUsableSentence =
+    "All six degrees of freedom are well constrained and no competing placement fits as well: "
+    "the result can be used.";
 
 std::string checkVisuallySentence(std::size_t warnings) {
   return "CHECK VISUALLY: " + std::to_string(warnings) +
          " warning(s) below; the result is written but verify it before relying on it.";
 }
 
-QualityReport assessRegistration(const GlobalRegistrationResult& g, const RefineResult* refine,
-                                 const QualityParams& p,
-                                 const std::vector<PlacementCandidate>& candidates) {
+/// The global step's figures, copied into the report.
+QualityReport fromGlobal(const GlobalRegistrationResult& g,
+                         const std::vector<PlacementCandidate>& candidates) {
   QualityReport q;
   q.candidates = candidates;
   q.method = g.method;
@@ -149,66 +147,115 @@ QualityReport assessRegistration(const GlobalRegistrationResult& g, const Refine
   q.inlier_features = g.inlier_features;
   q.feature_rms = g.feature_rms;
   q.figures = g.figures;
+  return q;
+}
+
+std::string globalFailureVerdict(const QualityReport& q, const std::string& message) {
   std::ostringstream verdict;
-  if (!g.ok()) {
-    q.success = false;
-    verdict << "Registration FAILED (" << q.status << "): " << g.message
-            << ". No transform is given; do not use this result. Check that the two datasets "
-               "overlap, or try another method or manual tie points.";
-    if (q.candidates.size() > 1)
-      verdict << " " << q.candidates.size() << " candidate placements are listed in the report.";
-    q.verdict = verdict.str();
-    q.level = VerdictLevel::Failed;
-    return q;
+  verdict << "Registration FAILED (" << q.status << "): " << message
+          << ". No transform is given; do not use this result. Check that the two datasets "
+             "overlap, or try another method or manual tie points.";
+  if (q.candidates.size() > 1)
+    verdict << " " << q.candidates.size() << " candidate placements are listed in the report.";
+  return verdict.str();
+}
+
+/// The refinement's figures and its hard rules (overlap, free directions); returns the
+/// failure verdict, or "" when the refinement passed.
+std::string assessRefinement(const GlobalRegistrationResult& g, const RefineResult& r,
+                             const QualityParams& p, QualityReport& q) {
+  q.refined = true;
+  q.transform = r.transform;
+  q.point_rms = r.rms;
+  q.overlap_ratio = r.overlap;
+  q.point_inliers = r.inliers;
+  q.refinement_shift = RigidTransform::translationError(r.transform, g.transform);
+  q.refinement_rotation = RigidTransform::rotationErrorDeg(r.transform, g.transform);
+  q.weak_directions = weakDirections(r, p, &q.eigenvalues);
+  q.direction_resistance = r.direction_resistance;
+  if (q.point_rms > p.max_point_rms)
+    q.warnings.push_back("point RMS " + std::to_string(q.point_rms) + " m is above " +
+                         std::to_string(p.max_point_rms) +
+                         " m: noisy data, moving objects or a partial misalignment");
+  std::ostringstream verdict;
+  if (r.inliers < 10 || q.overlap_ratio < p.min_overlap) {
+    q.status = "refinement failed";
+    verdict << "Registration FAILED: after refinement only " << std::setprecision(3)
+            << 100.0 * q.overlap_ratio << "% of the source points lie within the inlier "
+            << "distance of the target (minimum " << 100.0 * p.min_overlap
+            << "%). The global alignment is probably wrong. " << r.message;
+  } else {
+    failOnFreeDirections(q, verdict);
   }
-  bool fail = false;
-  if (refine) {
-    q.refined = true;
-    q.transform = refine->transform;
-    q.point_rms = refine->rms;
-    q.overlap_ratio = refine->overlap;
-    q.point_inliers = refine->inliers;
-    q.refinement_shift = RigidTransform::translationError(refine->transform, g.transform);
-    q.refinement_rotation = RigidTransform::rotationErrorDeg(refine->transform, g.transform);
-    q.weak_directions = weakDirections(*refine, p, &q.eigenvalues);
-    q.direction_resistance = refine->direction_resistance;
-    if (refine->inliers < 10 || q.overlap_ratio < p.min_overlap) {
-      fail = true;
-      q.status = "refinement failed";
-      verdict << "Registration FAILED: after refinement only " << std::setprecision(3)
-              << 100.0 * q.overlap_ratio << "% of the source points lie within the inlier "
-              << "distance of the target (minimum " << 100.0 * p.min_overlap
-              << "%). The global alignment is probably wrong. "
-              << refine->message;
-    }
-    if (!fail) fail = failOnFreeDirections(q, verdict);
-    if (q.point_rms > p.max_point_rms)
-      q.warnings.push_back("point RMS " + std::to_string(q.point_rms) +
-                           " m is above " + std::to_string(p.max_point_rms) +
-                           " m: noisy data, moving objects or a partial misalignment");
-  }
+  return verdict.str();
+}
+
+/// Warnings that do not depend on the points' evidence: refinement off, a close unrefined
+/// runner-up, weak directions.
+void addStructuralWarnings(const GlobalRegistrationResult& g, const RefineResult* refine,
+                           const QualityParams& p, QualityReport& q) {
   if (!refine)
     q.warnings.push_back("refinement was off: the degrees of freedom were not checked on the "
                          "points (run with refinement to know whether the data fixes all six)");
-  if (g.runner_up && g.relative_gap < p.warn_relative_gap && !runnerUpRefined(candidates))
+  if (g.runner_up && g.relative_gap < p.warn_relative_gap && !runnerUpRefined(q.candidates))
     q.warnings.push_back("a different transform scored only " +
                          std::to_string(100.0 * g.relative_gap) +
                          "% lower: the scene is nearly symmetric, check the result visually");
   for (const auto& w : q.weak_directions) q.warnings.push_back(w.description);
-  q.success = !fail;
-  q.level = verdictLevelOf(q.success, q.warnings);
-  if (q.success) {
-    verdict << std::setprecision(3) << "Registration succeeded with the " << g.method
-            << " method: " << g.inlier_features << " of " << g.source_features
-            << " source features matched";
-    if (q.refined)
-      verdict << ", point RMS " << 1000.0 * q.point_rms << " mm over " << 100.0 * q.overlap_ratio
-              << "% overlap";
-    verdict << ". ";
-    verdict << (q.level == VerdictLevel::Usable ? usableSentence()
-                                                : checkVisuallySentence(q.warnings.size()));
+}
+
+std::string successVerdict(const GlobalRegistrationResult& g, const QualityReport& q,
+                           const std::string& evidence_sentence) {
+  std::ostringstream verdict;
+  verdict << std::setprecision(3) << "Registration succeeded with the " << g.method
+          << " method: " << g.inlier_features << " of " << g.source_features
+          << " source features matched";
+  if (q.refined)
+    verdict << ", point RMS " << 1000.0 * q.point_rms << " mm over " << 100.0 * q.overlap_ratio
+            << "% overlap";
+  verdict << ". "
+          << (q.level == VerdictLevel::Usable ? std::string(kUsableSentence)
+                                              : checkVisuallySentence(q.warnings.size()))
+          << evidence_sentence;
+  return verdict.str();
+}
+
+void setOutcome(QualityReport& q, bool success, std::string verdict) {
+  q.success = success;
+  q.level = verdictLevelOf(success, q.warnings);
+  q.verdict = std::move(verdict);
+}
+}  // namespace
+
+QualityReport assessRegistration(const GlobalRegistrationResult& g, const RefineResult* refine,
+                                 const QualityParams& p,
+                                 const std::vector<PlacementCandidate>& candidates,
+                                 const VerdictEvidence* evidence) {
+  QualityReport q = fromGlobal(g, candidates);
+  if (!g.ok()) {
+    setOutcome(q, false, globalFailureVerdict(q, g.message));
+    return q;
   }
-  q.verdict = verdict.str();
+  const std::string refine_failure = refine ? assessRefinement(g, *refine, p, q) : "";
+  addStructuralWarnings(g, refine, p, q);
+  if (!refine_failure.empty()) {
+    setOutcome(q, false, refine_failure);
+    return q;
+  }
+  FreeSpaceFinding free_space;
+  if (evidence) {
+    q.visibility = evidence->visibility;
+    free_space = judgeFreeSpace(q.visibility, evidence->visibility_params,
+                                {q.refined, q.overlap_ratio, q.point_rms});
+  }
+  if (free_space.contradicted) {
+    q.status = "contradicted";
+    setOutcome(q, false, free_space.failure);
+    return q;
+  }
+  q.warnings.insert(q.warnings.end(), free_space.warnings.begin(), free_space.warnings.end());
+  q.level = verdictLevelOf(true, q.warnings);
+  setOutcome(q, true, successVerdict(g, q, free_space.evidence));
   return q;
 }
 

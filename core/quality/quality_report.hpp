@@ -79,23 +79,27 @@ struct QualityReport {
   std::vector<WeakDirection> weak_directions;
   std::vector<std::pair<std::string, double>> figures;
   std::vector<std::string> warnings;
-  /// Free-space evidence of the final transform (visibility_verdict.hpp applies it).
+  /// Free-space evidence of the final transform (VerdictEvidence; the rule: visibility_verdict.hpp).
   VisibilitySummary visibility;
   /// Every placement considered, the answer first (refined figures when refinement ran).
   std::vector<PlacementCandidate> candidates;
 };
 
-/// The verdict's closing sentence for a usable result, and for one with `warnings` warnings
-/// (check visually). Shared by every rule that adds a warning after assessRegistration.
-std::string usableSentence();
-std::string checkVisuallySentence(std::size_t warnings);
+/// Evidence measured under the final transform before the report is composed (the pipeline's
+/// free-space check); the rules that read it run inside assessRegistration, so the verdict is
+/// written once.
+struct VerdictEvidence {
+  VisibilitySummary visibility;
+  VisibilityParams visibility_params;
+};
 
 /// Builds the report. `refine` may be null (refinement off). `candidates`: the placements
 /// considered (PipelineResult::candidates); when the runner-up among them was refined, the
-/// refined comparison replaces the score-gap warning.
+/// refined comparison replaces the score-gap warning. `evidence` may be null (not measured).
 QualityReport assessRegistration(const GlobalRegistrationResult& global,
                                  const RefineResult* refine, const QualityParams& params = {},
-                                 const std::vector<PlacementCandidate>& candidates = {});
+                                 const std::vector<PlacementCandidate>& candidates = {},
+                                 const VerdictEvidence* evidence = nullptr);
 
 /// Weak and unconstrained directions of a refinement's normal matrix (rotation first, scaled
 /// by a length): weak by eigenvalue ratio (and not held by a slide resistance of at least

@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "quality/station_range_images.hpp"
+#include "quality/structure_evidence.hpp"
 #include "common/stopwatch.hpp"
 
 namespace plumb {
@@ -46,7 +47,22 @@ const ParamSchema<VisibilityParams>& VisibilityParams::schema() {
                 "Above this fraction of visible points in seen-through space the registration "
                 "fails as contradicted")
           .real(&P::warn_ratio, "warn-ratio", "Warn contradiction ratio", "", 0.0, 1.0,
-                "Above this fraction the result is flagged for a visual check");
+                "Above this fraction the result is flagged for a visual check")
+          .real(&P::structure_min_area, "structure-min-area", "Structure plane area", "m2", 0.1,
+                1000.0, "Planes at least this large are judged one by one (walls, floors)", true)
+          .integer(&P::structure_min_points, "structure-min-points", "Structure plane points", "",
+                   1, 1e6, "A plane is judged with at least this many sighted points", true)
+          .real(&P::structure_plane_fraction, "structure-plane-fraction",
+                "Unexplained plane fraction", "", 0.0, 1.0,
+                "A plane with more of its sighted points unexplained is unexplained", true)
+          .real(&P::structure_min_judged_area, "structure-min-judged", "Min judged structure",
+                "m2", 0.0, 1e6, "Less judged plane area: the structure figure is inconclusive",
+                true)
+          .real(&P::structure_fail_ratio, "structure-fail", "Fail unexplained structure", "", 0.0,
+                1.0, "Above this share of the judged large-plane area unexplained the "
+                "registration fails as contradicted")
+          .real(&P::structure_warn_ratio, "structure-warn", "Warn unexplained structure", "", 0.0,
+                1.0, "Above this share the result is flagged for a visual check");
   return s;
 }
 
@@ -88,7 +104,7 @@ VisibilityEvidence freeSpaceEvidence(const PointCloud& observer,
                                      const PointCloud& tested,
                                      const std::optional<Eigen::Vector3d>& tested_viewpoint,
                                      const RigidTransform& to_observer,
-                                     const VisibilityParams& p) {
+                                     const VisibilityParams& p, TestedSightings* detail) {
   const auto t0 = std::chrono::steady_clock::now();
   VisibilityEvidence e;
   if (!observer.hasSensorOrigins() && !viewpoint) {
@@ -111,6 +127,7 @@ VisibilityEvidence freeSpaceEvidence(const PointCloud& observer,
                         sightings[k] = images.classify(to_observer.apply(tested.world(idx[k])));
                     });
   tallySightings(sightings, e);
+  if (detail) *detail = TestedSightings{idx, std::move(sightings), false};
   e.seconds = secondsSince(t0);
   return e;
 }
@@ -121,6 +138,11 @@ void summarizeVisibility(VisibilitySummary& s, const VisibilityParams& p) {
     if (e->conclusive(p))
       s.contradiction_ratio = std::max(s.contradiction_ratio, e->contradiction_ratio);
   s.expected_overlap = s.source_in_target.available ? s.source_in_target.expected_overlap : -1.0;
+  s.unexplained_structure = -1.0;
+  for (const VisibilityEvidence* e : {&s.source_in_target, &s.target_in_source})
+    if (e->conclusive(p) && e->structure.conclusive(p))
+      s.unexplained_structure =
+          std::max(s.unexplained_structure, e->structure.unexplained_area_ratio);
 }
 
 }  // namespace plumb

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -43,8 +44,35 @@ std::string describeContradiction(const VisibilitySummary& s, const VisibilityEv
   return o.str();
 }
 
+/// The direction whose unexplained structure the verdict uses.
+const VisibilityEvidence& worstStructure(const VisibilitySummary& s, const VisibilityParams& p) {
+  const auto& a = s.source_in_target;
+  const auto& b = s.target_in_source;
+  const bool use_b = b.conclusive(p) && b.structure.conclusive(p);
+  const bool use_a = a.conclusive(p) && a.structure.conclusive(p);
+  if (!use_b) return a;
+  if (!use_a) return b;
+  return b.structure.unexplained_area_ratio > a.structure.unexplained_area_ratio ? b : a;
+}
+
+/// "N% of the ... large planes ... (u of j m^2 in k of n planes)".
+std::string describeStructure(const VisibilitySummary& s, const VisibilityEvidence& e) {
+  const StructureEvidence& st = e.structure;
+  std::ostringstream o;
+  const bool source = &e == &s.source_in_target;
+  o << percent(st.unexplained_area_ratio) << " of the " << (source ? "source" : "target")
+    << "'s large planes (walls, floors, ceilings) that the "
+    << (s.model_target ? "model" : source ? "target's scanners" : "source's scanners")
+    << " could judge are unexplained: "
+    << (s.model_target ? "crossed by the model's walls or standing where the model is empty"
+                       : "mostly in space those scanners saw through")
+    << " (" << std::lround(st.unexplained_area) << " of " << std::lround(st.judged_area)
+    << " m2, " << st.unexplained_planes << " of " << st.judged_planes << " planes)";
+  return o.str();
+}
+
 /// The sentence naming the evidence the verdict rests on.
-std::string evidenceSentence(const VisibilitySummary& s, const QualityReport& q) {
+std::string evidenceSentence(const VisibilitySummary& s, const FitFigures& fit) {
   std::ostringstream o;
   if (!s.computed) return "";
   if (!s.conclusive()) {
@@ -60,51 +88,77 @@ std::string evidenceSentence(const VisibilitySummary& s, const QualityReport& q)
   if (s.expected_overlap >= 0)
     o << "; visibility predicts " << percent(s.expected_overlap) << " of the source visible to "
       << (s.model_target ? "the model" : "the target's scanners");
-  if (q.refined) o << " (refinement matched " << percent(q.overlap_ratio) << ")";
+  if (fit.refined) o << " (refinement matched " << percent(fit.overlap) << ")";
+  if (s.unexplained_structure >= 0)
+    o << "; " << percent(s.unexplained_structure)
+      << " of the large planes it could judge are unexplained";
   o << ".";
   return o.str();
 }
 
-/// A success verdict that claimed no warnings now has one: the level drops to check visually
-/// and the closing sentence says so.
-void markCaution(QualityReport& q) {
-  const std::string clean = usableSentence();
-  const auto at = q.verdict.find(clean);
-  if (at != std::string::npos) q.verdict.replace(at, clean.size(), checkVisuallySentence(q.warnings.size()));
-  q.level = verdictLevelOf(q.success, q.warnings);
+}  // namespace
+
+FreeSpaceFinding judgeFreeSpace(const VisibilitySummary& s, const VisibilityParams& p,
+                                const FitFigures& fit) {
+  FreeSpaceFinding f;
+  if (!s.computed) return f;
+  if (s.conclusive() && s.contradiction_ratio > p.fail_ratio) {
+    f.contradicted = true;
+    f.failure = "Registration FAILED (contradicted): " +
+                describeContradiction(s, worstDirection(s, p), p) +
+                ", above the failure level of " + percent(p.fail_ratio) +
+                ": the scanners would have seen through the other data. This is another "
+                "building or a wrong placement, however well the surfaces match (point RMS " +
+                std::to_string(static_cast<int>(std::lround(1000.0 * fit.point_rms))) +
+                " mm). No transform is given; check that the two datasets show the same place.";
+    return f;
+  }
+  if (s.unexplained_structure > p.structure_fail_ratio) {
+    f.contradicted = true;
+    f.failure = "Registration FAILED (contradicted): " +
+                describeStructure(s, worstStructure(s, p)) + ", above the failure level of " +
+                percent(p.structure_fail_ratio) +
+                ": whole walls of one side have no counterpart in the other. This is another "
+                "building or a wrong placement, however well the other surfaces match (point "
+                "RMS " + std::to_string(static_cast<int>(std::lround(1000.0 * fit.point_rms))) +
+                " mm). No transform is given; check that the two datasets show the same place.";
+    return f;
+  }
+  if (s.unexplained_structure > p.structure_warn_ratio)
+    f.warnings.push_back("structure: " + describeStructure(s, worstStructure(s, p)) +
+                         ", above the warning level of " + percent(p.structure_warn_ratio) +
+                         ": changed or moved walls, or a partly wrong placement; check visually");
+  if (s.conclusive() && s.contradiction_ratio > p.warn_ratio)
+    f.warnings.push_back("free space: " + describeContradiction(s, worstDirection(s, p), p) +
+                         ", above the warning level of " + percent(p.warn_ratio) +
+                         ": moving objects, glass, changes, or a partly wrong placement; check "
+                         "visually");
+  f.evidence = evidenceSentence(s, fit);
+  return f;
+}
+
+namespace {
+
+nlohmann::json structureJson(const StructureEvidence& e) {
+  return nlohmann::json{{"available", e.available},
+                        {"missing_reason", e.missing_reason},
+                        {"large_planes", e.large_planes},
+                        {"judged_planes", e.judged_planes},
+                        {"unexplained_planes", e.unexplained_planes},
+                        {"judged_area_m2", e.judged_area},
+                        {"unexplained_area_m2", e.unexplained_area},
+                        {"unexplained_area_ratio", e.unexplained_area_ratio},
+                        {"point_ratio", e.point_ratio},
+                        {"worst_plane_fraction", e.worst_plane_fraction},
+                        {"worst_plane_area_m2", e.worst_plane_area}};
 }
 
 }  // namespace
 
-void applyVisibilityEvidence(QualityReport& q, const VisibilityParams& p) {
-  VisibilitySummary& s = q.visibility;
-  if (!q.success || !s.computed) return;
-  if (s.conclusive() && s.contradiction_ratio > p.fail_ratio) {
-    const auto& e = worstDirection(s, p);
-    q.success = false;
-    q.level = VerdictLevel::Failed;
-    q.status = "contradicted";
-    q.verdict = "Registration FAILED (contradicted): " + describeContradiction(s, e, p) +
-                ", above the failure level of " + percent(p.fail_ratio) +
-                ": the scanners would have seen through the other data. This is another "
-                "building or a wrong placement, however well the surfaces match (point RMS " +
-                std::to_string(static_cast<int>(std::lround(1000.0 * q.point_rms))) +
-                " mm). No transform is given; check that the two datasets show the same place.";
-    return;
-  }
-  if (s.conclusive() && s.contradiction_ratio > p.warn_ratio) {
-    q.warnings.push_back("free space: " + describeContradiction(s, worstDirection(s, p), p) +
-                         ", above the warning level of " + percent(p.warn_ratio) +
-                         ": moving objects, glass, changes, or a partly wrong placement; check "
-                         "visually");
-    markCaution(q);
-  }
-  q.verdict += evidenceSentence(s, q);
-}
-
 void addVisibilityJson(nlohmann::json& j, const VisibilitySummary& s) {
   auto one = [](const VisibilityEvidence& e) {
     return nlohmann::json{{"available", e.available},
+                          {"structure", structureJson(e.structure)},
                           {"missing_reason", e.missing_reason},
                           {"what", e.what},
                           {"stations", e.stations},
@@ -124,6 +178,9 @@ void addVisibilityJson(nlohmann::json& j, const VisibilitySummary& s) {
                      {"expected_overlap", s.expected_overlap >= 0
                                               ? nlohmann::json(s.expected_overlap)
                                               : nlohmann::json(nullptr)},
+                     {"unexplained_structure", s.unexplained_structure >= 0
+                                                   ? nlohmann::json(s.unexplained_structure)
+                                                   : nlohmann::json(nullptr)},
                      {"source_in_target", one(s.source_in_target)},
                      {"target_in_source", one(s.target_in_source)}};
 }
@@ -142,6 +199,11 @@ std::string visibilityToText(const VisibilitySummary& s) {
       << e->tested << " tested (" << percent(e->contradiction_ratio) << " of the visible; "
       << "expected overlap " << percent(e->expected_overlap) << ", " << e->stations
       << " stations, " << std::setprecision(3) << e->seconds << " s)\n";
+    const StructureEvidence& st = e->structure;
+    if (st.available)
+      o << "  its large planes: " << st.unexplained_planes << " of " << st.judged_planes
+        << " judged unexplained (" << std::setprecision(3) << st.unexplained_area << " of "
+        << st.judged_area << " m2, " << percent(st.unexplained_area_ratio) << ")\n";
   }
   return o.str();
 }

@@ -130,6 +130,8 @@ void QualityReportView::addVisibilityRows(const VisibilitySummary& v) {
              tr("%1 contradicting of %2 visible").arg(pct(e->contradiction_ratio)).arg(e->visible));
   }
   if (v.expected_overlap >= 0) addRow(tr("Expected overlap (visibility)"), pct(v.expected_overlap));
+  if (v.unexplained_structure >= 0)
+    addRow(tr("Unexplained structure (large planes)"), pct(v.unexplained_structure));
 }
 
 void QualityReportView::showResult(const PipelineResult& result) {

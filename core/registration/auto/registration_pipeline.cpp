@@ -279,9 +279,10 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
   if (refine && (out.global.ok() || settle)) refineCandidates(source, target, p, out, progress);
   if (out.candidates.empty()) out.candidates = unrefinedCandidates(out.global);
   out.seconds_refine = secondsSince(t0);
-  out.report = assessRegistration(out.global, out.refinement ? &*out.refinement : nullptr, p.quality,
-                                  out.candidates);
-  addVisibilityEvidence(source, target, p.visibility, out.report);
+  const RefineResult* refined = out.refinement ? &*out.refinement : nullptr;
+  const auto evidence = measureVerdictEvidence(source, target, out, p.visibility);
+  out.report = assessRegistration(out.global, refined, p.quality, out.candidates,
+                                  evidence ? &*evidence : nullptr);
   out.report.figures.push_back({"seconds features", out.seconds_features});
   out.report.figures.push_back({"seconds global", out.seconds_global});
   out.report.figures.push_back({"seconds refinement", out.seconds_refine});

@@ -82,14 +82,16 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-/// The CI subset of the wrong pairs: the unrelated pairs issue 13 was filed with, plus an
-/// indoor/indoor and a generated-model pair.
+/// The CI subset of the wrong pairs: the unrelated pairs issue 13 was filed with, plus two
+/// indoor/indoor pairs (the second one passed the free-space contradiction ratio and is
+/// refused on unexplained structure only) and a generated-model pair.
 std::vector<WrongPair> ciWrongPairs() {
   return {{"house", "duplex.ifc", "model"},
           {"l-shaped", "house", "mms"},
           {"office-floor", "house", "mms"},
           {"two-rooms", "l-shaped", "model"},
-          {"house", "office-floor", "indoor"}};
+          {"house", "office-floor", "indoor"},
+          {"l-shaped", "two-rooms", "indoor"}};
 }
 
 std::vector<std::string> allBuildings() {

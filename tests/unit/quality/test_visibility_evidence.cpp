@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include "quality/visibility_evidence.hpp"
+#include "quality/quality_report.hpp"
+#include "quality/structure_evidence.hpp"
 #include "quality/visibility_verdict.hpp"
 
 using namespace plumb;
@@ -160,15 +162,10 @@ TEST(ModelRays, WithoutSensorOriginsThereIsNoEvidence) {
 
 namespace {
 
-QualityReport successfulReport(double contradiction_ratio, bool available = true) {
-  QualityReport q;
-  q.success = true;
-  q.status = "success";
-  q.refined = true;
-  q.overlap_ratio = 0.4;
-  q.level = VerdictLevel::Usable;
-  q.verdict = "Registration succeeded. " + usableSentence();
-  auto& v = q.visibility;
+/// Free-space evidence of one direction with `contradiction_ratio` of 1000 visible points.
+VerdictEvidence freeSpace(double contradiction_ratio, bool available = true) {
+  VerdictEvidence ev;
+  auto& v = ev.visibility;
   v.computed = true;
   v.source_in_target.available = available;
   v.source_in_target.missing_reason = available ? "" : "the target has no sensor origins";
@@ -179,40 +176,60 @@ QualityReport successfulReport(double contradiction_ratio, bool available = true
   v.source_in_target.consistent = 1000 - v.source_in_target.contradicting;
   v.source_in_target.contradiction_ratio = contradiction_ratio;
   v.source_in_target.expected_overlap = 0.5;
-  summarizeVisibility(v, VisibilityParams{});
-  return q;
+  summarizeVisibility(v, ev.visibility_params);
+  return ev;
+}
+
+/// A report that passes every rule but the free-space one: a refinement holding all six
+/// directions, 40% overlap, 8 mm RMS.
+QualityReport assessWith(const VerdictEvidence& ev) {
+  GlobalRegistrationResult g;
+  g.status = RegistrationStatus::Success;
+  g.method = "planes";
+  RefineResult r;
+  r.rms = 0.008;
+  r.overlap = 0.4;
+  r.inliers = 5000;
+  r.normal_matrix = Eigen::Matrix<double, 6, 6>::Identity();
+  r.direction_resistance.fill(0.4);
+  return assessRegistration(g, &r, {}, {}, &ev);
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
 }
 
 }  // namespace
 
 TEST(VisibilityVerdict, ManyContradictionsFailFewWarnNoneSayWhatTheVerdictRestsOn) {
   const VisibilityParams p;
-  QualityReport fail = successfulReport(0.6);
-  applyVisibilityEvidence(fail, p);
+  const QualityReport fail = assessWith(freeSpace(0.6));
   EXPECT_FALSE(fail.success);
   EXPECT_EQ(fail.status, "contradicted");
   EXPECT_NE(fail.verdict.find("60.0%"), std::string::npos) << fail.verdict;
   EXPECT_NE(fail.verdict.find("another building or a wrong placement"), std::string::npos);
+  EXPECT_NE(fail.verdict.find("point RMS 8 mm"), std::string::npos) << fail.verdict;
 
-  QualityReport warn = successfulReport(0.5 * (p.warn_ratio + p.fail_ratio));
-  applyVisibilityEvidence(warn, p);
+  const QualityReport warn = assessWith(freeSpace(0.5 * (p.warn_ratio + p.fail_ratio)));
   EXPECT_TRUE(warn.success);
   ASSERT_EQ(warn.warnings.size(), 1u);
   EXPECT_NE(warn.warnings[0].find("check visually"), std::string::npos);
   EXPECT_EQ(warn.verdict.find("the result can be used"), std::string::npos) << warn.verdict;
-  EXPECT_NE(warn.verdict.find("CHECK VISUALLY: 1 warning(s)"), std::string::npos) << warn.verdict;
+  EXPECT_EQ(occurrences(warn.verdict, "CHECK VISUALLY: 1 warning(s)"), 1u) << warn.verdict;
   EXPECT_EQ(warn.level, VerdictLevel::CheckVisually);
   EXPECT_EQ(fail.level, VerdictLevel::Failed);
 
-  QualityReport good = successfulReport(0.01);
-  applyVisibilityEvidence(good, p);
+  const QualityReport good = assessWith(freeSpace(0.01));
   EXPECT_TRUE(good.success);
   EXPECT_TRUE(good.warnings.empty());
+  EXPECT_EQ(occurrences(good.verdict, "the result can be used"), 1u) << good.verdict;
   EXPECT_NE(good.verdict.find("Free space agrees"), std::string::npos) << good.verdict;
+  EXPECT_NE(good.verdict.find("(refinement matched 40.0%)"), std::string::npos) << good.verdict;
   EXPECT_EQ(good.level, VerdictLevel::Usable);
 
-  QualityReport missing = successfulReport(0.0, /*available=*/false);
-  applyVisibilityEvidence(missing, p);
+  const QualityReport missing = assessWith(freeSpace(0.0, /*available=*/false));
   EXPECT_TRUE(missing.success);
   EXPECT_NE(missing.verdict.find("No free-space evidence (the target has no sensor origins)"),
             std::string::npos)
@@ -221,5 +238,113 @@ TEST(VisibilityVerdict, ManyContradictionsFailFewWarnNoneSayWhatTheVerdictRestsO
   const auto j = nlohmann::json::parse(qualityReportToJson(fail));
   EXPECT_DOUBLE_EQ(j["visibility"]["contradiction_ratio"].get<double>(), 0.6);
   EXPECT_EQ(j["visibility"]["source_in_target"]["visible"], 1000);
+  EXPECT_FALSE(j["visibility"]["source_in_target"]["structure"]["available"].get<bool>());
   EXPECT_TRUE(j["visibility"]["target_in_source"]["available"] == false);
+}
+
+namespace {
+
+/// A plane of `area` m^2 whose inliers are the cloud points first .. first + n - 1.
+PlanarPolygon planeOver(std::uint32_t first, std::uint32_t n, double area) {
+  PlanarPolygon pl;
+  pl.area = area;
+  for (std::uint32_t i = first; i < first + n; ++i) pl.inliers.push_back(i);
+  return pl;
+}
+
+/// Every cloud point 0 .. n-1 tested, with the sighting `of(i)`.
+template <class F>
+TestedSightings sightingsOf(std::size_t n, F of, bool occluded_unexplained) {
+  TestedSightings t;
+  t.occluded_unexplained = occluded_unexplained;
+  for (std::size_t i = 0; i < n; ++i) {
+    t.index.push_back(i);
+    t.sighting.push_back(of(i));
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST(StructureEvidence, AWallInSeenThroughSpaceIsUnexplainedScatteredContradictionsAreNot) {
+  // Points 0-99: a 12 m^2 wall, all seen through; 100-399: a 36 m^2 floor, one point in ten
+  // seen through (noise); 400-449: a 2 m^2 cupboard, all seen through (below the plane area).
+  const std::vector<PlanarPolygon> planes = {planeOver(0, 100, 12.0), planeOver(100, 300, 36.0),
+                                             planeOver(400, 50, 2.0)};
+  const auto sighting = [](std::size_t i) {
+    if (i < 100 || i >= 400) return Sighting::Contradicting;
+    return i % 10 == 0 ? Sighting::Contradicting : Sighting::Consistent;
+  };
+  const VisibilityParams p;
+  const auto e = structureEvidence(planes, 450, sightingsOf(450, sighting, false), p);
+  ASSERT_TRUE(e.available);
+  EXPECT_EQ(e.large_planes, 2u);
+  EXPECT_EQ(e.judged_planes, 2u);
+  EXPECT_EQ(e.unexplained_planes, 1u);
+  EXPECT_DOUBLE_EQ(e.judged_area, 48.0);
+  EXPECT_DOUBLE_EQ(e.unexplained_area_ratio, 12.0 / 48.0);
+  EXPECT_DOUBLE_EQ(e.point_ratio, 130.0 / 400.0);
+  EXPECT_DOUBLE_EQ(e.worst_plane_fraction, 1.0);
+  EXPECT_DOUBLE_EQ(e.worst_plane_area, 12.0);
+  EXPECT_TRUE(e.conclusive(p));
+}
+
+TEST(StructureEvidence, InFrontOfTheModelIsUnexplainedBehindAnotherScanIsNoEvidence) {
+  const std::vector<PlanarPolygon> planes = {planeOver(0, 100, 12.0), planeOver(100, 100, 12.0)};
+  const auto sighting = [](std::size_t i) {
+    return i < 100 ? Sighting::Occluded : Sighting::Consistent;
+  };
+  const VisibilityParams p;
+  const auto model = structureEvidence(planes, 200, sightingsOf(200, sighting, true), p);
+  EXPECT_DOUBLE_EQ(model.unexplained_area_ratio, 0.5);
+  const auto scan = structureEvidence(planes, 200, sightingsOf(200, sighting, false), p);
+  EXPECT_EQ(scan.judged_planes, 1u);  // the occluded wall says nothing
+  EXPECT_DOUBLE_EQ(scan.unexplained_area_ratio, 0.0);
+  const auto none = structureEvidence({planeOver(0, 10, 1.0)}, 10, sightingsOf(10, sighting, true), p);
+  EXPECT_FALSE(none.available);
+  EXPECT_FALSE(none.missing_reason.empty());
+}
+
+namespace {
+
+/// Few contradicting points (1%), but `ratio` of 200 m^2 of judged large planes unexplained.
+VerdictEvidence structureOnly(double ratio) {
+  VerdictEvidence ev = freeSpace(0.01);
+  StructureEvidence& st = ev.visibility.source_in_target.structure;
+  st.available = true;
+  st.large_planes = st.judged_planes = 10;
+  st.unexplained_planes = ratio > 0 ? 1 : 0;
+  st.judged_area = 200.0;
+  st.unexplained_area = 200.0 * ratio;
+  st.unexplained_area_ratio = ratio;
+  summarizeVisibility(ev.visibility, ev.visibility_params);
+  return ev;
+}
+
+}  // namespace
+
+TEST(VisibilityVerdict, UnexplainedStructureFailsOrWarnsThoughFewPointsContradict) {
+  const VisibilityParams p;
+  const QualityReport fail = assessWith(structureOnly(2.0 * p.structure_fail_ratio));
+  EXPECT_FALSE(fail.success);
+  EXPECT_EQ(fail.status, "contradicted");
+  EXPECT_NE(fail.verdict.find("large planes"), std::string::npos) << fail.verdict;
+  EXPECT_NE(fail.verdict.find("another building or a wrong placement"), std::string::npos);
+
+  const QualityReport warn =
+      assessWith(structureOnly(0.5 * (p.structure_warn_ratio + p.structure_fail_ratio)));
+  EXPECT_TRUE(warn.success);
+  EXPECT_EQ(warn.level, VerdictLevel::CheckVisually);
+  ASSERT_EQ(warn.warnings.size(), 1u);
+  EXPECT_EQ(warn.warnings[0].rfind("structure:", 0), 0u) << warn.warnings[0];
+
+  const QualityReport good = assessWith(structureOnly(0.0));
+  EXPECT_EQ(good.level, VerdictLevel::Usable) << good.verdict;
+  EXPECT_NE(good.verdict.find("0.0% of the large planes it could judge are unexplained"),
+            std::string::npos) << good.verdict;
+  const auto j = nlohmann::json::parse(qualityReportToJson(fail));
+  EXPECT_DOUBLE_EQ(j["visibility"]["unexplained_structure"].get<double>(),
+                   2.0 * p.structure_fail_ratio);
+  EXPECT_DOUBLE_EQ(j["visibility"]["source_in_target"]["structure"]["judged_area_m2"].get<double>(),
+                   200.0);
 }
