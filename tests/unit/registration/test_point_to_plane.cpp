@@ -77,7 +77,7 @@ TEST(PointToPlane, ZeroResidualsGiveAConvergedZeroStepAndANonFiniteSystemNone) {
 
 TEST(PointToPlane, TrimmingKeepsTheSmallestResiduals) {
   std::vector<PlaneCorrespondence> c;
-  for (int k = 0; k < 20; ++k) c.push_back({{}, {}, Eigen::Vector3d::UnitZ(), (k % 2 ? -1.0 : 1.0) * k});
+  for (int k = 0; k < 20; ++k) c.push_back({Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), (k % 2 ? -1.0 : 1.0) * k});
   trimCorrespondences(c, 0.5);
   ASSERT_EQ(c.size(), 10u);
   for (const auto& k : c) EXPECT_LT(std::abs(k.r), 10.0);
@@ -96,9 +96,8 @@ TEST(PointToPlane, StageDistancesShrinkGeometricallyFromStartToFinal) {
 }
 
 TEST(PointToPlane, InlierFiguresCountOnlyResidualsWithinTheDistance) {
-  std::vector<PlaneCorrespondence> c{{{1, 0, 0}, {}, Eigen::Vector3d::UnitZ(), 0.03},
-                                     {{-1, 0, 0}, {}, Eigen::Vector3d::UnitZ(), -0.04},
-                                     {{5, 5, 5}, {}, Eigen::Vector3d::UnitZ(), 0.2}};
+  const Eigen::Vector3d o = Eigen::Vector3d::Zero(), z = Eigen::Vector3d::UnitZ();
+  std::vector<PlaneCorrespondence> c{{{1, 0, 0}, o, z, 0.03}, {{-1, 0, 0}, o, z, -0.04}, {{5, 5, 5}, o, z, 0.2}};
   const InlierFigures f = inlierFigures(c, 0.05);
   EXPECT_EQ(c.size(), 2u);
   EXPECT_EQ(f.inliers, 2u);
@@ -109,7 +108,7 @@ TEST(PointToPlane, InlierFiguresCountOnlyResidualsWithinTheDistance) {
   EXPECT_NEAR(f.normal_matrix(5, 5), 2.0, 1e-12);  // dt_z
   EXPECT_NEAR(f.normal_matrix(1, 1), 2.0, 1e-12);  // w_y: (p x n)_y = -x
   EXPECT_EQ(f.normal_matrix(3, 3), 0.0);           // dt_x free
-  std::vector<PlaneCorrespondence> none{{{0, 0, 0}, {}, Eigen::Vector3d::UnitZ(), 1.0}};
+  std::vector<PlaneCorrespondence> none{{o, o, z, 1.0}};
   const InlierFigures g = inlierFigures(none, 0.05);
   EXPECT_EQ(g.inliers, 0u);
   EXPECT_EQ(g.rms, 0.0);
