@@ -35,3 +35,13 @@ function(plumb_add_test name)
     PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT ${ARG_TIMEOUT}
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endfunction()
+
+# plumb_add_second_tree_test(NAME SCRIPT LABEL TIMEOUT)
+# A CTest test that runs SCRIPT (cmake -P) to build and run tests in a second, instrumented
+# tree (tests/second_tree.cmake), with the source, build and data folders it needs.
+function(plumb_add_second_tree_test name script label timeout)
+  add_test(NAME ${name}
+           COMMAND ${CMAKE_COMMAND} -DSRC=${PROJECT_SOURCE_DIR} -DBIN=${CMAKE_BINARY_DIR}
+                   -DDATA=${PLUMB_SHARED_DATA_DIR} -P ${script})
+  set_tests_properties(${name} PROPERTIES LABELS ${label} TIMEOUT ${timeout})
+endfunction()

@@ -14,7 +14,7 @@
 #include "quality/placement_candidate.hpp"
 #include "quality/verdict_level.hpp"
 #include "registration/common/registration_result.hpp"
-#include "registration/refine/icp_refinement.hpp"
+#include "registration/common/refine_result.hpp"
 
 namespace plumb {
 

@@ -15,6 +15,7 @@
 #include <unordered_map>
 
 #include "common/error.hpp"
+#include "registration/refine/point_to_plane.hpp"
 
 namespace plumb {
 
@@ -81,14 +82,11 @@ Cloud::Ptr toPcl(const PointCloud& c, const RigidTransform& t, const Eigen::Vect
   return out;
 }
 
-struct Correspondence {
-  Eigen::Vector3d p, q, n;
-  double r;  // signed point-to-plane residual
-};
+using refine_detail::PlaneCorrespondence;
 
-/// What the slide test reads: the used source points, the target with its kd-tree and normals
-/// (all in the refinement's local frame).
-struct SlideData {
+/// What the ICP loop and the slide test read: the used source points, the target with its
+/// kd-tree and normals (all in the refinement's local frame).
+struct LocalClouds {
   const Cloud& src;
   const Cloud& tgt;
   const pcl::KdTreeFLANN<pcl::PointXYZ>& tree;
@@ -98,7 +96,7 @@ struct SlideData {
 /// Mean capped point-to-plane cost, min(r^2, d^2) / d^2, of every source point placed by
 /// (R, t) and then moved by (dR, dt) about `centre`; a point without a neighbour within `gate`
 /// costs 1.
-double slideCost(const SlideData& s, const Eigen::Matrix3d& R, const Eigen::Vector3d& t,
+double slideCost(const LocalClouds& s, const Eigen::Matrix3d& R, const Eigen::Vector3d& t,
                  const Eigen::Vector3d& centre, const Eigen::Matrix3d& dR, const Eigen::Vector3d& dt,
                  double d, double gate) {
   const double d2 = d * d;
@@ -134,7 +132,7 @@ double slideGate(double final_distance) {
 /// RefineResult::direction_resistance: each eigen-direction of res.normal_matrix slid both ways
 /// by kSlideDistance (rotations scaled by res.length_scale); the smaller rise of slideCost over
 /// res.fit_cost (the cost unmoved), over the overlap ratio.
-std::array<double, 6> slideResistance(const SlideData& s, const Eigen::Matrix3d& R,
+std::array<double, 6> slideResistance(const LocalClouds& s, const Eigen::Matrix3d& R,
                                       const Eigen::Vector3d& t, const Eigen::Vector3d& centre,
                                       const RefineResult& res, double final_distance) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(res.normal_matrix);
@@ -248,6 +246,142 @@ RefineResult refineRegistration(const PointCloud& source, const PointCloud& targ
   return refineRegistration(source, prepared, initial, p, progress);
 }
 
+namespace {
+
+/// The refinement's pose in the local frame, applied after the initial transform.
+struct LocalPose {
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
+};
+
+/// The source points the refinement uses (local frame): voxel-thinned, then every k-th so that
+/// at most max_source_points remain.
+Cloud::Ptr usedSourcePoints(const PointCloud& source, const RigidTransform& initial,
+                            const Eigen::Vector3d& origin, const RefineParams& p) {
+  Cloud::Ptr src_all = toPcl(source, initial, origin, p.voxel_size);
+  Cloud::Ptr src(new Cloud);
+  const std::size_t stride =
+      std::max<std::size_t>(1, (src_all->size() + p.max_source_points - 1) / p.max_source_points);
+  for (std::size_t i = 0; i < src_all->size(); i += stride) src->push_back((*src_all)[i]);
+  return src;
+}
+
+/// Correspondences of every `step`-th source point placed by `pose`: its nearest target point
+/// within max_d, where the target has a normal; in source order.
+std::vector<PlaneCorrespondence> findCorrespondences(const LocalClouds& s, const LocalPose& pose,
+                                                     std::size_t step, double max_d) {
+  const std::size_t n = (s.src.size() + step - 1) / step;
+  std::vector<PlaneCorrespondence> c(n);
+  std::vector<char> valid(n, 0);
+  const float max_d2 = float(max_d * max_d);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512), [&](const auto& range) {
+    std::vector<int> idx(1);
+    std::vector<float> d2(1);
+    for (std::size_t i = range.begin(); i < range.end(); ++i) {
+      const Eigen::Vector3d x = pose.R * s.src[i * step].getVector3fMap().cast<double>() + pose.t;
+      pcl::PointXYZ q(float(x.x()), float(x.y()), float(x.z()));
+      if (s.tree.nearestKSearch(q, 1, idx, d2) < 1 || d2[0] > max_d2) continue;
+      const Eigen::Vector3d& nn = s.normals[idx[0]];
+      if (!nn.allFinite()) continue;
+      const Eigen::Vector3d y = s.tgt[idx[0]].getVector3fMap().cast<double>();
+      c[i] = {x, y, nn, nn.dot(x - y)};
+      valid[i] = 1;
+    }
+  });
+  std::vector<PlaneCorrespondence> out;
+  out.reserve(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (valid[i]) out.push_back(c[i]);
+  return out;
+}
+
+struct LoopOutcome {
+  LocalPose pose;
+  int iterations = 0;
+  bool converged = false;
+};
+
+/// One stage of trimmed point-to-plane ICP at correspondence distance max_d: up to
+/// p.iterations steps (factor, reduction, optimizer: point_to_plane.hpp) until a step is small,
+/// which sets out.converged (it stays set for the later stages).
+void pointToPlaneStage(const LocalClouds& s, const RefineParams& p, double max_d, std::size_t step,
+                       LoopOutcome& out, Progress* progress) {
+  using namespace refine_detail;
+  for (int it = 0; it < p.iterations; ++it) {
+    checkCanceled(progress);
+    auto c = findCorrespondences(s, out.pose, step, max_d);
+    trimCorrespondences(c, p.trim_fraction);
+    if (c.size() < 6) break;
+    const IcpStep d = solveIcpStep(accumulateNormalEquations(c));
+    if (!d.finite) break;
+    out.pose.R = d.dR * out.pose.R;
+    out.pose.t = d.dR * out.pose.t + d.dt;
+    ++out.iterations;
+    if (stepConverged(d)) {
+      out.converged = true;
+      break;
+    }
+  }
+}
+
+/// Coarse-to-fine point-to-plane ICP: early stages use a regular quarter of the source points,
+/// the last stage all of them. Converged when a step of some stage was small.
+LoopOutcome runPointToPlane(const LocalClouds& s, const RefineParams& p, Progress* progress) {
+  const int stages = std::max(1, p.stages);
+  LoopOutcome out;
+  for (int st = 0; st < stages; ++st) {
+    pointToPlaneStage(s, p, refine_detail::stageDistance(p.start_distance, p.final_distance, stages, st),
+                      st + 1 < stages ? 4 : 1, out, progress);
+    reportProgress(progress, 0.1 + 0.8 * (st + 1) / stages, "refine: ICP");
+  }
+  return out;
+}
+
+/// PCL GICP over the same coarse-to-fine distances.
+LoopOutcome runGicp(const Cloud::Ptr& src, const Cloud::Ptr& tgt, const RefineParams& p, Progress* progress) {
+  const int stages = std::max(1, p.stages);
+  pcl::GeneralizedIterativeClosestPoint<pcl::PointXYZ, pcl::PointXYZ> gicp;
+  gicp.setInputSource(src);
+  gicp.setInputTarget(tgt);
+  gicp.setMaximumIterations(p.iterations);
+  gicp.setTransformationEpsilon(1e-8);
+  Eigen::Matrix4f guess = Eigen::Matrix4f::Identity();
+  Cloud aligned;
+  LoopOutcome out;
+  for (int st = 0; st < stages; ++st) {
+    checkCanceled(progress);
+    gicp.setMaxCorrespondenceDistance(refine_detail::stageDistance(p.start_distance, p.final_distance, stages, st));
+    gicp.align(aligned, guess);
+    guess = gicp.getFinalTransformation();
+    out.iterations += p.iterations;
+  }
+  out.pose.R = guess.topLeftCorner<3, 3>().cast<double>();
+  out.pose.t = guess.topRightCorner<3, 1>().cast<double>();
+  out.converged = gicp.hasConverged();
+  return out;
+}
+
+/// Final figures at the final distance (untrimmed: the overlap is what it is). Inliers: a
+/// target point within max(final distance, 0.15 m) (sparse or thinned targets) and a
+/// point-to-plane residual below the final distance. Then the fit cost and the slide test.
+void measureFit(const LocalClouds& s, const LocalPose& pose, const Eigen::Vector3d& origin,
+                const RefineParams& p, RefineResult& res) {
+  auto c = findCorrespondences(s, pose, 1, std::max(p.final_distance, 0.15));
+  const refine_detail::InlierFigures f = refine_detail::inlierFigures(c, p.final_distance);
+  res.inliers = f.inliers;
+  res.rms = f.rms;
+  res.overlap = double(c.size()) / double(s.src.size());
+  res.length_scale = f.length_scale;
+  res.normal_matrix = f.normal_matrix;
+  res.centre = f.centre + origin;
+  res.fit_cost = slideCost(s, pose.R, pose.t, f.centre, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(),
+                           p.final_distance, slideGate(p.final_distance));
+  if (!c.empty() && p.slide_test)
+    res.direction_resistance = slideResistance(s, pose.R, pose.t, f.centre, res, p.final_distance);
+}
+
+}  // namespace
+
 RefineResult refineRegistration(const PointCloud& source, const RefineTarget& prepared,
                                 const RigidTransform& initial, const RefineParams& p,
                                 Progress* progress) {
@@ -256,158 +390,23 @@ RefineResult refineRegistration(const PointCloud& source, const RefineTarget& pr
     throw InputError("refinement: the target was prepared with another voxel size");
   RefineResult res;
   const Eigen::Vector3d& origin = prepared.data().origin;
-  Cloud::Ptr src_all = toPcl(source, initial, origin, p.voxel_size);
-  Cloud::Ptr src(new Cloud);
-  const std::size_t stride =
-      std::max<std::size_t>(1, (src_all->size() + p.max_source_points - 1) / p.max_source_points);
-  for (std::size_t i = 0; i < src_all->size(); i += stride) src->push_back((*src_all)[i]);
-  res.source_points = src->size();
-  res.target_points = prepared.data().cloud->size();
-  if (src->size() < 10 || prepared.data().cloud->size() < 10)
-    throw InputError("refinement: too few points");
-
+  const Cloud::Ptr src = usedSourcePoints(source, initial, origin, p);
   const Cloud::Ptr& tgt = prepared.data().cloud;
-  const pcl::KdTreeFLANN<pcl::PointXYZ>& tree = prepared.data().tree;
-  const std::vector<Eigen::Vector3d>& normals = prepared.data().normals;
+  res.source_points = src->size();
+  res.target_points = tgt->size();
+  if (src->size() < 10 || tgt->size() < 10) throw InputError("refinement: too few points");
   reportProgress(progress, 0.1, "refine: normals");
-
-  // delta: local frame transform applied after `initial`.
-  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d t = Eigen::Vector3d::Zero();
-
-  // Early stages use a regular quarter of the source points; the last stage all of them.
-  std::size_t step = 1;
-  auto correspondences = [&](double max_d) {
-    const std::size_t n = (src->size() + step - 1) / step;
-    std::vector<Correspondence> c(n);
-    std::vector<char> valid(n, 0);
-    const float max_d2 = float(max_d * max_d);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512), [&](const auto& range) {
-      std::vector<int> idx(1);
-      std::vector<float> d2(1);
-      for (std::size_t i = range.begin(); i < range.end(); ++i) {
-        const Eigen::Vector3d x = R * (*src)[i * step].getVector3fMap().cast<double>() + t;
-        pcl::PointXYZ q(float(x.x()), float(x.y()), float(x.z()));
-        if (tree.nearestKSearch(q, 1, idx, d2) < 1 || d2[0] > max_d2) continue;
-        const Eigen::Vector3d& nn = normals[idx[0]];
-        if (!nn.allFinite()) continue;
-        const Eigen::Vector3d y = (*tgt)[idx[0]].getVector3fMap().cast<double>();
-        c[i] = {x, y, nn, nn.dot(x - y)};
-        valid[i] = 1;
-      }
-    });
-    std::vector<Correspondence> out;
-    out.reserve(n);
-    for (std::size_t i = 0; i < n; ++i)
-      if (valid[i]) out.push_back(c[i]);
-    return out;
-  };
-  auto trim = [&](std::vector<Correspondence>& c) {
-    if (p.trim_fraction >= 1.0 || c.size() < 10) return;
-    const std::size_t keep = std::max<std::size_t>(6, std::size_t(p.trim_fraction * c.size()));
-    std::nth_element(c.begin(), c.begin() + (keep - 1), c.end(),
-                     [](const Correspondence& a, const Correspondence& b) {
-                       return std::abs(a.r) < std::abs(b.r);
-                     });
-    c.resize(keep);
-  };
-
-  const int stages = std::max(1, p.stages);
-  const double ratio = stages > 1 ? std::pow(p.final_distance / p.start_distance, 1.0 / (stages - 1)) : 1.0;
-  if (p.method == RefineParams::Method::Gicp) {
-    pcl::GeneralizedIterativeClosestPoint<pcl::PointXYZ, pcl::PointXYZ> gicp;
-    gicp.setInputSource(src);
-    gicp.setInputTarget(tgt);
-    gicp.setMaximumIterations(p.iterations);
-    gicp.setTransformationEpsilon(1e-8);
-    Eigen::Matrix4f guess = Eigen::Matrix4f::Identity();
-    Cloud aligned;
-    for (int s = 0; s < stages; ++s) {
-      checkCanceled(progress);
-      gicp.setMaxCorrespondenceDistance(p.start_distance * std::pow(ratio, s));
-      gicp.align(aligned, guess);
-      guess = gicp.getFinalTransformation();
-      res.iterations += p.iterations;
-    }
-    R = guess.topLeftCorner<3, 3>().cast<double>();
-    t = guess.topRightCorner<3, 1>().cast<double>();
-    res.converged = gicp.hasConverged();
-  } else {
-    bool converged = false;
-    for (int s = 0; s < stages; ++s) {
-      const double max_d = p.start_distance * std::pow(ratio, s);
-      step = s + 1 < stages ? 4 : 1;
-      for (int it = 0; it < p.iterations; ++it) {
-        checkCanceled(progress);
-        auto c = correspondences(max_d);
-        trim(c);
-        if (c.size() < 6) break;
-        // Linearised point-to-plane (Low 2004): minimise sum (n·(x + w x x + dt - y))^2.
-        Eigen::Matrix<double, 6, 6> H = Eigen::Matrix<double, 6, 6>::Zero();
-        Eigen::Matrix<double, 6, 1> g = Eigen::Matrix<double, 6, 1>::Zero();
-        for (const auto& k : c) {
-          Eigen::Matrix<double, 6, 1> j;
-          j << k.p.cross(k.n), k.n;
-          H += j * j.transpose();
-          g += j * k.r;
-        }
-        const Eigen::Matrix<double, 6, 1> d = H.ldlt().solve(-g);
-        if (!d.allFinite()) break;
-        const double angle = d.head<3>().norm();
-        const Eigen::Matrix3d dR = angle > 0
-                                       ? Eigen::AngleAxisd(angle, d.head<3>() / angle).toRotationMatrix()
-                                       : Eigen::Matrix3d::Identity();
-        R = dR * R;
-        t = dR * t + d.tail<3>();
-        ++res.iterations;
-        if (angle < 2e-5 && d.tail<3>().norm() < 2e-4) {
-          converged = true;
-          break;
-        }
-      }
-      reportProgress(progress, 0.1 + 0.8 * (s + 1) / stages, "refine: ICP");
-    }
-    res.converged = converged;
-  }
-  // Final figures at the final distance (untrimmed: the overlap is what it is).
-  // Inliers: a target point within max(final distance, 0.15 m) (sparse or thinned targets)
-  // and a point-to-plane residual below the final distance.
-  step = 1;
-  auto c = correspondences(std::max(p.final_distance, 0.15));
-  c.erase(std::remove_if(c.begin(), c.end(),
-                         [&](const Correspondence& k) { return std::abs(k.r) > p.final_distance; }),
-          c.end());
-  double sq = 0.0;
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (const auto& k : c) {
-    sq += k.r * k.r;
-    centre += k.p;
-  }
-  res.inliers = c.size();
-  res.rms = c.empty() ? 0.0 : std::sqrt(sq / c.size());
-  res.overlap = double(c.size()) / double(src->size());
-  if (!c.empty()) {
-    centre /= double(c.size());
-    double l2 = 0.0;
-    for (const auto& k : c) l2 += (k.p - centre).squaredNorm();
-    res.length_scale = std::max(1e-3, std::sqrt(l2 / c.size()));
-    for (const auto& k : c) {
-      Eigen::Matrix<double, 6, 1> j;
-      j << (k.p - centre).cross(k.n) / res.length_scale, k.n;
-      res.normal_matrix += j * j.transpose();
-    }
-  }
-  res.centre = centre + origin;
-  res.fit_cost = slideCost({*src, *tgt, tree, normals}, R, t, centre, Eigen::Matrix3d::Identity(),
-                           Eigen::Vector3d::Zero(), p.final_distance, slideGate(p.final_distance));
-  if (!c.empty() && p.slide_test)
-    res.direction_resistance =
-        slideResistance({*src, *tgt, tree, normals}, R, t, centre, res, p.final_distance);
+  const LocalClouds local{*src, *tgt, prepared.data().tree, prepared.data().normals};
+  const LoopOutcome loop = p.method == RefineParams::Method::Gicp ? runGicp(src, tgt, p, progress)
+                                                                  : runPointToPlane(local, p, progress);
+  res.iterations = loop.iterations;
+  res.converged = loop.converged;
+  measureFit(local, loop.pose, origin, p, res);
   // World transform: x -> origin + delta(initial(x) - origin).
   const RigidTransform to_local(Eigen::Matrix3d::Identity(), -origin);
   const RigidTransform from_local(Eigen::Matrix3d::Identity(), origin);
-  res.transform = from_local * RigidTransform(R, t) * to_local * initial;
-  if (c.size() < 10) {
+  res.transform = from_local * RigidTransform(loop.pose.R, loop.pose.t) * to_local * initial;
+  if (res.inliers < 10) {
     res.converged = false;
     res.message = "refinement lost its overlap: fewer than 10 correspondences within " +
                   std::to_string(p.final_distance) + " m";

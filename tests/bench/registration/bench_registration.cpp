@@ -27,7 +27,7 @@
 
 #include "acceptance_scenarios.hpp"
 #include "model/dataset.hpp"
-#include "pcl_peers.hpp"
+#include "support/pcl_peers.hpp"
 #include "registration/auto/registration_input.hpp"
 #include "simulation/building_generator.hpp"
 #include "simulation/presets.hpp"

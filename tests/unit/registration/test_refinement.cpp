@@ -1,73 +1,15 @@
+// The quality report on refined results: weak directions, degenerate scenes, failures.
 #include <gtest/gtest.h>
-
-#include <random>
 
 #include "quality/quality_report.hpp"
 #include "registration/refine/icp_refinement.hpp"
 #include "support/degenerate_scenes.hpp"
+#include "unit/registration/refine_scenes.hpp"
 #include "unit/registration/synthetic_building.hpp"
 
 using namespace plumb;
-
-namespace {
-// Boxes as triangle meshes (12 triangles each).
-TriangleMesh boxesMesh(const std::vector<test::Room>& rooms) {
-  TriangleMesh m;
-  for (const auto& r : rooms) {
-    const std::uint32_t base = m.vertices.size();
-    for (int k = 0; k < 8; ++k)
-      m.vertices.emplace_back(k & 1 ? r.max.x() : r.min.x(), k & 2 ? r.max.y() : r.min.y(),
-                              k & 4 ? r.max.z() : r.min.z());
-    const int f[12][3] = {{0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}, {0, 4, 5}, {0, 5, 1},
-                          {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 5, 7}, {1, 7, 3}};
-    for (const auto& t : f) m.triangles.push_back({base + t[0], base + t[1], base + t[2]});
-  }
-  return m;
-}
-
-PointCloud noisyScan(const TriangleMesh& mesh, double spacing, double noise, std::uint64_t seed) {
-  PointCloud c = sampleMeshSurface(mesh, spacing, seed);
-  std::mt19937_64 rng(seed + 100);
-  std::normal_distribution<float> n(0.0f, float(noise));
-  for (auto& p : c.positions) p += Eigen::Vector3f(n(rng), n(rng), n(rng));
-  c.normals.clear();
-  return c;
-}
-}  // namespace
-
-TEST(MeshSampling, DensityAndDeterminism) {
-  const TriangleMesh m = boxesMesh({{{0, 0, 0}, {2, 3, 4}}});
-  const PointCloud a = sampleMeshSurface(m, 0.1, 3), b = sampleMeshSurface(m, 0.1, 3);
-  const double area = 2 * (2 * 3 + 2 * 4 + 3 * 4);
-  EXPECT_NEAR(double(a.size()), area / 0.01, 0.05 * area / 0.01);
-  ASSERT_EQ(a.size(), b.size());
-  EXPECT_EQ(a.positions.back(), b.positions.back());
-  EXPECT_TRUE(a.hasNormals());
-}
-
-TEST(IcpRefinement, ConvergesFromAFewDegreesAndDecimetres) {
-  const TriangleMesh mesh = boxesMesh(test::asymmetricRooms());
-  const PointCloud target = noisyScan(mesh, 0.07, 0.003, 1);
-  const PointCloud source0 = noisyScan(mesh, 0.07, 0.003, 2);
-  for (const RigidTransform& truth :
-       {RigidTransform::fromYaw(0.6, {12, -7, 0.3}), RigidTransform::fromYaw(-2.5, {-3, 15, -1})}) {
-    PointCloud source = source0;
-    source.transform(truth.inverse());
-    // Start 2° and 0.2 m away from the truth.
-    const RigidTransform start = RigidTransform::fromYaw(0.035, {0.15, -0.12, 0.05}) * truth;
-    const bool first = truth.translation().x() > 0;
-    for (auto method : {RefineParams::Method::PointToPlane, RefineParams::Method::Gicp}) {
-      if (method == RefineParams::Method::Gicp && !first) continue;  // GICP is slow: once
-      RefineParams p;
-      p.method = method;
-      const auto r = refineRegistration(source, target, start, p);
-      EXPECT_LT(RigidTransform::rotationErrorDeg(r.transform, truth), 0.1);
-      EXPECT_LT(RigidTransform::translationError(r.transform, truth), 0.02);
-      EXPECT_LT(r.rms, 0.01);
-      EXPECT_GT(r.overlap, 0.8);
-    }
-  }
-}
+using test::boxesMesh;
+using test::noisyScan;
 
 TEST(QualityReport, ACorridorWithoutOpeningsIsDegenerateAlongItsAxis) {
   // A long corridor without end walls: translation along X is unconstrained.

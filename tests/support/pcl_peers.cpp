@@ -1,4 +1,4 @@
-#include "pcl_peers.hpp"
+#include "support/pcl_peers.hpp"
 #include "common/stopwatch.hpp"
 
 #include <pcl/features/fpfh_omp.h>
