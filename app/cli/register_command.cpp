@@ -10,7 +10,8 @@
 // its keys), then the flags given on the command line (--method, --no-refine, --seed), in
 // that order; `--print-params` writes the resulting set as JSON to stdout and exits, so
 // `plumb-cli register --print-params > p.json` gives a file to edit.
-// The seed is taken from that one place (PipelineParams::seed) for every random step.
+// The seed is taken from that one place (PipelineParams::seed, top-level "seed") for every
+// random step; a group "seed" in an older file must equal it (pipelineParamsFromJson).
 // Exit codes follow the report's verdict level (core/quality/verdict_level.hpp): 0 usable,
 // the results are written; 3 check visually: the results are written and the warnings are
 // repeated on stderr; 2 failed or ambiguous (too few features, no hypothesis above threshold,
@@ -49,25 +50,8 @@ struct RegisterOptions {
   std::string seed;  ///< empty: not given; range-checked in loadParams
 };
 
-/// The pipeline overrides every group's own seed with PipelineParams::seed; the groups carry
-/// the same value so the JSON shows the one seed in use.
-void syncSeeds(PipelineParams& p) {
-  p.plane_extraction.seed = p.segment_detection.seed = p.planes.seed = p.openings.seed =
-      p.segments.seed = p.refinement.seed = p.seed;
-}
-
-/// A group "seed" in a parameter file would be silently overridden by the top-level one:
-/// refuse it unless it agrees.
-void checkGroupSeeds(const nlohmann::json& j, std::uint64_t seed, const std::string& file) {
-  for (const auto& [key, group] : j.items())
-    if (group.is_object() && group.contains("seed") && group.at("seed") != seed)
-      throw FileError(file, "'" + key + "' sets its own seed; set the top-level \"seed\" "
-                      "instead (every step takes its seed from it)", {std::nullopt, std::nullopt, key});
-}
-
 PipelineParams loadParams(const RegisterOptions& o) {
   PipelineParams p;
-  syncSeeds(p);
   if (!o.params.empty()) {
     std::ifstream in(o.params);
     if (!in) throw FileError(o.params, "cannot be opened for reading");
@@ -83,12 +67,10 @@ PipelineParams loadParams(const RegisterOptions& o) {
     } catch (const std::exception& e) {  // InputError (schema) or json type_error
       throw FileError(o.params, std::string("invalid registration parameters: ") + e.what());
     }
-    checkGroupSeeds(j, p.seed, o.params);
   }
   if (!o.method.empty()) p.method = methodFromName(o.method);
   if (o.no_refine) p.refine = false;
   if (!o.seed.empty()) p.seed = static_cast<std::uint64_t>(parseOption(seedSpec(), o.seed));
-  syncSeeds(p);
   return p;
 }
 

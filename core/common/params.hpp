@@ -99,6 +99,13 @@ void validateParamValue(const ParamSpec& spec, double value);
 /// Human-readable value (choice name, true/false, or number).
 std::string formatParamValue(const ParamSpec& spec, double value);
 
+/// Checks every field of `params` against its range in `schema`; throws InputError naming the
+/// first parameter outside its range (the one range check of every algorithm's entry point).
+template <class P>
+void validateParams(const ParamSchema<P>& schema, const P& params) {
+  for (const auto& f : schema.fields()) validateParamValue(f.spec, f.get(params));
+}
+
 /// Sets a parameter by key from text. Returns false if P has no such key.
 template <class P>
 bool setParam(const ParamSchema<P>& schema, P& params, const std::string& key,

@@ -4,7 +4,9 @@
 // boxes for booleans, combo boxes for choices. Advanced parameters go in a collapsible group.
 #include <QWidget>
 
+#include <algorithm>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "common/params.hpp"
@@ -36,14 +38,30 @@ class ParamPanel : public QWidget {
   bool loading_ = false;
 };
 
-/// A panel editing `params` (which must outlive the panel) through its schema.
+/// A panel editing `params` (which must outlive the panel) through its schema, without the
+/// parameters whose keys are in `skip` (edited by another widget).
+template <class P>
+ParamPanel* makeParamPanel(const ParamSchema<P>& schema, P& params,
+                           const std::vector<std::string>& skip, QWidget* parent = nullptr) {
+  std::vector<ParamSpec> specs;
+  std::vector<std::size_t> fields;  // schema field of each editor
+  for (std::size_t i = 0; i < schema.fields().size(); ++i) {
+    const ParamSpec& spec = schema.fields()[i].spec;
+    if (std::find(skip.begin(), skip.end(), spec.key) != skip.end()) continue;
+    specs.push_back(spec);
+    fields.push_back(i);
+  }
+  return new ParamPanel(
+      std::move(specs),
+      [&schema, &params, fields](std::size_t i) { return schema.fields()[fields[i]].get(params); },
+      [&schema, &params, fields](std::size_t i, double v) { schema.fields()[fields[i]].set(params, v); },
+      parent);
+}
+
+/// A panel editing every parameter of `params` through its schema.
 template <class P>
 ParamPanel* makeParamPanel(const ParamSchema<P>& schema, P& params, QWidget* parent = nullptr) {
-  std::vector<ParamSpec> specs;
-  for (const auto& f : schema.fields()) specs.push_back(f.spec);
-  return new ParamPanel(
-      std::move(specs), [&schema, &params](std::size_t i) { return schema.fields()[i].get(params); },
-      [&schema, &params](std::size_t i, double v) { schema.fields()[i].set(params, v); }, parent);
+  return makeParamPanel(schema, params, {}, parent);
 }
 
 }  // namespace plumb::ui

@@ -43,8 +43,7 @@ const ParamSchema<SegmentDetectionParams>& SegmentDetectionParams::schema() {
           .real(&P::snap_distance, "snap-distance", "Snap distance", "m", 0, 0.5,
                 "snap to plane intersections within this distance (0: off)", true)
           .boolean(&P::intersections_only, "intersections-only", "Edges only",
-                   "keep only segments where two planar patches meet")
-          .integer(&P::seed, "seed", "Random seed", "", 0, 9007199254740992.0, "", true);
+                   "keep only segments where two planar patches meet");
   return s;
 }
 
@@ -277,7 +276,7 @@ void extendAlongPoints(const PointCloud& cloud, const std::vector<std::uint32_t>
 SegmentDetectionResult detectSegments(const PointCloud& cloud, const SegmentDetectionParams& params,
                                       Progress* progress) {
   const auto start = std::chrono::steady_clock::now();
-  for (const auto& f : SegmentDetectionParams::schema().fields()) validateParamValue(f.spec, f.get(params));
+  validateParams(SegmentDetectionParams::schema(), params);
   SegmentDetectionResult result;
   result.point_patch.assign(cloud.size(), -1);
   Progress sub = progress ? progress->sub(0.0, 0.6) : Progress();

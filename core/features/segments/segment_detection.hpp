@@ -42,8 +42,6 @@ struct SegmentDetectionParams {
   /// edges. Contour pieces along occlusion shadows, scan limits and furniture outlines on a
   /// single patch are dropped. false = Lu et al.'s full output.
   bool intersections_only = true;
-  /// (the detector is deterministic; kept for API uniformity). Default 1 = PipelineParams::seed.
-  std::uint64_t seed = 1;
   static const ParamSchema<SegmentDetectionParams>& schema();
 };
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/visibility_check.hpp"
 #include "common/stopwatch.hpp"
 
@@ -45,9 +46,7 @@ FeatureSet extractFeatures(const RegistrationSide& side, const PipelineParams& p
     return f;
   }
   if (!side.cloud) throw InputError("registration side has neither a cloud nor a model");
-  PlaneExtractionParams pe = p.plane_extraction;
-  pe.seed = p.seed;
-  auto planes = extractPlanes(*side.cloud, pe, progress);
+  auto planes = extractPlanes(*side.cloud, p.plane_extraction, p.seed, progress);
   f.planes = std::move(planes.planes);
   if (side.viewpoint) orientTowards(f.planes, *side.viewpoint);
   auto op = detectOpenings(*side.cloud, f.planes, p.opening_detection, progress);
@@ -100,24 +99,15 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
   auto run = [&](RegistrationMethod m) {
     GlobalRegistrationResult r;
     switch (m) {
-      case RegistrationMethod::Planes: {
-        auto q = p.planes;
-        q.seed = p.seed;
-        r = registerPlanes(source.planes, target.planes, q, progress);
+      case RegistrationMethod::Planes:
+        r = registerPlanes(source.planes, target.planes, p.planes, progress);
         break;
-      }
-      case RegistrationMethod::Openings: {
-        auto q = p.openings;
-        q.seed = p.seed;
-        r = registerOpenings(source, target, q, progress);
+      case RegistrationMethod::Openings:
+        r = registerOpenings(source, target, p.openings, p.seed, progress);
         break;
-      }
-      case RegistrationMethod::Segments: {
-        auto q = p.segments;
-        q.seed = p.seed;
-        r = registerSegments(source.segments, target.segments, q, progress);
+      case RegistrationMethod::Segments:
+        r = registerSegments(source.segments, target.segments, p.segments, progress);
         break;
-      }
       default: break;
     }
     note(log, methodName(m) + ": " + toString(r.status) + " - " + r.message);
@@ -197,7 +187,6 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
   const PointCloud* sc = source.cloud;
   if (!sc || !tc) return;
   auto rp = p.refinement;
-  rp.seed = p.seed;
   limitToWallThickness(out.global, rp, out.log);
   GlobalRegistrationResult& g = out.global;
   const RefineTarget prepared(*tc, rp);  // once for every candidate
@@ -245,6 +234,7 @@ std::vector<PlacementCandidate> unrefinedCandidates(const GlobalRegistrationResu
 
 PipelineResult registerData(const RegistrationSide& source_in, const RegistrationSide& target_in,
                             const PipelineParams& p, Progress* progress) {
+  validatePipelineParams(p);
   PipelineResult out;
   // A model must be the target (the BIM is the reference): swap and invert at the end.
   const bool swap = source_in.isModel() && !target_in.isModel();

@@ -14,7 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "common/params.hpp"
 #include "common/progress.hpp"
+#include "common/seed.hpp"
 #include "features/facades/opening_detection.hpp"
 #include "features/mesh_edges/mesh_edges.hpp"
 #include "features/planes/plane_extraction.hpp"
@@ -65,12 +67,18 @@ struct PipelineParams {
   QualityParams quality;
   /// Free-space (visibility) check of the final transform (registration/auto/visibility_check).
   VisibilityParams visibility;
-  /// Spacing of the points sampled on a model for refinement, metres, [0.005, 1].
+  /// Spacing of the points sampled on a model for refinement, metres, [0.005, 1] (advanced).
   double model_sample_spacing = 0.05;
   /// The runner-up refined and compared with the answer (candidate_refinement.hpp); settles
   /// an Ambiguous global step on refined points (beyond the papers).
   CandidateParams candidates;
-  std::uint64_t seed = 1;
+  /// The one random seed of every step that draws at random (plane detection samples,
+  /// openings hypotheses beyond max-hypotheses, model surface samples), [0, 9e15]. Results are
+  /// deterministic for a seed. No parameter group has a seed of its own.
+  std::uint64_t seed = kDefaultSeed;
+  /// The top-level parameters (method, refine, seed, model-sample-spacing); the groups are
+  /// listed by forEachParamGroup (pipeline_param_groups.hpp).
+  static const ParamSchema<PipelineParams>& schema();
 };
 
 struct PipelineResult {

@@ -28,8 +28,7 @@ const ParamSchema<OpeningRegistrationParams>& OpeningRegistrationParams::schema(
           .real(&P::min_relative_gap, "min-gap", "Min score gap", "", 0.0, 1.0,
                 "Runner-up must score this fraction below the best, else ambiguous")
           .real(&P::vertical_tolerance_deg, "facade-vertical", "Façade verticality", "deg", 0.0,
-                45.0, "Max tilt of a façade plane", true)
-          .integer(&P::seed, "seed", "Seed", "", 0, 9.0e15, "Random seed", true);
+                45.0, "Max tilt of a façade plane", true);
   return s;
 }
 
@@ -108,7 +107,7 @@ double median(std::vector<double> v) {
 
 GlobalRegistrationResult registerOpenings(const FeatureSet& source, const FeatureSet& target,
                                           const OpeningRegistrationParams& p,
-                                          Progress* progress) {
+                                          std::uint64_t seed, Progress* progress) {
   GlobalRegistrationResult r;
   r.method = "openings";
   r.score_unit = "matched opening edges";
@@ -136,7 +135,7 @@ GlobalRegistrationResult registerOpenings(const FeatureSet& source, const Featur
     for (std::size_t b = 0; b < tgt.size(); ++b)
       for (int k : {0, 1}) bases.push_back({int(a), int(b), k});
   if (int(bases.size()) > p.max_hypotheses) {
-    std::mt19937_64 rng(p.seed);
+    std::mt19937_64 rng(seed);
     std::shuffle(bases.begin(), bases.end(), rng);
     bases.resize(p.max_hypotheses);
   }

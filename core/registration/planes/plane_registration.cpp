@@ -34,8 +34,7 @@ const ParamSchema<PlaneRegistrationParams>& PlaneRegistrationParams::schema() {
           .integer(&P::rescored_hypotheses, "rescored", "Rescored hypotheses", "", 1, 100000,
                    "Best pre-scored hypotheses scored with full overlap accuracy", true)
           .integer(&P::polish_iterations, "polish-iterations", "Polish iterations", "", 0, 50,
-                   "Least-squares polish on matched polygon pairs", true)
-          .integer(&P::seed, "seed", "Seed", "", 0, 9.0e15, "Random seed", true);
+                   "Least-squares polish on matched polygon pairs", true);
   return s;
 }
 

@@ -48,7 +48,6 @@ struct PlaneRegistrationParams {
   int rescored_hypotheses = 48;
   /// Least-squares polish iterations on matched pairs, [0, 50].
   int polish_iterations = 3;
-  std::uint64_t seed = 1;  ///< deterministic method (no random draws); interface uniformity
   static const ParamSchema<PlaneRegistrationParams>& schema();
 };
 

@@ -27,8 +27,7 @@ const ParamSchema<SegmentRegistrationParams>& SegmentRegistrationParams::schema(
           .real(&P::min_relative_gap, "min-gap", "Min score gap", "", 0.0, 1.0,
                 "Runner-up must score this fraction below the best, else ambiguous")
           .integer(&P::refine_iterations, "polish-iterations", "Polish iterations", "", 0, 100,
-                   "Joint rotation/translation polish on matched segments", true)
-          .integer(&P::seed, "seed", "Seed", "", 0, 9.0e15, "Random seed", true);
+                   "Joint rotation/translation polish on matched segments", true);
   return s;
 }
 

@@ -42,9 +42,6 @@ struct SegmentRegistrationParams {
   double min_relative_gap = 0.05;
   /// Gauss-Newton iterations of the final joint (R, t) polish on matched segments, [0, 100].
   int refine_iterations = 10;
-  /// Seed. The method is deterministic (voting, no random draws); kept for interface
-  /// uniformity with the other stages.
-  std::uint64_t seed = 1;
   static const ParamSchema<SegmentRegistrationParams>& schema();
 };
 

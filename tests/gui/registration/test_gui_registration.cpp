@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTest>
 #include <QUndoStack>
 
@@ -241,6 +242,12 @@ class GuiRegistrationTest : public QObject {
     const RigidTransform T = demo().truth;
     setLayerTransform(app.scene, *indoor_, T);
     app.registration->params().refinement.final_distance = 0.03;
+    // The one seed of the pipeline is in the dock's "Registration" parameters (issue 18).
+    auto* seed = app.registration->findChild<QSpinBox*>("seed");
+    QVERIFY(seed);
+    QCOMPARE(app.registration->findChildren<QSpinBox*>("seed").size(), 1);  // no group seeds
+    seed->setValue(7);
+    QCOMPARE(app.registration->params().seed, std::uint64_t{7});
     const QString project = artefact("demo.plumb.json");
     saveProject(app, project);
 
@@ -261,6 +268,7 @@ class GuiRegistrationTest : public QObject {
 
     // Reopen: the scene is replaced by the project's layers with their transforms.
     app.registration->params().refinement.final_distance = 0.05;
+    seed->setValue(2);
     bool done = false, ok = false;
     std::vector<Layer*> loaded;
     openProject(app, project, [&](bool all, const std::vector<Layer*>& layers) {
@@ -279,6 +287,8 @@ class GuiRegistrationTest : public QObject {
     QCOMPARE(app.registration->sourceLayer(), indoor);
     QCOMPARE(app.registration->targetLayer(), findLayerBySource(app.scene, q(demo().model)));
     QCOMPARE(app.registration->params().refinement.final_distance, 0.03);
+    QCOMPARE(app.registration->params().seed, std::uint64_t{7});
+    QCOMPARE(seed->value(), 7);
   }
 
   void projectErrorsNameTheFile() {
