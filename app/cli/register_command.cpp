@@ -1,14 +1,14 @@
 // plumb-cli register SOURCE TARGET [--method auto|planes|openings|segments|icp] [--no-refine]
 //   [-o REGISTERED.{e57,ply,las}] [--transform T.json] [--report REPORT.json] [--seed N]
-//   [--params PARAMS.json] [--print-params] [--source-trajectory FILE] [--target-trajectory FILE]
+//   [--params PARAMS.json] [--set GROUP.KEY=VALUE]... [--print-params] [--source-trajectory FILE] [--target-trajectory FILE]
 // Registers SOURCE onto TARGET (scans or models; a PLY/OBJ with faces or an IFC is a model).
 // The inputs are built with makeRegistrationInput, exactly like the desktop app.
 // --source-trajectory / --target-trajectory: a mobile scan without per-point sensor origins
 // (LAS, E57 from other tools) gets them from the vehicle trajectory ("t x y z" per line, in
 // that dataset's frame) interpolated at each point's timestamp; the openings method needs them.
 // Parameters: the defaults, then --params (the JSON of pipelineParamsToJson, any subset of
-// its keys), then the flags given on the command line (--method, --no-refine, --seed), in
-// that order; `--print-params` writes the resulting set as JSON to stdout and exits, so
+// its keys), then each --set GROUP.KEY=VALUE (KEY=VALUE for the top level), then the flags
+// given on the command line (--method, --no-refine, --seed), in that order; `--print-params` writes the resulting set as JSON to stdout and exits, so
 // `plumb-cli register --print-params > p.json` gives a file to edit.
 // The seed is taken from that one place (PipelineParams::seed, top-level "seed") for every
 // random step; a group "seed" in an older file must equal it (pipelineParamsFromJson).
@@ -48,6 +48,7 @@ struct RegisterOptions {
   bool no_refine = false;
   bool print_params = false;
   std::string seed;  ///< empty: not given; range-checked in loadParams
+  std::vector<std::string> settings;  ///< --set GROUP.KEY=VALUE or KEY=VALUE
 };
 
 PipelineParams loadParams(const RegisterOptions& o) {
@@ -66,6 +67,15 @@ PipelineParams loadParams(const RegisterOptions& o) {
       pipelineParamsFromJson(j, p);
     } catch (const std::exception& e) {  // InputError (schema) or json type_error
       throw FileError(o.params, std::string("invalid registration parameters: ") + e.what());
+    }
+  }
+  for (const auto& s : o.settings) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos) throw InputError("--set expects GROUP.KEY=VALUE, got '" + s + "'");
+    try {
+      setPipelineParam(p, s.substr(0, eq), s.substr(eq + 1));
+    } catch (const InputError& e) {
+      throw InputError(std::string("--set ") + s + ": " + e.what());
     }
   }
   if (!o.method.empty()) p.method = methodFromName(o.method);
@@ -195,8 +205,11 @@ void addRegisterCommand(CLI::App& app, Action& action) {
                   "Random seed of every step, 0 .. 9e15 (default 1; results are deterministic for a seed)");
   cmd->add_option("--params", opts->params,
                   "Registration parameters (JSON as written by --print-params; any subset of "
-                  "its keys); --method, --no-refine and --seed override it")
+                  "its keys); --set, --method, --no-refine and --seed override it")
       ->check(CLI::ExistingFile);
+  cmd->add_option("--set", opts->settings,
+                  "One parameter, GROUP.KEY=VALUE (planes.max-tilt=5) or KEY=VALUE for the top "
+                  "level (agreement-rotation=1); keys as in --print-params; repeatable");
   cmd->add_option("--source-trajectory", opts->source_trajectory,
                   "Sensor trajectory of a mobile SOURCE scan without sensor origins (t x y z per line)")
       ->check(CLI::ExistingFile);

@@ -45,7 +45,10 @@ const ParamSchema<PlaneExtractionParams>& PlaneExtractionParams::schema() {
           .integer(&P::normal_neighbours, "normal-neighbours", "Normal neighbours", "", 3, 100, "", true)
           .integer(&P::grid_window, "grid-window", "Grid window", "cells", 1, 100,
                    "sensor topology: window of the 2nd and 3rd samples", true)
-          .boolean(&P::keep_inlier_indices, "keep-inliers", "Keep inlier indices", "", true);
+          .boolean(&P::keep_inlier_indices, "keep-inliers", "Keep inlier indices", "", true)
+          .real(&P::msac_local_cell, "local-cell", "MSAC local cell", "m", 0.05, 10,
+                "half the MSAC hypotheses draw their 2nd and 3rd points in the grid cell of "
+                "this size holding the 1st", true);
   return s;
 }
 

@@ -66,6 +66,9 @@ struct PlaneExtractionParams {
   /// Sensor topology: grid half-window for the 2nd/3rd samples, cells, [1, 100].
   int grid_window = 4;
   bool keep_inlier_indices = true;  ///< fill PlanarPolygon::inliers
+  /// MSAC: every other hypothesis draws its 2nd and 3rd points in the grid cell of this size
+  /// holding its 1st, metres, [0.05, 10] (local samples find small planes in large scenes).
+  double msac_local_cell = 0.6;
   static const ParamSchema<PlaneExtractionParams>& schema();
 };
 

@@ -43,7 +43,15 @@ const ParamSchema<SegmentDetectionParams>& SegmentDetectionParams::schema() {
           .real(&P::snap_distance, "snap-distance", "Snap distance", "m", 0, 0.5,
                 "snap to plane intersections within this distance (0: off)", true)
           .boolean(&P::intersections_only, "intersections-only", "Edges only",
-                   "keep only segments where two planar patches meet");
+                   "keep only segments where two planar patches meet")
+          .real(&P::line_angle_deg, "line-angle", "Line angle", "deg", 1, 60,
+                "boundary pixels of one line differ in direction by less than this", true)
+          .real(&P::min_linearity, "min-linearity", "Min linearity", "", 0, 1,
+                "lines grow from boundary pixels at least this linear", true)
+          .real(&P::snap_min_angle_deg, "snap-angle", "Snap angle", "deg", 1, 89,
+                "snap only onto patches meeting at more than this angle", true)
+          .real(&P::snap_near_distance, "snap-near", "Snap extent distance", "m", 0.001, 0.5,
+                "points within max(this, 0.4 voxel) of a snapped line bound its extent", true);
   return s;
 }
 
@@ -144,12 +152,12 @@ std::vector<Line2> patchLines(const PointCloud& cloud, const Patch& patch, const
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return lin[a] > lin[b]; });
   std::vector<char> used(nb, 0);
-  const double cos_dir = std::cos(20.0 * M_PI / 180.0);
+  const double cos_dir = std::cos(params.line_angle_deg * M_PI / 180.0);
   const double tol_px = params.split_tolerance_px;
   const int min_pixels = std::max(5, int(params.min_length / px * 0.5));
   std::vector<Line2> lines;
   for (int seed : order) {
-    if (used[seed] || lin[seed] < 0.9) continue;
+    if (used[seed] || lin[seed] < params.min_linearity) continue;
     std::vector<int> region{seed};
     used[seed] = 1;
     Eigen::Vector2d p0 = bpix[seed].cast<double>(), d = dir[seed];
@@ -311,9 +319,9 @@ SegmentDetectionResult detectSegments(const PointCloud& cloud, const SegmentDete
     bool snapped = false;
   };
   std::vector<Cand> cands;
-  const double cos20 = std::cos(20.0 * M_PI / 180.0);
+  const double cos20 = std::cos(params.snap_min_angle_deg * M_PI / 180.0);
   // "Next to the line": 3 cm, or more on coarse voxel grids (sparse scans).
-  const double near = std::max(0.03, 0.4 * params.voxel_size);
+  const double near = std::max(params.snap_near_distance, 0.4 * params.voxel_size);
   for (std::size_t k = 0; k < kept.size(); ++k) {
     const auto& A = frames[k];
     for (const auto& l : lines[k]) {

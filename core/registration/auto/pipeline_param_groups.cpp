@@ -23,7 +23,14 @@ const ParamSchema<PipelineParams>& PipelineParams::schema() {
                    "Seed of every random step (plane detection, openings hypotheses, model "
                    "samples); the same seed gives the same result")
           .real(&P::model_sample_spacing, "model-sample-spacing", "Model sample spacing", "m",
-                0.005, 1.0, "Spacing of the points sampled on a model for refinement", true);
+                0.005, 1.0, "Spacing of the points sampled on a model for refinement", true)
+          .real(&P::agreement_rotation_deg, "agreement-rotation", "Planes/openings agreement",
+                "deg", 0.01, 45.0,
+                "auto: planes and openings agree within this rotation (and translation), "
+                "else the answer is ambiguous", true)
+          .real(&P::agreement_translation, "agreement-translation",
+                "Planes/openings agreement", "m", 0.001, 10.0,
+                "auto: planes and openings agree within this translation (and rotation)", true);
   return s;
 }
 
@@ -96,6 +103,26 @@ void pipelineParamsFromJson(const nlohmann::json& j, PipelineParams& p) {
     if (j.contains(key))
       inGroup(key, [&] { paramsFromJson(schema, withoutGroupSeed(j.at(key), key, p.seed), group); });
   });
+}
+
+void setPipelineParam(PipelineParams& p, const std::string& path, const std::string& text) {
+  const auto dot = path.find('.');
+  if (dot == std::string::npos) {
+    if (!setParam(PipelineParams::schema(), p, path, text))
+      throw InputError("unknown registration parameter '" + path + "' (a group's parameter is GROUP.KEY)");
+    return;
+  }
+  const std::string group_key = path.substr(0, dot), key = path.substr(dot + 1);
+  bool group_found = false;
+  forEachParamGroup(p, [&](const char* g, const char*, const auto& schema, auto& group) {
+    if (group_key != g) return;
+    group_found = true;
+    inGroup(g, [&] {
+      if (!setParam(schema, group, key, text))
+        throw InputError("unknown parameter '" + key + "' for '" + schema.name() + "'");
+    });
+  });
+  if (!group_found) throw InputError("unknown registration parameter group '" + group_key + "'");
 }
 
 void validatePipelineParams(const PipelineParams& p) {

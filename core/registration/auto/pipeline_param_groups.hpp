@@ -40,6 +40,10 @@ nlohmann::json pipelineParamsToJson(const PipelineParams& params);
 /// written before the groups lost their seeds) is accepted when it equals the top-level seed,
 /// else it is an error naming "<group>"."seed".
 void pipelineParamsFromJson(const nlohmann::json& j, PipelineParams& params);
+/// Sets one parameter from text: "GROUP.KEY" for a group's parameter ("planes.max-tilt"),
+/// "KEY" for a top-level one ("seed"). Throws InputError naming the group or the key when
+/// unknown, or the value when it is invalid. `plumb-cli register --set GROUP.KEY=VALUE`.
+void setPipelineParam(PipelineParams& params, const std::string& path, const std::string& text);
 /// Range check of the top-level parameters and of every group; throws InputError naming the
 /// group and the parameter. registerData calls it first.
 void validatePipelineParams(const PipelineParams& params);

@@ -69,6 +69,7 @@ namespace {
 /// decide on refined points), never a confident pick of one.
 GlobalRegistrationResult crossCheckWithOpenings(GlobalRegistrationResult planes,
                                                 GlobalRegistrationResult openings,
+                                                const PipelineParams& p,
                                                 std::vector<std::string>* log) {
   if (!openings.ok()) {
     planes.message = "auto chose planes (openings found no confident answer): " + planes.message;
@@ -76,7 +77,7 @@ GlobalRegistrationResult crossCheckWithOpenings(GlobalRegistrationResult planes,
   }
   const double rot = RigidTransform::rotationErrorDeg(planes.transform, openings.transform);
   const double tr = RigidTransform::translationError(planes.transform, openings.transform);
-  if (rot <= 2.0 && tr <= 0.3) {
+  if (rot <= p.agreement_rotation_deg && tr <= p.agreement_translation) {
     openings.message = "auto chose openings, confirmed by planes: " + openings.message;
     return openings;
   }
@@ -137,7 +138,7 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
     auto r = run(order[i]);
     if (r.ok() && order[i] == RegistrationMethod::Planes &&
         std::find(order.begin(), order.end(), RegistrationMethod::Openings) != order.end())
-      return crossCheckWithOpenings(std::move(r), run(RegistrationMethod::Openings), log);
+      return crossCheckWithOpenings(std::move(r), run(RegistrationMethod::Openings), p, log);
     if (r.ok()) {
       r.message = "auto chose " + r.method + ": " + r.message;
       return r;

@@ -72,11 +72,17 @@ struct PipelineParams {
   /// The runner-up refined and compared with the answer (candidate_refinement.hpp); settles
   /// an Ambiguous global step on refined points (beyond the papers).
   CandidateParams candidates;
+  /// auto, both sides carrying openings: planes and openings agree (-> the openings result)
+  /// when their transforms differ by at most this rotation, deg, [0.01, 45] ...
+  double agreement_rotation_deg = 2.0;
+  /// ... and this translation, m, [0.001, 10]; otherwise the answer is ambiguous.
+  double agreement_translation = 0.3;
   /// The one random seed of every step that draws at random (plane detection samples,
   /// openings hypotheses beyond max-hypotheses, model surface samples), [0, 9e15]. Results are
   /// deterministic for a seed. No parameter group has a seed of its own.
   std::uint64_t seed = kDefaultSeed;
-  /// The top-level parameters (method, refine, seed, model-sample-spacing); the groups are
+  /// The top-level parameters (method, refine, seed, model-sample-spacing, agreement-*); the
+  /// groups are
   /// listed by forEachParamGroup (pipeline_param_groups.hpp).
   static const ParamSchema<PipelineParams>& schema();
 };

@@ -28,7 +28,12 @@ const ParamSchema<OpeningRegistrationParams>& OpeningRegistrationParams::schema(
           .real(&P::min_relative_gap, "min-gap", "Min score gap", "", 0.0, 1.0,
                 "Runner-up must score this fraction below the best, else ambiguous")
           .real(&P::vertical_tolerance_deg, "facade-vertical", "Façade verticality", "deg", 0.0,
-                45.0, "Max tilt of a façade plane", true);
+                45.0, "Max tilt of a façade plane", true)
+          .nested(&P::distance, SegmentDistanceParams::schema())
+          // The plane settings of the wall-thickness score (planeSimilarity), not the others.
+          .nested(&P::planes, PlaneRegistrationParams::schema(), "",
+                  {"plane-distance", "oriented-normals", "min-polygon-area", "raster-cells",
+                   "cluster-angle"});
   return s;
 }
 

@@ -39,8 +39,10 @@
 namespace plumb {
 
 struct OpeningRegistrationParams {
-  SegmentDistanceParams distance;  ///< d = 0.10 m on opening edges
-  PlaneRegistrationParams planes;  ///< d_thr and polygon settings for the normal DOF score
+  SegmentDistanceParams distance;  ///< d = 0.10 m on opening edges (nested in the schema)
+  /// d_thr and polygon settings for the normal DOF score; the schema nests the ones used
+  /// (plane-distance, oriented-normals, min-polygon-area, raster-cells, cluster-angle).
+  PlaneRegistrationParams planes;
   /// Hypotheses enumerated when there are at most this many, else drawn at random, [10, 1e7].
   int max_hypotheses = 20000;
   /// Wall thickness search range, metres, [0, 3].

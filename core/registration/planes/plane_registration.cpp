@@ -34,7 +34,9 @@ const ParamSchema<PlaneRegistrationParams>& PlaneRegistrationParams::schema() {
           .integer(&P::rescored_hypotheses, "rescored", "Rescored hypotheses", "", 1, 100000,
                    "Best pre-scored hypotheses scored with full overlap accuracy", true)
           .integer(&P::polish_iterations, "polish-iterations", "Polish iterations", "", 0, 50,
-                   "Least-squares polish on matched polygon pairs", true);
+                   "Least-squares polish on matched polygon pairs", true)
+          .nested(&P::clustering, DirectionClusteringParams::schema())
+          .nested(&P::rotations, RotationEnumerationParams::schema());
   return s;
 }
 

@@ -24,8 +24,10 @@
 namespace plumb {
 
 struct PlaneRegistrationParams {
-  DirectionClusteringParams clustering;  ///< angle tolerance 10°, 3 clusters
-  RotationEnumerationParams rotations;   ///< Z-up, tilt <= 10°
+  /// cluster-angle 10°, max-clusters 6 (nested in the schema; cluster-angle is also the
+  /// rotation enumeration's tolerance).
+  DirectionClusteringParams clustering;
+  RotationEnumerationParams rotations;   ///< Z-up, tilt <= 10° (nested in the schema)
   /// d_thr of eq. 10, metres, [0.005, 5]: polygon pairs farther apart do not count.
   double distance_threshold = 0.10;
   /// Normals are oriented consistently in both datasets (e.g. towards the scanner, see

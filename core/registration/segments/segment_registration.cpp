@@ -27,7 +27,10 @@ const ParamSchema<SegmentRegistrationParams>& SegmentRegistrationParams::schema(
           .real(&P::min_relative_gap, "min-gap", "Min score gap", "", 0.0, 1.0,
                 "Runner-up must score this fraction below the best, else ambiguous")
           .integer(&P::refine_iterations, "polish-iterations", "Polish iterations", "", 0, 100,
-                   "Joint rotation/translation polish on matched segments", true);
+                   "Joint rotation/translation polish on matched segments", true)
+          .nested(&P::clustering, DirectionClusteringParams::schema())
+          .nested(&P::distance, SegmentDistanceParams::schema())
+          .nested(&P::rotations, RotationEnumerationParams::schema());
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QDoubleSpinBox>
 #include <QSpinBox>
 #include <QTest>
 #include <QUndoStack>
@@ -246,6 +247,9 @@ class GuiRegistrationTest : public QObject {
     auto* seed = app.registration->findChild<QSpinBox*>("seed");
     QVERIFY(seed);
     QCOMPARE(app.registration->findChildren<QSpinBox*>("seed").size(), 1);  // no group seeds
+    // Nested parameters have editors too: rotation enumeration of planes and segments.
+    QCOMPARE(app.registration->findChildren<QDoubleSpinBox*>("max-tilt").size(), 2);
+    QVERIFY(app.registration->findChild<QDoubleSpinBox*>("agreement-rotation"));
     seed->setValue(7);
     QCOMPARE(app.registration->params().seed, std::uint64_t{7});
     const QString project = artefact("demo.plumb.json");

@@ -176,6 +176,32 @@ TEST(CliRegister, ParamsFileRoundTripAndSeedInOnePlace) {
   EXPECT_NE(broken.err.find("broken.json: is not valid JSON"), std::string::npos) << broken.err;
 }
 
+// --set GROUP.KEY=VALUE reaches every schema parameter, nested ones (rotation enumeration,
+// clustering, segment distance) and the top level included, after --params and before the
+// flags; a bad key or value is a one-line error naming it (issue 18).
+TEST(CliRegister, SetReachesNestedAndTopLevelParameters) {
+  const fs::path dir = scratchDir("cli_register_set");
+  writeAll(dir / "p.json", R"({"planes": {"max-tilt": 7}})");
+  const CliResult r = plumbCli(dir, "register --print-params --params p.json --set planes.max-tilt=5 "
+                                    "--set segments.robust-distance=0.2 --set agreement-rotation=1.5 "
+                                    "--set segment-detection.snap-angle=25 --set plane-extraction.local-cell=0.8 "
+                                    "--set seed=8 --seed 9");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("planes").at("max-tilt"), 5.0);
+  EXPECT_EQ(j.at("segments").at("robust-distance"), 0.2);
+  EXPECT_EQ(j.at("agreement-rotation"), 1.5);
+  EXPECT_EQ(j.at("segment-detection").at("snap-angle"), 25.0);
+  EXPECT_EQ(j.at("plane-extraction").at("local-cell"), 0.8);
+  EXPECT_EQ(j.at("seed"), 9);  // --seed after --set
+  for (const char* bad : {"planes.no-such-key=1", "planes.max-tilt=100", "nogroup.max-tilt=1", "planes.seed=1"}) {
+    const CliResult e = plumbCli(dir, std::string("register --print-params --set ") + bad);
+    EXPECT_EQ(e.exit_code, 1) << bad;
+    EXPECT_EQ(lineCount(e.err), 1u) << e.err;
+    EXPECT_NE(e.err.find(std::string("--set ") + bad), std::string::npos) << e.err;
+  }
+}
+
 // Failures exit non-zero with an explanation and never touch an existing output.
 // Issue 12: --seed is a whole number in the schemas' seed range; the error names the option
 // and the range (on main -1 became 18446744073709551615).
