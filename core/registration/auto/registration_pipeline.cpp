@@ -96,7 +96,10 @@ GlobalRegistrationResult crossCheckWithOpenings(GlobalRegistrationResult planes,
 
 GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const FeatureSet& target,
                                              bool target_is_model, const PipelineParams& p,
-                                             std::vector<std::string>* log, Progress* progress) {
+                                             std::vector<std::string>* log, Progress* progress,
+                                             const SegmentsOnDemand& segments_on_demand) {
+  const bool have_segments = !source.segments.empty() && !target.segments.empty();
+  std::optional<SegmentSets> detected;  // from segments_on_demand, once
   auto run = [&](RegistrationMethod m) {
     GlobalRegistrationResult r;
     switch (m) {
@@ -107,7 +110,9 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
         r = registerOpenings(source, target, p.openings, p.seed, progress);
         break;
       case RegistrationMethod::Segments:
-        r = registerSegments(source.segments, target.segments, p.segments, progress);
+        if (!have_segments && segments_on_demand && !detected) detected = segments_on_demand();
+        r = registerSegments(detected ? detected->source : source.segments,
+                             detected ? detected->target : target.segments, p.segments, progress);
         break;
       default: break;
     }
@@ -123,8 +128,7 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
     order = {RegistrationMethod::Planes};
     const bool openings = !source.openings.empty() && !target.openings.empty();
     if (openings) order.push_back(RegistrationMethod::Openings);
-    if (!source.segments.empty() && !target.segments.empty())
-      order.push_back(RegistrationMethod::Segments);
+    if (have_segments || segments_on_demand) order.push_back(RegistrationMethod::Segments);
     note(log, std::string("auto: two scans -> planes") +
                   (openings ? ", cross-checked with openings (both sides carry openings), "
                               "openings alone if planes fail"
@@ -258,8 +262,24 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
     out.global.message = "icp: local refinement from the identity (no global search)";
     out.log.push_back(out.global.message);
   } else {
+    // auto on two scans: segments only if planes (and openings) fail, detected then.
+    std::optional<SegmentSets> detected;
+    const SegmentsOnDemand segments = [&]() {
+      detected = SegmentSets{out.source_features.segments, out.target_features.segments};
+      for (auto [side, set] : {std::pair{&source, &detected->source}, std::pair{&target, &detected->target}})
+        if (set->empty() && side->cloud)
+          *set = detectSegments(*side->cloud, p.segment_detection, progress).segments;
+      out.log.push_back("auto: segments detected for the last resort (" +
+                        std::to_string(detected->source.size()) + " source, " +
+                        std::to_string(detected->target.size()) + " target)");
+      return *detected;
+    };
     out.global = registerFeatureSets(out.source_features, out.target_features, target.isModel(), p,
-                                     &out.log, progress);
+                                     &out.log, progress, need_segments ? SegmentsOnDemand() : segments);
+    if (detected) {
+      out.source_features.segments = std::move(detected->source);
+      out.target_features.segments = std::move(detected->target);
+    }
   }
   out.method_used = out.global.method;
   out.seconds_global = secondsSince(t0);

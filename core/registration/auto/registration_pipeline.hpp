@@ -1,6 +1,7 @@
 #pragma once
 // The end-to-end registration: data -> features -> global method -> refinement -> quality
-// report. `auto` picks the method from what the inputs carry and says which it used:
+// report. `auto` picks the method from what the inputs carry and says which it used (the same
+// whether the caller passes features or not: segments are detected when needed):
 //   - a model (BIM/mesh) on either side: segments (scan segments vs the model's sharp edges);
 //   - two scans: planes; when both sides carry openings on façades, openings too: alone when
 //     planes fail (indoor/outdoor: the planes score is ambiguous there, the indoor floor fitting
@@ -10,6 +11,7 @@
 // After openings, the refinement starts below half the measured wall thickness so the indoor
 // wall faces cannot snap onto the façade faces.
 // Each attempt and the reason a method was skipped or failed is logged in the result.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -103,11 +105,22 @@ struct PipelineResult {
   const RigidTransform& transform() const { return report.transform; }
 };
 
-/// Global step only, on features (no refinement). `target_is_model` steers auto.
+/// The segments of both sides, for auto's last-resort segments step.
+struct SegmentSets {
+  std::vector<Segment3D> source, target;
+};
+/// Gives the segments of both sides when auto needs them and a side has none (registerData
+/// detects them on the clouds then: the pipeline decides, not the caller).
+using SegmentsOnDemand = std::function<SegmentSets()>;
+
+/// Global step only, on features (no refinement). `target_is_model` steers auto. Two scans:
+/// segments are the last resort when both sets carry segments, or when `segments_on_demand`
+/// can give them (called at most once, only when that step is reached).
 GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const FeatureSet& target,
                                              bool target_is_model, const PipelineParams& params,
                                              std::vector<std::string>* log = nullptr,
-                                             Progress* progress = nullptr);
+                                             Progress* progress = nullptr,
+                                             const SegmentsOnDemand& segments_on_demand = {});
 
 /// The whole pipeline. Never throws for "could not register": the report says so.
 PipelineResult registerData(const RegistrationSide& source, const RegistrationSide& target,
