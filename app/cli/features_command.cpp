@@ -1,4 +1,5 @@
 // plumb-cli features FILE --planes|--openings|--segments [-o features.json|.ply] [--set k=v]...
+//   [--seed N]
 // Extracts features from a point dataset (all scans merged in the dataset frame) or a model
 // (segments = exact sharp edges of the mesh; planes/openings from a Poisson-disk sampling).
 // Openings use ray tracing only when every scan has a pose or points carry sensor origins;
@@ -6,6 +7,7 @@
 #include <iostream>
 
 #include "cli/command.hpp"
+#include "cli/option_checks.hpp"
 #include "common/error.hpp"
 #include "features/export/feature_export.hpp"
 #include "features/facades/opening_detection.hpp"
@@ -22,6 +24,7 @@ struct FeatureArgs {
   std::string input, output;
   bool planes = false, openings = false, segments = false;
   std::vector<std::string> settings;  // key=value
+  std::string seed;                   ///< empty: kDefaultSeed (that of plumb-cli register)
 };
 
 /// Applies key=value to whichever schema knows the key; unknown keys are errors.
@@ -45,6 +48,8 @@ int run(const FeatureArgs& a) {
   SegmentDetectionParams sp;
   MeshEdgeParams mp;
   applySettings(a.settings, pp, op, sp, mp);
+  const std::uint64_t seed =
+      a.seed.empty() ? kDefaultSeed : static_cast<std::uint64_t>(parseOption(seedSpec(), a.seed));
   LoadedData data = readFile(a.input);
   FeatureSet fs;
   PointCloud cloud;
@@ -67,7 +72,7 @@ int run(const FeatureArgs& a) {
     }
   }
   if (a.planes || a.openings) {
-    const auto r = extractPlanes(cloud, pp);
+    const auto r = extractPlanes(cloud, pp, seed);
     fs.planes = r.planes;
     std::cout << "planes: " << r.planes.size() << " polygons (" << r.planes_detected << " planes, "
               << detectorName(r.detector_used) << ", t = " << r.distance_threshold_used << " m) in " << r.seconds
@@ -99,6 +104,8 @@ void addFeaturesCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--segments", a->segments, "3D line segments (scans) or sharp edges (models)");
   cmd->add_option("-o,--output", a->output, "Write features.json or features.ply");
   cmd->add_option("--set", a->settings, "Parameter key=value (e.g. distance-threshold=0.03), repeatable");
+  cmd->add_option("--seed", a->seed,
+                  "Random seed of the plane detection, 0 .. 9e15 (default 1, as plumb-cli register)");
   cmd->callback([&action, a] {
     if (!a->planes && !a->openings && !a->segments)
       throw CLI::ValidationError("features", "choose at least one of --planes, --openings, --segments");

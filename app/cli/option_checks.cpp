@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "registration/auto/registration_pipeline.hpp"
 
 namespace plumb::cli {
 namespace {
@@ -20,8 +21,7 @@ auto withOptionName(const ParamSpec& spec, F&& f) {
 }  // namespace
 
 const ParamSpec& seedSpec() {
-  static const ParamSpec spec{"seed", "Seed", "", "Random seed", ParamKind::Integer, 0, 9.0e15, {}, false};
-  return spec;
+  return PipelineParams::schema().find("seed")->spec;
 }
 
 ParamSpec coordinateSpec(const std::string& key) {

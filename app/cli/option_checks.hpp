@@ -12,7 +12,7 @@
 
 namespace plumb::cli {
 
-/// Random seeds: whole numbers in [0, 9e15], the range of the registration schemas' seeds.
+/// Random seeds: whole numbers in [0, 9e15], the top-level "seed" of PipelineParams::schema().
 const ParamSpec& seedSpec();
 /// A coordinate given on the command line, metres: finite, within 10,000 km of the origin.
 ParamSpec coordinateSpec(const std::string& key);

@@ -1,16 +1,18 @@
 // plumb-cli register SOURCE TARGET [--method auto|planes|openings|segments|icp] [--no-refine]
-//   [-o REGISTERED.{e57,ply,las}] [--transform T.json] [--report REPORT.{json,html}] [--seed N]
-//   [--params PARAMS.json] [--print-params] [--source-trajectory FILE] [--target-trajectory FILE]
+//   [-o REGISTERED.{e57,ply,las}] [--transform T.json] [--report REPORT.{json,html}]... [--seed N]
+//   [--params PARAMS.json] [--set GROUP.KEY=VALUE]... [--print-params] [--source-trajectory FILE]
+//   [--target-trajectory FILE]
 // Registers SOURCE onto TARGET (scans or models; a PLY/OBJ with faces or an IFC is a model).
 // The inputs are built with makeRegistrationInput, exactly like the desktop app.
 // --source-trajectory / --target-trajectory: a mobile scan without per-point sensor origins
 // (LAS, E57 from other tools) gets them from the vehicle trajectory ("t x y z" per line, in
 // that dataset's frame) interpolated at each point's timestamp; the openings method needs them.
 // Parameters: the defaults, then --params (the JSON of pipelineParamsToJson, any subset of
-// its keys), then the flags given on the command line (--method, --no-refine, --seed), in
-// that order; `--print-params` writes the resulting set as JSON to stdout and exits, so
+// its keys), then each --set GROUP.KEY=VALUE (KEY=VALUE for the top level), then the flags
+// given on the command line (--method, --no-refine, --seed), in that order; `--print-params` writes the resulting set as JSON to stdout and exits, so
 // `plumb-cli register --print-params > p.json` gives a file to edit.
-// The seed is taken from that one place (PipelineParams::seed) for every random step.
+// The seed is taken from that one place (PipelineParams::seed, top-level "seed") for every
+// random step; a group "seed" in an older file must equal it (pipelineParamsFromJson).
 // Exit codes follow the report's verdict level (core/quality/verdict_level.hpp): 0 usable,
 // the results are written; 3 check visually: the results are written and the warnings are
 // repeated on stderr; 2 failed or ambiguous (too few features, no hypothesis above threshold,
@@ -58,27 +60,11 @@ struct RegisterOptions {
   bool no_refine = false;
   bool print_params = false;
   std::string seed;  ///< empty: not given; range-checked in loadParams
+  std::vector<std::string> settings;  ///< --set GROUP.KEY=VALUE or KEY=VALUE
 };
-
-/// The pipeline overrides every group's own seed with PipelineParams::seed; the groups carry
-/// the same value so the JSON shows the one seed in use.
-void syncSeeds(PipelineParams& p) {
-  p.plane_extraction.seed = p.segment_detection.seed = p.planes.seed = p.openings.seed =
-      p.segments.seed = p.refinement.seed = p.seed;
-}
-
-/// A group "seed" in a parameter file would be silently overridden by the top-level one:
-/// refuse it unless it agrees.
-void checkGroupSeeds(const nlohmann::json& j, std::uint64_t seed, const std::string& file) {
-  for (const auto& [key, group] : j.items())
-    if (group.is_object() && group.contains("seed") && group.at("seed") != seed)
-      throw FileError(file, "'" + key + "' sets its own seed; set the top-level \"seed\" "
-                      "instead (every step takes its seed from it)", {std::nullopt, std::nullopt, key});
-}
 
 PipelineParams loadParams(const RegisterOptions& o) {
   PipelineParams p;
-  syncSeeds(p);
   if (!o.params.empty()) {
     std::ifstream in(o.params);
     if (!in) throw FileError(o.params, "cannot be opened for reading");
@@ -94,12 +80,19 @@ PipelineParams loadParams(const RegisterOptions& o) {
     } catch (const std::exception& e) {  // InputError (schema) or json type_error
       throw FileError(o.params, std::string("invalid registration parameters: ") + e.what());
     }
-    checkGroupSeeds(j, p.seed, o.params);
+  }
+  for (const auto& s : o.settings) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos) throw InputError("--set expects GROUP.KEY=VALUE, got '" + s + "'");
+    try {
+      setPipelineParam(p, s.substr(0, eq), s.substr(eq + 1));
+    } catch (const InputError& e) {
+      throw InputError(std::string("--set ") + s + ": " + e.what());
+    }
   }
   if (!o.method.empty()) p.method = methodFromName(o.method);
   if (o.no_refine) p.refine = false;
   if (!o.seed.empty()) p.seed = static_cast<std::uint64_t>(parseOption(seedSpec(), o.seed));
-  syncSeeds(p);
   return p;
 }
 
@@ -266,8 +259,11 @@ void addRegisterCommand(CLI::App& app, Action& action) {
                   "Random seed of every step, 0 .. 9e15 (default 1; results are deterministic for a seed)");
   cmd->add_option("--params", opts->params,
                   "Registration parameters (JSON as written by --print-params; any subset of "
-                  "its keys); --method, --no-refine and --seed override it")
+                  "its keys); --set, --method, --no-refine and --seed override it")
       ->check(CLI::ExistingFile);
+  cmd->add_option("--set", opts->settings,
+                  "One parameter, GROUP.KEY=VALUE (planes.max-tilt=5) or KEY=VALUE for the top "
+                  "level (agreement-rotation=1); keys as in --print-params; repeatable");
   cmd->add_option("--source-trajectory", opts->source_trajectory,
                   "Sensor trajectory of a mobile SOURCE scan without sensor origins (t x y z per line)")
       ->check(CLI::ExistingFile);

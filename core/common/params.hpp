@@ -5,7 +5,9 @@
 // (--key value), the JSON (de)serialisation and the UI's parameter panel.
 #include <nlohmann/json_fwd.hpp>
 
+#include <algorithm>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -74,6 +76,22 @@ class ParamSchema {
     return std::move(*this);
   }
 
+  /// The fields of the nested Params struct `m`, through its own schema `sub`: one flat list,
+  /// so the CLI, the JSON and the UI reach nested parameters like the others. Keys get
+  /// `key_prefix`; `only` (when not empty) lists the keys of `sub` to take.
+  template <class Sub>
+  ParamSchema&& nested(Sub P::*m, const ParamSchema<Sub>& sub, const std::string& key_prefix = "",
+                       const std::vector<std::string>& only = {}) && {
+    for (const auto& f : sub.fields()) {
+      if (!only.empty() && std::find(only.begin(), only.end(), f.spec.key) == only.end()) continue;
+      ParamSpec spec = f.spec;
+      spec.key = key_prefix + spec.key;
+      add(std::move(spec), [m, get = f.get](const P& p) { return get(p.*m); },
+          [m, set = f.set](P& p, double v) { set(p.*m, v); });
+    }
+    return std::move(*this);
+  }
+
   const std::string& name() const { return name_; }
   const std::vector<Field>& fields() const { return fields_; }
   const Field* find(const std::string& key) const {
@@ -85,6 +103,8 @@ class ParamSchema {
  private:
   void add(ParamSpec spec, std::function<double(const P&)> get,
            std::function<void(P&, double)> set) {
+    if (find(spec.key))  // a programming error: keys are the CLI flags and JSON keys
+      throw std::logic_error("parameter schema '" + name_ + "' lists '" + spec.key + "' twice");
     fields_.push_back({std::move(spec), std::move(get), std::move(set)});
   }
   std::string name_;
@@ -98,6 +118,13 @@ double parseParamValue(const ParamSpec& spec, const std::string& text);
 void validateParamValue(const ParamSpec& spec, double value);
 /// Human-readable value (choice name, true/false, or number).
 std::string formatParamValue(const ParamSpec& spec, double value);
+
+/// Checks every field of `params` against its range in `schema`; throws InputError naming the
+/// first parameter outside its range (the one range check of every algorithm's entry point).
+template <class P>
+void validateParams(const ParamSchema<P>& schema, const P& params) {
+  for (const auto& f : schema.fields()) validateParamValue(f.spec, f.get(params));
+}
 
 /// Sets a parameter by key from text. Returns false if P has no such key.
 template <class P>

@@ -8,6 +8,7 @@
 // puts the whole group back.
 #include <QWidget>
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -55,18 +56,34 @@ class ParamPanel : public QWidget {
   bool loading_ = false;
 };
 
-/// A panel editing `params` (which must outlive the panel) through its schema.
+/// A panel editing `params` (which must outlive the panel) through its schema, without the
+/// parameters whose keys are in `skip` (edited by another widget).
 template <class P>
-ParamPanel* makeParamPanel(const ParamSchema<P>& schema, P& params, QWidget* parent = nullptr) {
+ParamPanel* makeParamPanel(const ParamSchema<P>& schema, P& params,
+                           const std::vector<std::string>& skip, QWidget* parent = nullptr) {
   std::vector<ParamSpec> specs;
-  for (const auto& f : schema.fields()) specs.push_back(f.spec);
-  std::vector<double> defaults;
-  for (const auto& f : schema.fields()) defaults.push_back(f.get(P{}));
+  std::vector<std::size_t> fields;  // schema field of each editor
+  for (std::size_t i = 0; i < schema.fields().size(); ++i) {
+    const ParamSpec& spec = schema.fields()[i].spec;
+    if (std::find(skip.begin(), skip.end(), spec.key) != skip.end()) continue;
+    specs.push_back(spec);
+    fields.push_back(i);
+  }
+  std::vector<double> defaults;  // bold labels and "Reset to defaults" compare with these
+  for (const std::size_t f : fields) defaults.push_back(schema.fields()[f].get(P{}));
   auto* panel = new ParamPanel(
-      std::move(specs), [&schema, &params](std::size_t i) { return schema.fields()[i].get(params); },
-      [&schema, &params](std::size_t i, double v) { schema.fields()[i].set(params, v); }, parent);
+      std::move(specs),
+      [&schema, &params, fields](std::size_t i) { return schema.fields()[fields[i]].get(params); },
+      [&schema, &params, fields](std::size_t i, double v) { schema.fields()[fields[i]].set(params, v); },
+      parent);
   panel->setDefaults(std::move(defaults));
   return panel;
+}
+
+/// A panel editing every parameter of `params` through its schema.
+template <class P>
+ParamPanel* makeParamPanel(const ParamSchema<P>& schema, P& params, QWidget* parent = nullptr) {
+  return makeParamPanel(schema, params, {}, parent);
 }
 
 }  // namespace plumb::ui

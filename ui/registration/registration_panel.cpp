@@ -34,6 +34,7 @@
 namespace plumb::ui {
 
 namespace {
+constexpr const char* kTopLevelGroup = "registration";
 const RegistrationMethod kMethods[] = {RegistrationMethod::Auto, RegistrationMethod::Planes,
                                        RegistrationMethod::Openings, RegistrationMethod::Segments,
                                        RegistrationMethod::Icp};
@@ -94,13 +95,17 @@ RegistrationPanel::RegistrationPanel(AppContext& app, QWidget* parent)
   form->addRow(use_features_);
   layout->addLayout(form);
 
-  forEachParamGroup(params_, [this](const char* key, const char* label, const auto& schema, auto& group) {
-    auto* panel = makeParamPanel(schema, group);
+  auto addGroup = [this](const char* key, const char* label, ParamPanel* panel) {
     auto* scroll = new QScrollArea;
     scroll->setWidget(panel);
     scroll->setWidgetResizable(true);
     groups_->addItem(scroll, tr(label));
     panels_.emplace_back(key, panel);
+  };
+  // The top-level parameters (the one seed, refine, ...) first; the method has its combo box.
+  addGroup(kTopLevelGroup, "Registration", makeParamPanel(PipelineParams::schema(), params_, {"method"}));
+  forEachParamGroup(params_, [&addGroup](const char* key, const char* label, const auto& schema, auto& group) {
+    addGroup(key, label, makeParamPanel(schema, group));
   });
   groups_->setMinimumHeight(220);
   layout->addWidget(groups_, 1);

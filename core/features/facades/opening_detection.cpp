@@ -258,7 +258,7 @@ Opening makeOpening(const PlanarPolygon& f, const Rect& r, const Eigen::Vector3d
 OpeningDetectionResult detectOpenings(const PointCloud& cloud,
                                       const std::vector<PlanarPolygon>& planes,
                                       const OpeningDetectionParams& params, Progress* progress) {
-  for (const auto& f : OpeningDetectionParams::schema().fields()) validateParamValue(f.spec, f.get(params));
+  validateParams(OpeningDetectionParams::schema(), params);
   OpeningDetectionResult result;
   result.facades = selectFacades(planes, params.vertical_tolerance_deg, params.min_facade_area);
   const bool has_origins = cloud.hasSensorOrigins();

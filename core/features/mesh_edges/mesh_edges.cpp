@@ -132,7 +132,7 @@ void splitTJunctions(const std::vector<Eigen::Vector3d>& verts, EdgeMap& edge_tr
 
 MeshEdgeResult extractSharpEdges(const TriangleMesh& mesh, const MeshEdgeParams& params,
                                  Progress* progress) {
-  for (const auto& f : MeshEdgeParams::schema().fields()) validateParamValue(f.spec, f.get(params));
+  validateParams(MeshEdgeParams::schema(), params);
   MeshEdgeResult result;
   std::vector<Eigen::Vector3d> verts;
   const auto vmap = weld(mesh, params.weld_tolerance, verts);

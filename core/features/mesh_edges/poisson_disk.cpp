@@ -24,7 +24,7 @@ const ParamSchema<PoissonDiskParams>& PoissonDiskParams::schema() {
 
 PointCloud samplePoissonDisk(const TriangleMesh& mesh, const PoissonDiskParams& params,
                              Progress* progress) {
-  for (const auto& f : PoissonDiskParams::schema().fields()) validateParamValue(f.spec, f.get(params));
+  validateParams(PoissonDiskParams::schema(), params);
   PointCloud cloud;
   if (mesh.triangles.empty()) return cloud;
   const Bounds bounds = mesh.bounds();

@@ -20,11 +20,11 @@ std::vector<std::uint32_t> finiteIndices(const PointCloud& cloud);
 /// MSAC (2021 §2.2, eq. 2) on the points `active`.
 std::vector<DetectedPlane> detectMsac(const PointCloud& cloud, std::vector<std::uint32_t> active,
                                       double threshold, const PlaneExtractionParams& params,
-                                      Progress* progress);
+                                      std::uint64_t seed, Progress* progress);
 /// RANSAC on the sensor topology (2021 §2.1). Needs cloud.hasGrid().
 std::vector<DetectedPlane> detectSensorTopology(const PointCloud& cloud, double threshold,
                                                 const PlaneExtractionParams& params,
-                                                Progress* progress);
+                                                std::uint64_t seed, Progress* progress);
 /// PCL region growing + least-squares plane per region.
 std::vector<DetectedPlane> detectRegionGrowing(const PointCloud& cloud, double threshold,
                                                const PlaneExtractionParams& params,

@@ -74,12 +74,12 @@ std::vector<std::uint32_t> finiteIndices(const PointCloud& cloud) {
 
 std::vector<DetectedPlane> detectMsac(const PointCloud& cloud, std::vector<std::uint32_t> active,
                                       double threshold, const PlaneExtractionParams& params,
-                                      Progress* progress) {
+                                      std::uint64_t seed, Progress* progress) {
   std::vector<DetectedPlane> planes;
-  std::mt19937_64 rng(params.seed);
+  std::mt19937_64 rng(seed);
   const float t2 = static_cast<float>(threshold * threshold);
   const std::size_t initial = std::max<std::size_t>(1, active.size());
-  const float local_cell = 0.6f;  // metres: neighbourhood of the first sample
+  const float local_cell = static_cast<float>(params.msac_local_cell);  // metres
   int failures = 0;
   while (static_cast<int>(planes.size()) < params.max_planes &&
          active.size() >= static_cast<std::size_t>(params.min_inliers)) {

@@ -46,7 +46,9 @@ const ParamSchema<PlaneExtractionParams>& PlaneExtractionParams::schema() {
           .integer(&P::grid_window, "grid-window", "Grid window", "cells", 1, 100,
                    "sensor topology: window of the 2nd and 3rd samples", true)
           .boolean(&P::keep_inlier_indices, "keep-inliers", "Keep inlier indices", "", true)
-          .integer(&P::seed, "seed", "Random seed", "", 0, 9007199254740992.0, "", true);
+          .real(&P::msac_local_cell, "local-cell", "MSAC local cell", "m", 0.05, 10,
+                "half the MSAC hypotheses draw their 2nd and 3rd points in the grid cell of "
+                "this size holding the 1st", true);
   return s;
 }
 
@@ -63,7 +65,7 @@ std::string detectorName(PlaneDetector d) {
 namespace {
 
 void validate(const PlaneExtractionParams& p) {
-  for (const auto& f : PlaneExtractionParams::schema().fields()) validateParamValue(f.spec, f.get(p));
+  validateParams(PlaneExtractionParams::schema(), p);
   if (!(p.threshold_range_min < p.threshold_range_max))
     throw InputError("planes: threshold-min (" + std::to_string(p.threshold_range_min) +
                      " m) must be below threshold-max (" + std::to_string(p.threshold_range_max) +
@@ -72,19 +74,19 @@ void validate(const PlaneExtractionParams& p) {
 
 std::vector<planes_detail::DetectedPlane> detect(const PointCloud& cloud, PlaneDetector d,
                                                  double t, const PlaneExtractionParams& p,
-                                                 Progress* progress) {
+                                                 std::uint64_t seed, Progress* progress) {
   using namespace planes_detail;
   switch (d) {
-    case PlaneDetector::SensorTopology: return detectSensorTopology(cloud, t, p, progress);
+    case PlaneDetector::SensorTopology: return detectSensorTopology(cloud, t, p, seed, progress);
     case PlaneDetector::RegionGrowing: return detectRegionGrowing(cloud, t, p, progress);
-    default: return detectMsac(cloud, finiteIndices(cloud), t, p, progress);
+    default: return detectMsac(cloud, finiteIndices(cloud), t, p, seed, progress);
   }
 }
 
 }  // namespace
 
 PlaneExtractionResult extractPlanes(const PointCloud& cloud, const PlaneExtractionParams& params,
-                                    Progress* progress) {
+                                    std::uint64_t seed, Progress* progress) {
   const auto start = std::chrono::steady_clock::now();
   validate(params);
   PlaneExtractionResult result;
@@ -109,7 +111,7 @@ PlaneExtractionResult extractPlanes(const PointCloud& cloud, const PlaneExtracti
       const double lo = params.threshold_range_min, hi = params.threshold_range_max;
       const double sigma = lo * std::pow(hi / lo, double(k) / (m - 1));
       Progress sub = progress ? progress->sub(0.8 * k / m, 0.8 * (k + 1) / m) : Progress();
-      auto cand = detect(cloud, result.detector_used, sigma, params, progress ? &sub : nullptr);
+      auto cand = detect(cloud, result.detector_used, sigma, params, seed, progress ? &sub : nullptr);
       const double nfa = planes_detail::logNfa(double(cloud.size()), params.min_inliers,
                                                double(cand.size()), sigma, diag, volume,
                                                params.iterations);
@@ -120,7 +122,7 @@ PlaneExtractionResult extractPlanes(const PointCloud& cloud, const PlaneExtracti
       }
     }
   } else {
-    planes = detect(cloud, result.detector_used, t, params, dp);
+    planes = detect(cloud, result.detector_used, t, params, seed, dp);
   }
   result.distance_threshold_used = t;
   result.planes_detected = planes.size();

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "common/params.hpp"
+#include "common/seed.hpp"
 #include "common/progress.hpp"
 #include "model/feature_set.hpp"
 #include "model/point_cloud.hpp"
@@ -65,9 +66,9 @@ struct PlaneExtractionParams {
   /// Sensor topology: grid half-window for the 2nd/3rd samples, cells, [1, 100].
   int grid_window = 4;
   bool keep_inlier_indices = true;  ///< fill PlanarPolygon::inliers
-  /// MSAC sampling seed. Default 1 = PipelineParams::seed, so `plumb-cli features` and
-  /// `plumb-cli register` (which sets it from --seed) detect the same planes by default.
-  std::uint64_t seed = 1;
+  /// MSAC: every other hypothesis draws its 2nd and 3rd points in the grid cell of this size
+  /// holding its 1st, metres, [0.05, 10] (local samples find small planes in large scenes).
+  double msac_local_cell = 0.6;
   static const ParamSchema<PlaneExtractionParams>& schema();
 };
 
@@ -82,9 +83,13 @@ struct PlaneExtractionResult {
 };
 
 /// Detects planar polygons in the cloud (world coordinates of the result = cloud.world()).
+/// `seed` drives the random samples of MSAC and sensor-topology RANSAC (deterministic for a
+/// seed); the registration pipeline passes PipelineParams::seed, so `plumb-cli features` and
+/// `plumb-cli register` detect the same planes for the same --seed.
 /// Throws InputError for invalid params, or SensorTopology without a grid.
 PlaneExtractionResult extractPlanes(const PointCloud& cloud,
                                     const PlaneExtractionParams& params = {},
+                                    std::uint64_t seed = kDefaultSeed,
                                     Progress* progress = nullptr);
 
 std::string detectorName(PlaneDetector d);

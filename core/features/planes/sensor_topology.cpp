@@ -49,7 +49,7 @@ std::vector<std::uint32_t> grow(const PointCloud& cloud, const Grid& g,
 
 std::vector<DetectedPlane> detectSensorTopology(const PointCloud& cloud, double threshold,
                                                 const PlaneExtractionParams& params,
-                                                Progress* progress) {
+                                                std::uint64_t seed, Progress* progress) {
   if (!cloud.hasGrid())
     throw InputError("sensor-topology RANSAC needs an organized scan (row/column per point)");
   Grid g;
@@ -78,7 +78,7 @@ std::vector<DetectedPlane> detectSensorTopology(const PointCloud& cloud, double 
   const std::size_t initial = std::max<std::size_t>(1, free_count);
   std::vector<int> stamp(cloud.size(), -1);
   int stamp_id = 0;
-  std::mt19937_64 rng(params.seed);
+  std::mt19937_64 rng(seed);
   const int hypotheses = std::max(20, params.iterations / 8);
   const int w = params.grid_window;
   std::vector<DetectedPlane> planes;

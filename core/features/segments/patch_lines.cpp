@@ -115,12 +115,12 @@ std::vector<Line2> patchLines(const PointCloud& cloud, const Patch& patch, const
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return lin[a] > lin[b]; });
   std::vector<char> used(bd.pixels.size(), 0);
-  const double cos_dir = std::cos(20.0 * M_PI / 180.0);
+  const double cos_dir = std::cos(params.line_angle_deg * M_PI / 180.0);
   const double tol_px = params.split_tolerance_px;
   const int min_pixels = std::max(5, int(params.min_length / raster.px * 0.5));
   std::vector<Line2> lines;
   for (int seed : order) {
-    if (used[seed] || lin[seed] < 0.9) continue;
+    if (used[seed] || lin[seed] < params.min_linearity) continue;
     const LineRegion region = growLineRegion(raster, bd, seed, cos_dir, tol_px, used);
     if (static_cast<int>(region.pixels.size()) < min_pixels) continue;
     if (const auto line = fitRegionLine(raster, bd, region)) lines.push_back(*line);

@@ -44,7 +44,14 @@ const ParamSchema<SegmentDetectionParams>& SegmentDetectionParams::schema() {
                 "snap to plane intersections within this distance (0: off)", true)
           .boolean(&P::intersections_only, "intersections-only", "Edges only",
                    "keep only segments where two planar patches meet")
-          .integer(&P::seed, "seed", "Random seed", "", 0, 9007199254740992.0, "", true);
+          .real(&P::line_angle_deg, "line-angle", "Line angle", "deg", 1, 60,
+                "boundary pixels of one line differ in direction by less than this", true)
+          .real(&P::min_linearity, "min-linearity", "Min linearity", "", 0, 1,
+                "lines grow from boundary pixels at least this linear", true)
+          .real(&P::snap_min_angle_deg, "snap-angle", "Snap angle", "deg", 1, 89,
+                "snap only onto patches meeting at more than this angle", true)
+          .real(&P::snap_near_distance, "snap-near", "Snap extent distance", "m", 0.001, 0.5,
+                "points within max(this, 0.4 voxel) of a snapped line bound its extent", true);
   return s;
 }
 
@@ -151,9 +158,9 @@ Segment3D onIntersection(const PlanarPolygon& A, const PlanarPolygon& B, const S
 /// their intersection and extended along the points of both.
 Cand liftAndSnap(const PointCloud& cloud, const std::vector<Patch>& patches, const KeptPatches& kp, std::size_t k,
                  const Line2& l, const SegmentDetectionParams& params) {
-  const double cos20 = std::cos(20.0 * M_PI / 180.0);
+  const double cos20 = std::cos(params.snap_min_angle_deg * M_PI / 180.0);
   // "Next to the line": 3 cm, or more on coarse voxel grids (sparse scans).
-  const double near = std::max(0.03, 0.4 * params.voxel_size);
+  const double near = std::max(params.snap_near_distance, 0.4 * params.voxel_size);
   const auto& A = kp.frames[k];
   Cand c;
   c.s.a = A.to3d(l.a);
@@ -265,7 +272,7 @@ void fillResult(const PointCloud& cloud, const std::vector<Patch>& patches, cons
 SegmentDetectionResult detectSegments(const PointCloud& cloud, const SegmentDetectionParams& params,
                                       Progress* progress) {
   const auto start = std::chrono::steady_clock::now();
-  for (const auto& f : SegmentDetectionParams::schema().fields()) validateParamValue(f.spec, f.get(params));
+  validateParams(SegmentDetectionParams::schema(), params);
   SegmentDetectionResult result;
   result.point_patch.assign(cloud.size(), -1);
   Progress sub = progress ? progress->sub(0.0, 0.6) : Progress();

@@ -38,12 +38,20 @@ struct SegmentDetectionParams {
   /// Snap to the intersection of two patches when both planes are within this distance of
   /// the segment and meet at more than 20 degrees, metres, [0, 0.5] (0 = off).
   double snap_distance = 0.05;
+  /// Line-support regions: boundary pixels join when their directions differ by less than
+  /// this, degrees, [1, 60] ...
+  double line_angle_deg = 20.0;
+  /// ... and regions grow from pixels at least this linear (1 - eigenvalue ratio), [0, 1].
+  double min_linearity = 0.9;
+  /// Snap only onto patches meeting the segment's patch at more than this, degrees, [1, 89].
+  double snap_min_angle_deg = 20.0;
+  /// Points of a patch lie "next to" a snapped line within max(this, 0.4 voxel_size), metres,
+  /// [0.001, 0.5]: the snapped segment is trimmed to where both patches have such points.
+  double snap_near_distance = 0.03;
   /// Keep only segments where two patches meet (snapped onto their intersection): real
   /// edges. Contour pieces along occlusion shadows, scan limits and furniture outlines on a
   /// single patch are dropped. false = Lu et al.'s full output.
   bool intersections_only = true;
-  /// (the detector is deterministic; kept for API uniformity). Default 1 = PipelineParams::seed.
-  std::uint64_t seed = 1;
   static const ParamSchema<SegmentDetectionParams>& schema();
 };
 

@@ -27,14 +27,25 @@ void forEachParamGroup(P& p, F&& f) {
   f("visibility", "Free-space check", VisibilityParams::schema(), p.visibility);
 }
 
-/// Whether the group `key` takes part in a registration with `method` (auto: all).
+/// Whether the group `key` takes part in a registration with `method` (auto: all). The
+/// top-level parameters (key "registration") take part in every one.
 bool paramGroupUsedBy(const std::string& key, RegistrationMethod method);
 
 /// {"method": "auto", "refine": true, "seed": 1, "model-sample-spacing": 0.05,
-///  "<group key>": {<param key>: value, ...}, ...}
+///  "<group key>": {<param key>: value, ...}, ...}: the top level from PipelineParams::schema(),
+/// each group from its own schema.
 nlohmann::json pipelineParamsToJson(const PipelineParams& params);
-/// Reads the keys present (others keep their value); throws InputError for unknown keys or
-/// values out of range.
+/// Reads the keys present (others keep their value); throws InputError naming the key (and its
+/// group) for unknown keys, values of the wrong type or out of range. A group "seed" (files
+/// written before the groups lost their seeds) is accepted when it equals the top-level seed,
+/// else it is an error naming "<group>"."seed".
 void pipelineParamsFromJson(const nlohmann::json& j, PipelineParams& params);
+/// Sets one parameter from text: "GROUP.KEY" for a group's parameter ("planes.max-tilt"),
+/// "KEY" for a top-level one ("seed"). Throws InputError naming the group or the key when
+/// unknown, or the value when it is invalid. `plumb-cli register --set GROUP.KEY=VALUE`.
+void setPipelineParam(PipelineParams& params, const std::string& path, const std::string& text);
+/// Range check of the top-level parameters and of every group; throws InputError naming the
+/// group and the parameter. registerData calls it first.
+void validatePipelineParams(const PipelineParams& params);
 
 }  // namespace plumb

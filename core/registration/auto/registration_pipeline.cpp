@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/visibility_check.hpp"
 #include "common/stopwatch.hpp"
 
@@ -45,9 +46,7 @@ FeatureSet extractFeatures(const RegistrationSide& side, const PipelineParams& p
     return f;
   }
   if (!side.cloud) throw InputError("registration side has neither a cloud nor a model");
-  PlaneExtractionParams pe = p.plane_extraction;
-  pe.seed = p.seed;
-  auto planes = extractPlanes(*side.cloud, pe, progress);
+  auto planes = extractPlanes(*side.cloud, p.plane_extraction, p.seed, progress);
   f.planes = std::move(planes.planes);
   if (side.viewpoint) orientTowards(f.planes, *side.viewpoint);
   auto op = detectOpenings(*side.cloud, f.planes, p.opening_detection, progress);
@@ -70,6 +69,7 @@ namespace {
 /// decide on refined points), never a confident pick of one.
 GlobalRegistrationResult crossCheckWithOpenings(GlobalRegistrationResult planes,
                                                 GlobalRegistrationResult openings,
+                                                const PipelineParams& p,
                                                 std::vector<std::string>* log) {
   if (!openings.ok()) {
     planes.message = "auto chose planes (openings found no confident answer): " + planes.message;
@@ -77,7 +77,7 @@ GlobalRegistrationResult crossCheckWithOpenings(GlobalRegistrationResult planes,
   }
   const double rot = RigidTransform::rotationErrorDeg(planes.transform, openings.transform);
   const double tr = RigidTransform::translationError(planes.transform, openings.transform);
-  if (rot <= 2.0 && tr <= 0.3) {
+  if (rot <= p.agreement_rotation_deg && tr <= p.agreement_translation) {
     openings.message = "auto chose openings, confirmed by planes: " + openings.message;
     return openings;
   }
@@ -96,28 +96,24 @@ GlobalRegistrationResult crossCheckWithOpenings(GlobalRegistrationResult planes,
 
 GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const FeatureSet& target,
                                              bool target_is_model, const PipelineParams& p,
-                                             std::vector<std::string>* log, Progress* progress) {
+                                             std::vector<std::string>* log, Progress* progress,
+                                             const SegmentsOnDemand& segments_on_demand) {
+  const bool have_segments = !source.segments.empty() && !target.segments.empty();
+  std::optional<SegmentSets> detected;  // from segments_on_demand, once
   auto run = [&](RegistrationMethod m) {
     GlobalRegistrationResult r;
     switch (m) {
-      case RegistrationMethod::Planes: {
-        auto q = p.planes;
-        q.seed = p.seed;
-        r = registerPlanes(source.planes, target.planes, q, progress);
+      case RegistrationMethod::Planes:
+        r = registerPlanes(source.planes, target.planes, p.planes, progress);
         break;
-      }
-      case RegistrationMethod::Openings: {
-        auto q = p.openings;
-        q.seed = p.seed;
-        r = registerOpenings(source, target, q, progress);
+      case RegistrationMethod::Openings:
+        r = registerOpenings(source, target, p.openings, p.seed, progress);
         break;
-      }
-      case RegistrationMethod::Segments: {
-        auto q = p.segments;
-        q.seed = p.seed;
-        r = registerSegments(source.segments, target.segments, q, progress);
+      case RegistrationMethod::Segments:
+        if (!have_segments && segments_on_demand && !detected) detected = segments_on_demand();
+        r = registerSegments(detected ? detected->source : source.segments,
+                             detected ? detected->target : target.segments, p.segments, progress);
         break;
-      }
       default: break;
     }
     note(log, methodName(m) + ": " + toString(r.status) + " - " + r.message);
@@ -132,8 +128,7 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
     order = {RegistrationMethod::Planes};
     const bool openings = !source.openings.empty() && !target.openings.empty();
     if (openings) order.push_back(RegistrationMethod::Openings);
-    if (!source.segments.empty() && !target.segments.empty())
-      order.push_back(RegistrationMethod::Segments);
+    if (have_segments || segments_on_demand) order.push_back(RegistrationMethod::Segments);
     note(log, std::string("auto: two scans -> planes") +
                   (openings ? ", cross-checked with openings (both sides carry openings), "
                               "openings alone if planes fail"
@@ -147,7 +142,7 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
     auto r = run(order[i]);
     if (r.ok() && order[i] == RegistrationMethod::Planes &&
         std::find(order.begin(), order.end(), RegistrationMethod::Openings) != order.end())
-      return crossCheckWithOpenings(std::move(r), run(RegistrationMethod::Openings), log);
+      return crossCheckWithOpenings(std::move(r), run(RegistrationMethod::Openings), p, log);
     if (r.ok()) {
       r.message = "auto chose " + r.method + ": " + r.message;
       return r;
@@ -197,7 +192,6 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
   const PointCloud* sc = source.cloud;
   if (!sc || !tc) return;
   auto rp = p.refinement;
-  rp.seed = p.seed;
   limitToWallThickness(out.global, rp, out.log);
   GlobalRegistrationResult& g = out.global;
   const RefineTarget prepared(*tc, rp);  // once for every candidate
@@ -245,6 +239,7 @@ std::vector<PlacementCandidate> unrefinedCandidates(const GlobalRegistrationResu
 
 PipelineResult registerData(const RegistrationSide& source_in, const RegistrationSide& target_in,
                             const PipelineParams& p, Progress* progress) {
+  validatePipelineParams(p);
   PipelineResult out;
   // A model must be the target (the BIM is the reference): swap and invert at the end.
   const bool swap = source_in.isModel() && !target_in.isModel();
@@ -267,8 +262,24 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
     out.global.message = "icp: local refinement from the identity (no global search)";
     out.log.push_back(out.global.message);
   } else {
+    // auto on two scans: segments only if planes (and openings) fail, detected then.
+    std::optional<SegmentSets> detected;
+    const SegmentsOnDemand segments = [&]() {
+      detected = SegmentSets{out.source_features.segments, out.target_features.segments};
+      for (auto [side, set] : {std::pair{&source, &detected->source}, std::pair{&target, &detected->target}})
+        if (set->empty() && side->cloud)
+          *set = detectSegments(*side->cloud, p.segment_detection, progress).segments;
+      out.log.push_back("auto: segments detected for the last resort (" +
+                        std::to_string(detected->source.size()) + " source, " +
+                        std::to_string(detected->target.size()) + " target)");
+      return *detected;
+    };
     out.global = registerFeatureSets(out.source_features, out.target_features, target.isModel(), p,
-                                     &out.log, progress);
+                                     &out.log, progress, need_segments ? SegmentsOnDemand() : segments);
+    if (detected) {
+      out.source_features.segments = std::move(detected->source);
+      out.target_features.segments = std::move(detected->target);
+    }
   }
   out.method_used = out.global.method;
   out.seconds_global = secondsSince(t0);

@@ -1,6 +1,7 @@
 #pragma once
 // The end-to-end registration: data -> features -> global method -> refinement -> quality
-// report. `auto` picks the method from what the inputs carry and says which it used:
+// report. `auto` picks the method from what the inputs carry and says which it used (the same
+// whether the caller passes features or not: segments are detected when needed):
 //   - a model (BIM/mesh) on either side: segments (scan segments vs the model's sharp edges);
 //   - two scans: planes; when both sides carry openings on façades, openings too: alone when
 //     planes fail (indoor/outdoor: the planes score is ambiguous there, the indoor floor fitting
@@ -10,11 +11,14 @@
 // After openings, the refinement starts below half the measured wall thickness so the indoor
 // wall faces cannot snap onto the façade faces.
 // Each attempt and the reason a method was skipped or failed is logged in the result.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "common/params.hpp"
 #include "common/progress.hpp"
+#include "common/seed.hpp"
 #include "features/facades/opening_detection.hpp"
 #include "features/mesh_edges/mesh_edges.hpp"
 #include "features/planes/plane_extraction.hpp"
@@ -65,12 +69,24 @@ struct PipelineParams {
   QualityParams quality;
   /// Free-space (visibility) check of the final transform (registration/auto/visibility_check).
   VisibilityParams visibility;
-  /// Spacing of the points sampled on a model for refinement, metres, [0.005, 1].
+  /// Spacing of the points sampled on a model for refinement, metres, [0.005, 1] (advanced).
   double model_sample_spacing = 0.05;
   /// The runner-up refined and compared with the answer (candidate_refinement.hpp); settles
   /// an Ambiguous global step on refined points (beyond the papers).
   CandidateParams candidates;
-  std::uint64_t seed = 1;
+  /// auto, both sides carrying openings: planes and openings agree (-> the openings result)
+  /// when their transforms differ by at most this rotation, deg, [0.01, 45] ...
+  double agreement_rotation_deg = 2.0;
+  /// ... and this translation, m, [0.001, 10]; otherwise the answer is ambiguous.
+  double agreement_translation = 0.3;
+  /// The one random seed of every step that draws at random (plane detection samples,
+  /// openings hypotheses beyond max-hypotheses, model surface samples), [0, 9e15]. Results are
+  /// deterministic for a seed. No parameter group has a seed of its own.
+  std::uint64_t seed = kDefaultSeed;
+  /// The top-level parameters (method, refine, seed, model-sample-spacing, agreement-*); the
+  /// groups are
+  /// listed by forEachParamGroup (pipeline_param_groups.hpp).
+  static const ParamSchema<PipelineParams>& schema();
 };
 
 struct PipelineResult {
@@ -89,11 +105,22 @@ struct PipelineResult {
   const RigidTransform& transform() const { return report.transform; }
 };
 
-/// Global step only, on features (no refinement). `target_is_model` steers auto.
+/// The segments of both sides, for auto's last-resort segments step.
+struct SegmentSets {
+  std::vector<Segment3D> source, target;
+};
+/// Gives the segments of both sides when auto needs them and a side has none (registerData
+/// detects them on the clouds then: the pipeline decides, not the caller).
+using SegmentsOnDemand = std::function<SegmentSets()>;
+
+/// Global step only, on features (no refinement). `target_is_model` steers auto. Two scans:
+/// segments are the last resort when both sets carry segments, or when `segments_on_demand`
+/// can give them (called at most once, only when that step is reached).
 GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const FeatureSet& target,
                                              bool target_is_model, const PipelineParams& params,
                                              std::vector<std::string>* log = nullptr,
-                                             Progress* progress = nullptr);
+                                             Progress* progress = nullptr,
+                                             const SegmentsOnDemand& segments_on_demand = {});
 
 /// The whole pipeline. Never throws for "could not register": the report says so.
 PipelineResult registerData(const RegistrationSide& source, const RegistrationSide& target,

@@ -8,6 +8,21 @@
 
 namespace plumb {
 
+const ParamSchema<RotationEnumerationParams>& RotationEnumerationParams::schema() {
+  using P = RotationEnumerationParams;
+  static const auto s =
+      ParamSchema<P>("rotations")
+          .boolean(&P::up_axis_known, "up-axis-known", "Z is up in both",
+                   "Both datasets are Z-up (levelled scanners, BIM): keep Z up, within max-tilt")
+          .boolean(&P::allow_up_down_flip, "allow-up-down-flip", "Try upside down",
+                   "Also try rotations turning Z down (up axis sign unknown)", true)
+          .real(&P::max_tilt_deg, "max-tilt", "Max tilt", "deg", 0.0, 90.0,
+                "With Z up in both: max angle between the rotated and the original Z", true)
+          .real(&P::min_frame_angle_deg, "min-frame-angle", "Min frame angle", "deg", 5.0, 90.0,
+                "The two directions defining a rotation frame are at least this far apart", true);
+  return s;
+}
+
 std::optional<Eigen::Matrix3d> frameFromDirections(const Eigen::Vector3d& u,
                                                    const Eigen::Vector3d& v) {
   const Eigen::Vector3d x = u.normalized();

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "common/params.hpp"
+
 namespace plumb {
 
 /// Orthonormal frame [x y z] with x = u, y = v - (v·u)u normalised (eq. 12-13 as corrected in
@@ -22,13 +24,18 @@ std::optional<Eigen::Matrix3d> rotationFromDirectionPairs(const Eigen::Vector3d&
                                                           const Eigen::Vector3d& v_t);
 
 struct RotationEnumerationParams {
-  double angle_tolerance_deg = 10.0;  ///< deg, (0, 45]: how well mapped directions must agree
+  /// deg, (0, 45]: how well mapped directions must agree. Not in the schema: the plane and
+  /// segment registrations set it to their clustering angle ("cluster-angle").
+  double angle_tolerance_deg = 10.0;
   bool up_axis_known = true;  ///< both datasets are Z-up (levelled scanners, BIM): keep Z up
   bool allow_up_down_flip = false;  ///< also try R z = -z (up axis sign unknown)
   double max_tilt_deg = 10.0;  ///< deg, [0, 90]: with up_axis_known, max angle between R z and z
   /// The two directions defining a frame must be at least this far apart, deg, [5, 90]
   /// (a 10° ramp next to the floor makes a badly conditioned frame).
   double min_frame_angle_deg = 30.0;
+  /// up-axis-known, allow-up-down-flip, max-tilt, min-frame-angle (nested in the plane and
+  /// segment registration schemas).
+  static const ParamSchema<RotationEnumerationParams>& schema();
 };
 
 struct RotationCandidate {

@@ -29,7 +29,11 @@ const ParamSchema<OpeningRegistrationParams>& OpeningRegistrationParams::schema(
                 "Runner-up must score this fraction below the best, else ambiguous")
           .real(&P::vertical_tolerance_deg, "facade-vertical", "Façade verticality", "deg", 0.0,
                 45.0, "Max tilt of a façade plane", true)
-          .integer(&P::seed, "seed", "Seed", "", 0, 9.0e15, "Random seed", true);
+          .nested(&P::distance, SegmentDistanceParams::schema())
+          // The plane settings of the wall-thickness score (planeSimilarity), not the others.
+          .nested(&P::planes, PlaneRegistrationParams::schema(), "",
+                  {"plane-distance", "oriented-normals", "min-polygon-area", "raster-cells",
+                   "cluster-angle"});
   return s;
 }
 
@@ -108,7 +112,7 @@ double median(std::vector<double> v) {
 
 GlobalRegistrationResult registerOpenings(const FeatureSet& source, const FeatureSet& target,
                                           const OpeningRegistrationParams& p,
-                                          Progress* progress) {
+                                          std::uint64_t seed, Progress* progress) {
   GlobalRegistrationResult r;
   r.method = "openings";
   r.score_unit = "matched opening edges";
@@ -136,7 +140,7 @@ GlobalRegistrationResult registerOpenings(const FeatureSet& source, const Featur
     for (std::size_t b = 0; b < tgt.size(); ++b)
       for (int k : {0, 1}) bases.push_back({int(a), int(b), k});
   if (int(bases.size()) > p.max_hypotheses) {
-    std::mt19937_64 rng(p.seed);
+    std::mt19937_64 rng(seed);
     std::shuffle(bases.begin(), bases.end(), rng);
     bases.resize(p.max_hypotheses);
   }

@@ -30,6 +30,7 @@
 
 #include "common/params.hpp"
 #include "common/progress.hpp"
+#include "common/seed.hpp"
 #include "model/feature_set.hpp"
 #include "registration/common/registration_result.hpp"
 #include "registration/planes/plane_registration.hpp"
@@ -38,8 +39,10 @@
 namespace plumb {
 
 struct OpeningRegistrationParams {
-  SegmentDistanceParams distance;  ///< d = 0.10 m on opening edges
-  PlaneRegistrationParams planes;  ///< d_thr and polygon settings for the normal DOF score
+  SegmentDistanceParams distance;  ///< d = 0.10 m on opening edges (nested in the schema)
+  /// d_thr and polygon settings for the normal DOF score; the schema nests the ones used
+  /// (plane-distance, oriented-normals, min-polygon-area, raster-cells, cluster-angle).
+  PlaneRegistrationParams planes;
   /// Hypotheses enumerated when there are at most this many, else drawn at random, [10, 1e7].
   int max_hypotheses = 20000;
   /// Wall thickness search range, metres, [0, 3].
@@ -55,14 +58,16 @@ struct OpeningRegistrationParams {
   double min_relative_gap = 0.05;
   /// Façade verticality tolerance, degrees, [0, 45].
   double vertical_tolerance_deg = 5.0;
-  std::uint64_t seed = 1;
   static const ParamSchema<OpeningRegistrationParams>& schema();
 };
 
 /// Source = indoor features (planes, openings with their wall index), target = outdoor
-/// features (façades, openings, planes of interior points seen through windows).
+/// features (façades, openings, planes of interior points seen through windows). `seed` draws
+/// the hypotheses when there are more than `max_hypotheses` (deterministic for a seed; the
+/// pipeline passes PipelineParams::seed).
 GlobalRegistrationResult registerOpenings(const FeatureSet& source, const FeatureSet& target,
                                           const OpeningRegistrationParams& params,
+                                          std::uint64_t seed = kDefaultSeed,
                                           Progress* progress = nullptr);
 
 }  // namespace plumb

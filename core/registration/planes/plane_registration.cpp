@@ -35,7 +35,8 @@ const ParamSchema<PlaneRegistrationParams>& PlaneRegistrationParams::schema() {
                    "Best pre-scored hypotheses scored with full overlap accuracy", true)
           .integer(&P::polish_iterations, "polish-iterations", "Polish iterations", "", 0, 50,
                    "Least-squares polish on matched polygon pairs", true)
-          .integer(&P::seed, "seed", "Seed", "", 0, 9.0e15, "Random seed", true);
+          .nested(&P::clustering, DirectionClusteringParams::schema())
+          .nested(&P::rotations, RotationEnumerationParams::schema());
   return s;
 }
 

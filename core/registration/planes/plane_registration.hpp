@@ -24,8 +24,10 @@
 namespace plumb {
 
 struct PlaneRegistrationParams {
-  DirectionClusteringParams clustering;  ///< angle tolerance 10°, 3 clusters
-  RotationEnumerationParams rotations;   ///< Z-up, tilt <= 10°
+  /// cluster-angle 10°, max-clusters 6 (nested in the schema; cluster-angle is also the
+  /// rotation enumeration's tolerance).
+  DirectionClusteringParams clustering;
+  RotationEnumerationParams rotations;   ///< Z-up, tilt <= 10° (nested in the schema)
   /// d_thr of eq. 10, metres, [0.005, 5]: polygon pairs farther apart do not count.
   double distance_threshold = 0.10;
   /// Normals are oriented consistently in both datasets (e.g. towards the scanner, see
@@ -48,7 +50,6 @@ struct PlaneRegistrationParams {
   int rescored_hypotheses = 48;
   /// Least-squares polish iterations on matched pairs, [0, 50].
   int polish_iterations = 3;
-  std::uint64_t seed = 1;  ///< deterministic method (no random draws); interface uniformity
   static const ParamSchema<PlaneRegistrationParams>& schema();
 };
 

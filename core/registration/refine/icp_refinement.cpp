@@ -37,8 +37,7 @@ const ParamSchema<RefineParams>& RefineParams::schema() {
           .integer(&P::iterations, "icp-iterations", "Iterations per stage", "", 1, 200,
                    "Max iterations per stage", true)
           .real(&P::trim_fraction, "trim", "Trim fraction", "", 0.05, 1.0,
-                "Fraction of correspondences kept (trimmed ICP)", true)
-          .integer(&P::seed, "seed", "Seed", "", 0, 9.0e15, "Random seed", true);
+                "Fraction of correspondences kept (trimmed ICP)", true);
   return s;
 }
 

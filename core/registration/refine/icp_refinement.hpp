@@ -39,7 +39,6 @@ struct RefineParams {
   int iterations = 10;
   /// Fraction of correspondences kept (smallest residuals), (0, 1]. Trimmed ICP.
   double trim_fraction = 0.9;
-  std::uint64_t seed = 1;  ///< deterministic (regular subsets); kept for interface uniformity
   /// Measure RefineResult::direction_resistance (the slide test: 12 more passes over the
   /// source points). Not a user setting (not in the schema: a report without it would find
   /// every direction unconstrained): the pipeline turns it off for the runner-up candidates

@@ -28,7 +28,9 @@ const ParamSchema<SegmentRegistrationParams>& SegmentRegistrationParams::schema(
                 "Runner-up must score this fraction below the best, else ambiguous")
           .integer(&P::refine_iterations, "polish-iterations", "Polish iterations", "", 0, 100,
                    "Joint rotation/translation polish on matched segments", true)
-          .integer(&P::seed, "seed", "Seed", "", 0, 9.0e15, "Random seed", true);
+          .nested(&P::clustering, DirectionClusteringParams::schema())
+          .nested(&P::distance, SegmentDistanceParams::schema())
+          .nested(&P::rotations, RotationEnumerationParams::schema());
   return s;
 }
 

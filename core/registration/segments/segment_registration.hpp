@@ -24,9 +24,11 @@
 namespace plumb {
 
 struct SegmentRegistrationParams {
-  DirectionClusteringParams clustering;  ///< angle tolerance 10°, 3 clusters
-  SegmentDistanceParams distance;        ///< d = 0.10 m, 5°
-  RotationEnumerationParams rotations;   ///< Z-up, tilt <= 10°
+  /// cluster-angle 10°, max-clusters 6; robust-distance 0.10 m, segment-angle 5°; Z-up, tilt
+  /// <= 10°: each nested in the schema under its own keys.
+  DirectionClusteringParams clustering;
+  SegmentDistanceParams distance;
+  RotationEnumerationParams rotations;
   /// Translation vote cell, metres, [0.05, 5]. Grown automatically to keep <= 16 M cells.
   double vote_cell = 0.25;
   /// Translation peaks examined per rotation, [1, 100].
@@ -42,9 +44,6 @@ struct SegmentRegistrationParams {
   double min_relative_gap = 0.05;
   /// Gauss-Newton iterations of the final joint (R, t) polish on matched segments, [0, 100].
   int refine_iterations = 10;
-  /// Seed. The method is deterministic (voting, no random draws); kept for interface
-  /// uniformity with the other stages.
-  std::uint64_t seed = 1;
   static const ParamSchema<SegmentRegistrationParams>& schema();
 };
 

@@ -7,6 +7,8 @@
 #include <QApplication>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QDoubleSpinBox>
+#include <QSpinBox>
 #include <QTest>
 #include <QUndoStack>
 
@@ -241,6 +243,15 @@ class GuiRegistrationTest : public QObject {
     const RigidTransform T = demo().truth;
     setLayerTransform(app.scene, *indoor_, T);
     app.registration->params().refinement.final_distance = 0.03;
+    // The one seed of the pipeline is in the dock's "Registration" parameters (issue 18).
+    auto* seed = app.registration->findChild<QSpinBox*>("seed");
+    QVERIFY(seed);
+    QCOMPARE(app.registration->findChildren<QSpinBox*>("seed").size(), 1);  // no group seeds
+    // Nested parameters have editors too: rotation enumeration of planes and segments.
+    QCOMPARE(app.registration->findChildren<QDoubleSpinBox*>("max-tilt").size(), 2);
+    QVERIFY(app.registration->findChild<QDoubleSpinBox*>("agreement-rotation"));
+    seed->setValue(7);
+    QCOMPARE(app.registration->params().seed, std::uint64_t{7});
     const QString project = artefact("demo.plumb.json");
     saveProject(app, project);
 
@@ -261,6 +272,7 @@ class GuiRegistrationTest : public QObject {
 
     // Reopen: the scene is replaced by the project's layers with their transforms.
     app.registration->params().refinement.final_distance = 0.05;
+    seed->setValue(2);
     bool done = false, ok = false;
     std::vector<Layer*> loaded;
     openProject(app, project, [&](bool all, const std::vector<Layer*>& layers) {
@@ -279,6 +291,8 @@ class GuiRegistrationTest : public QObject {
     QCOMPARE(app.registration->sourceLayer(), indoor);
     QCOMPARE(app.registration->targetLayer(), findLayerBySource(app.scene, q(demo().model)));
     QCOMPARE(app.registration->params().refinement.final_distance, 0.03);
+    QCOMPARE(app.registration->params().seed, std::uint64_t{7});
+    QCOMPARE(seed->value(), 7);
   }
 
   void projectErrorsNameTheFile() {

@@ -61,6 +61,13 @@ TEST(CliFeatures, ErrorsAreOneLineAndNonZero) {
       plumbCli(dir, "features " + scan + " --planes --set distance-threshold=5");
   EXPECT_EQ(range.exit_code, 1);
   EXPECT_EQ(std::count(range.err.begin(), range.err.end(), '\n'), 1) << range.err;
+  // The seed is --seed (as for register), not a plane-extraction parameter (issue 18).
+  const CliResult group_seed = plumbCli(dir, "features " + scan + " --planes --set seed=3");
+  EXPECT_EQ(group_seed.exit_code, 1);
+  EXPECT_NE(group_seed.err.find("unknown feature parameter 'seed'"), std::string::npos) << group_seed.err;
+  const CliResult seed = plumbCli(dir, "features " + scan + " --planes --seed -1");
+  EXPECT_EQ(seed.exit_code, 1);
+  EXPECT_NE(seed.err.find("--seed:"), std::string::npos) << seed.err;
   const CliResult ext =
       plumbCli(dir, "features " + scan + " --planes -o " + shellQuote((dir / "x.txt").string()));
   EXPECT_EQ(ext.exit_code, 1);

@@ -60,3 +60,44 @@ TEST(Params, JsonRoundTrip) {
   EXPECT_EQ(q.method, Method::Fast);
   EXPECT_THROW(paramsFromJson(s, nlohmann::json{{"bogus", 1}}, q), InputError);
 }
+
+namespace {
+struct OuterParams {
+  double scale = 2.0;
+  DemoParams inner;
+  DemoParams other;
+};
+}  // namespace
+
+TEST(Params, NestedSchemasAreOneFlatList) {
+  const auto s = ParamSchema<OuterParams>("outer")
+                     .real(&OuterParams::scale, "scale", "Scale", "", 0.1, 10, "s")
+                     .nested(&OuterParams::inner, DemoParams::schema())
+                     .nested(&OuterParams::other, DemoParams::schema(), "other-", {"threshold"});
+  ASSERT_EQ(s.fields().size(), 1u + 4u + 1u);
+  OuterParams p;
+  EXPECT_TRUE(setParam(s, p, "iterations", "9"));
+  EXPECT_TRUE(setParam(s, p, "other-threshold", "0.3"));
+  EXPECT_FALSE(setParam(s, p, "other-iterations", "9"));  // not taken from `other`
+  EXPECT_EQ(p.inner.iterations, 9);
+  EXPECT_EQ(p.other.iterations, 100);
+  EXPECT_DOUBLE_EQ(p.other.threshold, 0.3);
+  EXPECT_DOUBLE_EQ(p.inner.threshold, 0.02);
+  // Nested fields keep their spec (range, unit) and check it.
+  EXPECT_EQ(s.find("other-threshold")->spec.unit, "m");
+  EXPECT_THROW(setParam(s, p, "threshold", "5"), InputError);
+  const auto j = paramsToJson(s, p);
+  EXPECT_EQ(j.at("iterations"), 9);
+  OuterParams q;
+  paramsFromJson(s, j, q);
+  EXPECT_EQ(q.inner.iterations, 9);
+  EXPECT_DOUBLE_EQ(q.other.threshold, 0.3);
+}
+
+TEST(Params, ASchemaListingAKeyTwiceIsAProgrammingError) {
+  // The keys are the CLI flags and JSON keys: nesting two structs without a prefix collides.
+  EXPECT_THROW(ParamSchema<OuterParams>("outer")
+                   .nested(&OuterParams::inner, DemoParams::schema())
+                   .nested(&OuterParams::other, DemoParams::schema()),
+               std::logic_error);
+}
