@@ -59,6 +59,8 @@ const Table& byPath() {
                                          "the other data saw through (a wrong building scores high)"},
       {"visibility.expected_overlap", "Fraction of the source the target's sensors could see"},
       {"visibility.model_target", "Whether the target is a model (rays tested against its walls)"},
+      {"visibility.unexplained_structure", "Worst direction: share of the judged structure the other "
+                                           "data does not explain (none: not enough structure judged)"},
       {"candidates", "Every placement considered (the answer first)"},
       {"candidates[].feature_score", "Feature score of this placement"},
       {"candidates[].fit_cost", "Refined fit cost (lower is better)"},
@@ -88,6 +90,17 @@ const Table& byName() {
       {"tested", "Points tested"},
       {"visible", "Tested points inside the other data's field of view"},
       {"what", "What this direction tests"},
+      {"large_planes", "Planes of this side large enough to judge (4 m2 by default)"},
+      {"judged_planes", "Large planes with enough points the other data's sensors could see"},
+      {"unexplained_planes", "Judged planes mostly lying where the other data saw through or has "
+                             "nothing: walls the other data does not explain"},
+      {"judged_area_m2", "Area of the judged planes"},
+      {"unexplained_area_m2", "Area of the unexplained planes"},
+      {"unexplained_area_ratio", "Unexplained area over judged area (a wrong building leaves whole "
+                                 "walls unexplained)"},
+      {"point_ratio", "Unexplained points over the sighted points of the judged planes"},
+      {"worst_plane_fraction", "Unexplained fraction of the worst judged plane"},
+      {"worst_plane_area_m2", "Area of the worst judged plane"},
   };
   return t;
 }
@@ -113,6 +126,7 @@ std::string number(const std::string& name, const nlohmann::json& v) {
   if (!std::isfinite(x)) return "not a number";
   if (endsWith(name, "_m")) return std::abs(x) < 1.0 ? printf1("%.1f mm", x * 1e3) : printf1("%.3f m", x);
   if (endsWith(name, "_deg")) return printf1("%.3f deg", x);
+  if (endsWith(name, "_m2")) return printf1("%.2f m2", x);
   if (name.find("ratio") != std::string::npos || name == "expected_overlap" || name == "relative_gap")
     return printf1("%.1f %%", x * 100.0);
   if (name.rfind("seconds", 0) == 0) return printf1("%.2f s", x);
