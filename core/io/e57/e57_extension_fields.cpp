@@ -1,38 +1,17 @@
 #include "io/e57/e57_extension_fields.hpp"
 
+#include "io/e57/e57_out_fields.hpp"
 #include "io/e57/e57_point_fields.hpp"
 
-#include <algorithm>
 #include <cctype>
-#include <limits>
 #include <set>
 
 namespace plumb::e57 {
 namespace {
 
-/// An Integer field over the values of `column` (at least one bit wide).
-template <class T>
-OutField integerColumn(const std::string& local, const std::vector<T>& column) {
-  std::int64_t lo = std::numeric_limits<std::int64_t>::max(), hi = std::numeric_limits<std::int64_t>::lowest();
-  for (const T v : column) lo = std::min<std::int64_t>(lo, v), hi = std::max<std::int64_t>(hi, v);
-  if (column.empty()) lo = hi = 0;
-  OutField f;
-  f.spec.name = kPlumbPrefix + local;
-  f.spec.type = FieldType::Integer;
-  f.spec.minimum = lo;
-  f.spec.maximum = std::max(hi, lo + 1);
-  f.integers = [&column](std::size_t begin, std::size_t count, std::int64_t* out) {
-    for (std::size_t i = 0; i < count; ++i) out[i] = column[begin + i];
-  };
-  return f;
-}
-
 template <class C>
 OutField floatColumn(const std::string& local, const C& column) {
-  OutField f;
-  f.spec.name = kPlumbPrefix + local;
-  f.spec.type = FieldType::Float;
-  f.spec.single = true;
+  OutField f{floatSpec(kPlumbPrefix + local, true), {}, {}};
   f.floats = [&column](std::size_t begin, std::size_t count, double* out) {
     for (std::size_t i = 0; i < count; ++i) out[i] = column[begin + i];
   };
@@ -52,22 +31,24 @@ std::string xmlLocalName(const std::string& name) {
 }
 
 void appendExtensionFields(const PointCloud& cloud, std::vector<OutField>& fields) {
-  const std::size_t n = cloud.size();
-  auto has = [n](const auto& column) { return n > 0 && column.size() == n; };
+  auto present = [n = cloud.size()](const auto& column) { return n > 0 && column.size() == n; };
+  auto integerColumn = [](const char* local, const auto& column) {
+    return integerColumnField(kPlumbPrefix + std::string(local), column);
+  };
   std::set<std::string> used;
   auto add = [&](OutField f) {
     used.insert(f.spec.name);
     fields.push_back(std::move(f));
   };
-  if (has(cloud.classification)) add(integerColumn("classification", cloud.classification));
-  if (has(cloud.classification_flags)) add(integerColumn("classificationFlags", cloud.classification_flags));
-  if (has(cloud.scanner_channel)) add(integerColumn("scannerChannel", cloud.scanner_channel));
-  if (has(cloud.scan_flags)) add(integerColumn("scanFlags", cloud.scan_flags));
-  if (has(cloud.user_data)) add(integerColumn("userData", cloud.user_data));
-  if (has(cloud.point_source_id)) add(integerColumn("pointSourceId", cloud.point_source_id));
-  if (has(cloud.scan_angle)) add(floatColumn("scanAngle", cloud.scan_angle));
+  if (present(cloud.classification)) add(integerColumn("classification", cloud.classification));
+  if (present(cloud.classification_flags)) add(integerColumn("classificationFlags", cloud.classification_flags));
+  if (present(cloud.scanner_channel)) add(integerColumn("scannerChannel", cloud.scanner_channel));
+  if (present(cloud.scan_flags)) add(integerColumn("scanFlags", cloud.scan_flags));
+  if (present(cloud.user_data)) add(integerColumn("userData", cloud.user_data));
+  if (present(cloud.point_source_id)) add(integerColumn("pointSourceId", cloud.point_source_id));
+  if (present(cloud.scan_angle)) add(floatColumn("scanAngle", cloud.scan_angle));
   for (const auto& sf : cloud.scalar_fields) {
-    if (!has(sf.values)) continue;
+    if (!present(sf.values)) continue;
     // A name already written, or one the reader would take for another role ("normalX",
     // "scanAngle"...), gets a numbered suffix.
     const std::string base = xmlLocalName(sf.name);

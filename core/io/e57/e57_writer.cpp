@@ -8,6 +8,7 @@
 #include "common/error.hpp"
 #include "io/e57/e57_extension_fields.hpp"
 #include "io/e57/e57_header.hpp"
+#include "io/e57/e57_out_fields.hpp"
 #include "io/e57/e57_packet_writer.hpp"
 #include "io/e57/e57_page_writer.hpp"
 #include "io/e57/e57_xml_writer.hpp"
@@ -17,23 +18,10 @@ namespace {
 
 using e57::FieldSpec;
 using e57::FieldType;
+using e57::floatSpec;
+using e57::integerSpec;
 using e57::OutField;
-
-FieldSpec integerSpec(const char* name, std::int64_t lo, std::int64_t hi) {
-  FieldSpec f;
-  f.name = name;
-  f.type = FieldType::Integer;
-  f.minimum = lo;
-  f.maximum = std::max(hi, lo + 1);  // at least one bit per record (keeps counts checkable)
-  return f;
-}
-FieldSpec floatSpec(const char* name, bool single) {
-  FieldSpec f;
-  f.name = name;
-  f.type = FieldType::Float;
-  f.single = single;
-  return f;
-}
+using e57::rangeOf;
 
 /// A ScaledInteger raw value: v in units of the quantum q, rounded.
 std::int64_t toRaw(double v, double q) { return static_cast<std::int64_t>(std::floor(v / q + 0.5)); }
@@ -54,18 +42,6 @@ OutField scaledAxisField(const char* name, World world, double q, std::int64_t l
     }
   };
   return f;
-}
-
-template <class V, class Get>
-std::pair<std::int64_t, std::int64_t> rangeOf(const V& v, Get get) {
-  std::int64_t lo = std::numeric_limits<std::int64_t>::max(), hi = std::numeric_limits<std::int64_t>::lowest();
-  for (const auto& x : v) {
-    const std::int64_t g = get(x);
-    lo = std::min(lo, g);
-    hi = std::max(hi, g);
-  }
-  if (v.empty()) lo = hi = 0;
-  return {lo, hi};
 }
 
 // Fields and bookkeeping for one scan. Lambdas capture `cloud` by reference.
@@ -161,18 +137,14 @@ std::vector<OutField> describeScan(const PointCloud& cloud, const E57WriteOption
       fields.push_back(std::move(f));
     }
   }
-  auto intField = [&](const char* name, const auto& values, std::int64_t shift) {
-    const auto r = rangeOf(values, [shift](auto v) { return static_cast<std::int64_t>(v) + shift; });
-    OutField f{integerSpec(name, r.first, r.second), {}, {}};
-    f.integers = [&values, shift](std::size_t begin, std::size_t count, std::int64_t* out) {
-      for (std::size_t i = 0; i < count; ++i) out[i] = static_cast<std::int64_t>(values[begin + i]) + shift;
-    };
-    fields.push_back(std::move(f));
+  auto intField = [&](const char* name, const auto& values) {
+    std::pair<std::int64_t, std::int64_t> r;
+    fields.push_back(e57::integerColumnField(name, values, &r));
     return r;
   };
   if (cloud.hasGrid()) {
-    w.rows = intField("rowIndex", cloud.row, 0);
-    w.columns = intField("columnIndex", cloud.column, 0);
+    w.rows = intField("rowIndex", cloud.row);
+    w.columns = intField("columnIndex", cloud.column);
   }
   if (cloud.hasReturns()) {
     // E57 returnIndex is 0-based; ours is 1-based with 0 = unknown (written as the first return).
@@ -183,7 +155,7 @@ std::vector<OutField> describeScan(const PointCloud& cloud, const E57WriteOption
     };
     fields.push_back(std::move(f));
     w.returns = r;
-    intField("returnCount", cloud.return_count, 0);
+    intField("returnCount", cloud.return_count);
   }
   if (cloud.hasTimestamps()) {
     OutField f{floatSpec("timeStamp", false), {}, {}};
