@@ -28,7 +28,6 @@
 // may be given more than once (e.g. both files of one registration).
 #include <nlohmann/json.hpp>
 
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -43,6 +42,7 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "io/io.hpp"
+#include "io/mesh/file_extension.hpp"
 #include "model/trajectory.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/registration_input.hpp"
@@ -112,12 +112,6 @@ void load(Side& s, const std::string& path, const std::string& trajectory, const
   } else {
     s.input = makeRegistrationInput(std::get<BimModel>(s.data), RigidTransform());
   }
-}
-
-std::string lowerExtension(const std::string& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  for (auto& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
 }
 
 bool isHtmlReport(const std::string& path) {

@@ -120,13 +120,12 @@ std::vector<std::string> PointCloud::fieldNames() const {
   if (hasClassification()) names.push_back("classification");
   if (hasSensorOrigins()) names.insert(names.end(), {"sensor_x", "sensor_y", "sensor_z"});
   if (hasScanId()) names.push_back("scan_id");
-  const auto present = [n = size()](const auto& column) { return n > 0 && column.size() == n; };
-  if (present(scan_angle)) names.push_back("scan_angle");
-  if (present(user_data)) names.push_back("user_data");
-  if (present(point_source_id)) names.push_back("point_source_id");
-  if (present(classification_flags)) names.push_back("classification_flags");
-  if (present(scanner_channel)) names.push_back("scanner_channel");
-  if (present(scan_flags)) names.push_back("scan_flags");
+  if (has(scan_angle)) names.push_back("scan_angle");
+  if (has(user_data)) names.push_back("user_data");
+  if (has(point_source_id)) names.push_back("point_source_id");
+  if (has(classification_flags)) names.push_back("classification_flags");
+  if (has(scanner_channel)) names.push_back("scanner_channel");
+  if (has(scan_flags)) names.push_back("scan_flags");
   for (const auto& f : scalar_fields)
     if (f.values.size() == size()) names.push_back(f.name);
   return names;
