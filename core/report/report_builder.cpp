@@ -26,7 +26,7 @@ std::string nowUtc() {
   return buf;
 }
 
-/// Every k-th point of `c` (at most `max`), as indices.
+/// Indices 0, k, 2k... of n points, k chosen so that at most `max` are kept.
 std::vector<std::size_t> strideIndices(std::size_t n, std::size_t max) {
   const std::size_t step = std::max<std::size_t>(1, (n + max - 1) / std::max<std::size_t>(1, max));
   std::vector<std::size_t> idx;
@@ -43,25 +43,28 @@ std::vector<Eigen::Vector3d> worldPoints(const PointCloud& c, const RigidTransfo
   return out;
 }
 
-/// The target as points: the cloud, or its model's surface sampled at about 50,000 points.
-PointCloud targetPoints(const ReportInputs& in) {
-  if (in.target_cloud) return *in.target_cloud;
+/// The target in world coordinates: its points, or its model's surface sampled at about
+/// 50,000 points (the cloud itself is not copied).
+std::vector<Eigen::Vector3d> targetWorldPoints(const ReportInputs& in, std::size_t max) {
+  if (in.target_cloud) return worldPoints(*in.target_cloud, RigidTransform(), max);
   const TriangleMesh& mesh = in.target_model->mesh;
   double area = 0.0;
   for (const auto& t : mesh.triangles)
     area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
-  return sampleMeshSurface(mesh, std::max(0.02, std::sqrt(area / 50000.0)), in.seed);
+  return worldPoints(sampleMeshSurface(mesh, std::max(0.02, std::sqrt(area / 50000.0)), in.seed), RigidTransform(), max);
 }
 
-DistanceSummary measure(const ReportInputs& in, const PointCloud& sample, const RigidTransform& t,
-                        const ReportParams& p, Progress* progress) {
+DistanceResult measure(const ReportInputs& in, const PointCloud& sample, const RigidTransform& t,
+                       const ReportParams& p, Progress* progress) {
   DistanceParams dp;
   dp.max_distance = p.max_distance;
-  const DistanceResult r = in.target_model
-      ? cloudToMeshDistances(sample, t, in.target_model->mesh, RigidTransform(), dp, progress)
-      : cloudToCloudDistances(sample, t, *in.target_cloud, RigidTransform(), dp, progress);
+  return in.target_model ? cloudToMeshDistances(sample, t, in.target_model->mesh, RigidTransform(), dp, progress)
+                         : cloudToCloudDistances(sample, t, *in.target_cloud, RigidTransform(), dp, progress);
+}
+
+DistanceSummary summarize(const DistanceResult& r, std::size_t sampled, const ReportParams& p) {
   DistanceSummary d;
-  d.sampled = sample.size();
+  d.sampled = sampled;
   d.matched = r.matched;
   d.max_distance = p.max_distance;
   d.mean = r.mean, d.rms = r.rms, d.median = r.median, d.p95 = r.p95;
@@ -69,13 +72,18 @@ DistanceSummary measure(const ReportInputs& in, const PointCloud& sample, const 
   return d;
 }
 
-/// Median of the registered source's matched points: the centre of the overlap.
-Eigen::Vector3d overlapCentre(const std::vector<Eigen::Vector3d>& source) {
-  if (source.empty()) return Eigen::Vector3d::Zero();
+/// Median of the registered source points that matched the target (the centre of the
+/// overlap); of all of them when none matched.
+Eigen::Vector3d overlapCentre(const PointCloud& sample, const RigidTransform& t, const DistanceResult& r) {
+  std::vector<Eigen::Vector3d> matched;
+  for (std::size_t i = 0; i < sample.size(); ++i)
+    if (std::isfinite(r.distances[i])) matched.push_back(t.apply(sample.world(i)));
+  if (matched.empty()) matched = worldPoints(sample, t, sample.size());
+  if (matched.empty()) return Eigen::Vector3d::Zero();
   Eigen::Vector3d c;
   for (int a = 0; a < 3; ++a) {
     std::vector<double> v;
-    for (const auto& p : source) v.push_back(p[a]);
+    for (const auto& q : matched) v.push_back(q[a]);
     std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
     c[a] = v[v.size() / 2];
   }
@@ -106,11 +114,11 @@ RegistrationReport buildRegistrationReport(const ReportInputs& in, const Pipelin
   const RigidTransform& t = result.report.transform;
   r.residuals = featureResiduals(result.source_features, result.target_features, t);
   const PointCloud sample = in.source->subset(strideIndices(in.source->size(), p.max_distance_samples));
-  r.distances = measure(in, sample, t, p, progress);
-  const PointCloud target = targetPoints(in);
-  const auto src = worldPoints(*in.source, t, 2'000'000), tgt = worldPoints(target, RigidTransform(), 2'000'000);
+  const DistanceResult distances = measure(in, sample, t, p, progress);
+  r.distances = summarize(distances, sample.size(), p);
+  const auto src = worldPoints(*in.source, t, 2'000'000), tgt = targetWorldPoints(in, 2'000'000);
   r.pictures.push_back(planPicture(src, tgt, p.pictures));
-  r.pictures.push_back(sectionPicture(src, tgt, overlapCentre(src), p.pictures));
+  r.pictures.push_back(sectionPicture(src, tgt, overlapCentre(sample, t, distances), p.pictures));
   r.pictures.push_back(histogramPicture(r.distances));
   r.pictures.push_back(residualPicture(r.residuals));
   return r;
