@@ -253,6 +253,204 @@ Opening makeOpening(const PlanarPolygon& f, const Rect& r, const Eigen::Vector3d
   return o;
 }
 
+/// Mean point and mean sensor origin over a subsample of the cloud (about 20000 points).
+struct CloudMeans {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+};
+
+CloudMeans cloudMeans(const PointCloud& cloud, bool has_origins) {
+  CloudMeans m;
+  const std::size_t step = std::max<std::size_t>(1, cloud.size() / 20000);
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < cloud.size(); i += step) {
+    if (!cloud.positions[i].allFinite()) continue;
+    m.point += cloud.world(i);
+    if (has_origins) m.origin += cloud.offset + cloud.sensor_origins[i].cast<double>();
+    ++n;
+  }
+  if (n) { m.point /= double(n); m.origin /= double(n); }
+  return m;
+}
+
+/// Which side façade `f` was seen from: its normal or the opposite one, towards the mean
+/// sensor origin of its own points (without origins: towards the cloud's mean point).
+Eigen::Vector3d viewNormal(const PointCloud& cloud, const PlanarPolygon& f, const CloudMeans& means,
+                           bool has_origins) {
+  Eigen::Vector3d ref = means.point;
+  if (has_origins && !f.inliers.empty()) {
+    ref.setZero();
+    std::size_t n = 0;
+    const std::size_t step = std::max<std::size_t>(1, f.inliers.size() / 2000);
+    for (std::size_t j = 0; j < f.inliers.size(); j += step)
+      if (f.inliers[j] < cloud.size()) {
+        ref += cloud.offset + cloud.sensor_origins[f.inliers[j]].cast<double>();
+        ++n;
+      }
+    ref = n ? Eigen::Vector3d(ref / double(n)) : means.origin;
+  } else if (has_origins) {
+    ref = means.origin;
+  }
+  return f.signedDistance(ref) >= 0 ? f.normal : Eigen::Vector3d(-f.normal);
+}
+
+/// The façades of a detection with what each step needs of them.
+struct Facades {
+  const std::vector<PlanarPolygon>& planes;
+  const std::vector<int>& index;  ///< into planes
+  const PlanarPolygon& operator[](std::size_t k) const { return planes[index[k]]; }
+  std::size_t size() const { return index.size(); }
+};
+
+/// Nearest façade crossed by the ray O->P with |P - hit| > d_min and the hit inside the
+/// façade's outer ring (its mask); -1 when none. `uv` receives the hit in the façade frame.
+int nearestCrossing(const Eigen::Vector3d& O, const Eigen::Vector3d& P, const Facades& facades,
+                    const std::vector<RingMask>& masks, double min_depth, Eigen::Vector2d& uv) {
+  int hit_facade = -1;
+  double best_t = 2.0;
+  for (std::size_t k = 0; k < facades.size(); ++k) {
+    const auto& f = facades[k];
+    const double so = f.signedDistance(O), sp = f.signedDistance(P);
+    if (so * sp >= 0) continue;
+    const double t = so / (so - sp);
+    const Eigen::Vector3d hit = O + t * (P - O);
+    if ((P - hit).norm() <= min_depth || t >= best_t) continue;
+    const Eigen::Vector2d hit_uv = f.to2d(hit);
+    if (!masks[k].contains(hit_uv)) continue;
+    best_t = t;
+    hit_facade = static_cast<int>(k);
+    uv = hit_uv;
+  }
+  return hit_facade;
+}
+
+/// Ray evidence: the hits (u, v) on each façade and the interior points, in cloud order.
+struct RayEvidence {
+  std::vector<std::vector<Eigen::Vector2d>> per_facade;
+  std::vector<std::uint32_t> interior_points;
+};
+
+RayEvidence traceRays(const PointCloud& cloud, const Facades& facades, double min_depth) {
+  std::vector<RingMask> masks;
+  for (auto fi : facades.index) masks.emplace_back(convexHull(facades.planes[fi].rings[0]));
+  // Per point: nearest façade crossed by O->P with |P - hit| > d_min inside the outer ring.
+  std::vector<int> hit_facade(cloud.size(), -1);
+  std::vector<Eigen::Vector2d> hit_uv(cloud.size());
+  const std::size_t blocks = std::max<std::size_t>(1, cloud.size() / 32768);
+  tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+    const std::size_t begin = cloud.size() * b / blocks, end = cloud.size() * (b + 1) / blocks;
+    for (std::size_t i = begin; i < end; ++i) {
+      if (!cloud.positions[i].allFinite()) continue;
+      const Eigen::Vector3d P = cloud.world(i);
+      const Eigen::Vector3d O = cloud.offset + cloud.sensor_origins[i].cast<double>();
+      hit_facade[i] = nearestCrossing(O, P, facades, masks, min_depth, hit_uv[i]);
+    }
+  });
+  RayEvidence out;
+  out.per_facade.resize(facades.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    if (hit_facade[i] >= 0) {
+      out.per_facade[hit_facade[i]].push_back(hit_uv[i]);
+      out.interior_points.push_back(static_cast<std::uint32_t>(i));
+    }
+  return out;
+}
+
+bool sizeOk(const Rect& r, const OpeningDetectionParams& params) {
+  const double w = r.u1 - r.u0, h = r.v1 - r.v0;
+  return w >= params.min_width && h >= params.min_height && w <= params.max_width &&
+         h <= params.max_height;
+}
+
+constexpr Rect kEmptyRect{1e300, 1e300, -1e300, -1e300};
+
+void extend(Rect& r, const Eigen::Vector2d& p) {
+  r.u0 = std::min(r.u0, p.x()); r.v0 = std::min(r.v0, p.y());
+  r.u1 = std::max(r.u1, p.x()); r.v1 = std::max(r.v1, p.y());
+}
+
+/// One façade's openings as they are found: rectangles (u, v) and the openings made of them,
+/// in step (openings[first + q] is made of rects[q]).
+struct FacadeOpenings {
+  const PlanarPolygon& f;
+  int facade;              ///< index into the input planes
+  Eigen::Vector3d view;    ///< the side the façade was seen from
+  std::vector<Rect> rects;
+  std::vector<Opening>& openings;
+  std::size_t first;
+
+  void add(const Rect& r, std::size_t evidence) {
+    rects.push_back(r);
+    openings.push_back(makeOpening(f, r, view, facade, evidence));
+  }
+  void replace(std::size_t q, const Rect& r) {
+    rects[q] = r;
+    openings[first + q] = makeOpening(f, r, view, facade, openings[first + q].evidence_count);
+  }
+};
+
+/// Ray-traced openings: components -> vertical bounding rectangles -> snapped to the wall.
+void addRayOpenings(FacadeOpenings& out, const PointCloud& cloud,
+                    const std::vector<Eigen::Vector2d>& evidence,
+                    const OpeningDetectionParams& params) {
+  std::vector<Eigen::Vector2d> wall;
+  for (auto i : out.f.inliers)
+    if (i < cloud.size()) wall.push_back(out.f.to2d(cloud.world(i)));
+  const auto reveal = evidence.empty() ? std::vector<Eigen::Vector2d>{} : revealPoints(cloud, out.f, out.view);
+  for (const auto& comp : gridComponents(evidence, params.link_distance)) {
+    if (comp.size() < static_cast<std::size_t>(params.min_evidence)) continue;
+    Rect r = kEmptyRect;
+    for (auto c : comp) extend(r, evidence[c]);
+    r = snapToReveals(snapToWall(r, wall, params.snap_distance, params.max_width, params.max_height), reveal, 0.1);
+    if (!sizeOk(r, params)) continue;
+    out.add(r, comp.size());
+  }
+}
+
+/// `x` with each side moved out to the hole's side where the hole reaches more than `gap`
+/// beyond it.
+Rect widenToHole(const Rect& x, const Rect& hole, double gap) {
+  Rect merged = x;
+  if (hole.u0 < x.u0 - gap) merged.u0 = hole.u0;
+  if (hole.u1 > x.u1 + gap) merged.u1 = hole.u1;
+  if (hole.v0 < x.v0 - gap) merged.v0 = hole.v0;
+  if (hole.v1 > x.v1 + gap) merged.v1 = hole.v1;
+  return merged;
+}
+
+/// Holes of the wall polygon (indoor side, or no sensor origins).
+void addHoleOpenings(FacadeOpenings& out, const OpeningDetectionParams& params) {
+  for (std::size_t h = 1; h < out.f.rings.size(); ++h) {
+    Rect r = kEmptyRect;
+    for (const auto& p : out.f.rings[h]) extend(r, p);
+    if (!sizeOk(r, params)) continue;
+    // A hole overlapping a ray-traced opening completes it where the evidence stops short
+    // (indoor rays leaving upwards hit nothing): such sides move out to the hole's side.
+    bool dup = false;
+    for (std::size_t q = 0; q < out.rects.size(); ++q) {
+      if (overlap(out.rects[q], r) <= 0.1) continue;
+      dup = true;
+      // Farther than the wall snap could reach.
+      const Rect merged = widenToHole(out.rects[q], r, params.snap_distance);
+      if (merged.area() > out.rects[q].area()) out.replace(q, merged);
+    }
+    if (dup) continue;
+    out.add(r, out.f.rings[h].size());
+  }
+}
+
+/// Explains when the cloud cannot be ray traced (an error when ray tracing was required).
+void checkRaySource(bool has_origins, const OpeningDetectionParams& params,
+                    OpeningDetectionResult& result) {
+  const bool want_rays = params.source != OpeningSource::Holes;
+  if (params.source == OpeningSource::RayTracing && !has_origins)
+    throw InputError("ray tracing cannot run: the cloud has no sensor origins (per-point origins "
+                     "or scan poses are needed to know where each ray came from)");
+  if (want_rays && !has_origins)
+    result.messages.push_back("ray tracing cannot run: the cloud has no sensor origins; "
+                              "openings come from holes in wall polygons only");
+}
+
 }  // namespace
 
 OpeningDetectionResult detectOpenings(const PointCloud& cloud,
@@ -262,149 +460,28 @@ OpeningDetectionResult detectOpenings(const PointCloud& cloud,
   OpeningDetectionResult result;
   result.facades = selectFacades(planes, params.vertical_tolerance_deg, params.min_facade_area);
   const bool has_origins = cloud.hasSensorOrigins();
-  const bool want_rays = params.source != OpeningSource::Holes;
-  if (params.source == OpeningSource::RayTracing && !has_origins)
-    throw InputError("ray tracing cannot run: the cloud has no sensor origins (per-point origins "
-                     "or scan poses are needed to know where each ray came from)");
-  if (want_rays && !has_origins)
-    result.messages.push_back("ray tracing cannot run: the cloud has no sensor origins; "
-                              "openings come from holes in wall polygons only");
-  const std::size_t nf = result.facades.size();
+  checkRaySource(has_origins, params, result);
+  const Facades facades{planes, result.facades};
+  const std::size_t nf = facades.size();
   // Which side each façade was seen from.
+  const CloudMeans means = cloudMeans(cloud, has_origins);
   std::vector<Eigen::Vector3d> view(nf);
-  Eigen::Vector3d mean_origin = Eigen::Vector3d::Zero(), mean_point = Eigen::Vector3d::Zero();
-  {
-    const std::size_t step = std::max<std::size_t>(1, cloud.size() / 20000);
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < cloud.size(); i += step) {
-      if (!cloud.positions[i].allFinite()) continue;
-      mean_point += cloud.world(i);
-      if (has_origins) mean_origin += cloud.offset + cloud.sensor_origins[i].cast<double>();
-      ++n;
-    }
-    if (n) { mean_point /= double(n); mean_origin /= double(n); }
-  }
-  for (std::size_t k = 0; k < nf; ++k) {
-    const auto& f = planes[result.facades[k]];
-    // The side the façade's own points were seen from (mean of their sensor origins).
-    Eigen::Vector3d ref = mean_point;
-    if (has_origins && !f.inliers.empty()) {
-      ref.setZero();
-      std::size_t n = 0;
-      const std::size_t step = std::max<std::size_t>(1, f.inliers.size() / 2000);
-      for (std::size_t j = 0; j < f.inliers.size(); j += step)
-        if (f.inliers[j] < cloud.size()) {
-          ref += cloud.offset + cloud.sensor_origins[f.inliers[j]].cast<double>();
-          ++n;
-        }
-      ref = n ? Eigen::Vector3d(ref / double(n)) : mean_origin;
-    } else if (has_origins) {
-      ref = mean_origin;
-    }
-    view[k] = f.signedDistance(ref) >= 0 ? f.normal : Eigen::Vector3d(-f.normal);
-  }
+  for (std::size_t k = 0; k < nf; ++k) view[k] = viewNormal(cloud, facades[k], means, has_origins);
   std::vector<std::vector<Eigen::Vector2d>> evidence(nf);
-  std::vector<Rect> ray_rects;
-  std::vector<int> ray_rect_facade;
-  if (want_rays && has_origins && nf > 0) {
+  if (params.source != OpeningSource::Holes && has_origins && nf > 0) {
     result.ray_tracing_ran = true;
-    std::vector<RingMask> masks;
-    for (auto fi : result.facades) masks.emplace_back(convexHull(planes[fi].rings[0]));
-    // Per point: nearest façade crossed by O->P with |P - hit| > d_min inside the outer ring.
-    std::vector<int> hit_facade(cloud.size(), -1);
-    std::vector<Eigen::Vector2d> hit_uv(cloud.size());
-    const std::size_t blocks = std::max<std::size_t>(1, cloud.size() / 32768);
-    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
-      const std::size_t begin = cloud.size() * b / blocks, end = cloud.size() * (b + 1) / blocks;
-      for (std::size_t i = begin; i < end; ++i) {
-        if (!cloud.positions[i].allFinite()) continue;
-        const Eigen::Vector3d P = cloud.world(i);
-        const Eigen::Vector3d O = cloud.offset + cloud.sensor_origins[i].cast<double>();
-        double best_t = 2.0;
-        for (std::size_t k = 0; k < nf; ++k) {
-          const auto& f = planes[result.facades[k]];
-          const double so = f.signedDistance(O), sp = f.signedDistance(P);
-          if (so * sp >= 0) continue;
-          const double t = so / (so - sp);
-          const Eigen::Vector3d hit = O + t * (P - O);
-          if ((P - hit).norm() <= params.min_depth || t >= best_t) continue;
-          const Eigen::Vector2d uv = f.to2d(hit);
-          if (!masks[k].contains(uv)) continue;
-          best_t = t;
-          hit_facade[i] = static_cast<int>(k);
-          hit_uv[i] = uv;
-        }
-      }
-    });
-    for (std::size_t i = 0; i < cloud.size(); ++i)
-      if (hit_facade[i] >= 0) {
-        evidence[hit_facade[i]].push_back(hit_uv[i]);
-        result.interior_points.push_back(static_cast<std::uint32_t>(i));
-      }
+    RayEvidence rays = traceRays(cloud, facades, params.min_depth);
+    evidence = std::move(rays.per_facade);
+    result.interior_points = std::move(rays.interior_points);
     result.evidence_count = result.interior_points.size();
     reportProgress(progress, 0.6, "ray tracing");
   }
   checkCanceled(progress);
-  auto sizeOk = [&](const Rect& r) {
-    const double w = r.u1 - r.u0, h = r.v1 - r.v0;
-    return w >= params.min_width && h >= params.min_height && w <= params.max_width &&
-           h <= params.max_height;
-  };
   for (std::size_t k = 0; k < nf; ++k) {
-    const auto& f = planes[result.facades[k]];
-    std::vector<Eigen::Vector2d> wall;
-    for (auto i : f.inliers)
-      if (i < cloud.size()) wall.push_back(f.to2d(cloud.world(i)));
-    std::vector<Rect> rects;
-    const std::size_t first_opening = result.openings.size();
-    const auto reveal = evidence[k].empty() ? std::vector<Eigen::Vector2d>{} : revealPoints(cloud, f, view[k]);
-    // Ray-traced openings: components -> vertical bounding rectangles -> snapped to the wall.
-    for (const auto& comp : gridComponents(evidence[k], params.link_distance)) {
-      if (comp.size() < static_cast<std::size_t>(params.min_evidence)) continue;
-      Rect r{1e300, 1e300, -1e300, -1e300};
-      for (auto c : comp) {
-        const auto& p = evidence[k][c];
-        r.u0 = std::min(r.u0, p.x()); r.v0 = std::min(r.v0, p.y());
-        r.u1 = std::max(r.u1, p.x()); r.v1 = std::max(r.v1, p.y());
-      }
-      r = snapToReveals(snapToWall(r, wall, params.snap_distance, params.max_width, params.max_height), reveal, 0.1);
-      if (!sizeOk(r)) continue;
-      rects.push_back(r);
-      result.openings.push_back(makeOpening(f, r, view[k], result.facades[k], comp.size()));
-    }
-    // Holes of the wall polygon (indoor side, or no sensor origins).
-    if (params.source != OpeningSource::RayTracing) {
-      for (std::size_t h = 1; h < f.rings.size(); ++h) {
-        Rect r{1e300, 1e300, -1e300, -1e300};
-        for (const auto& p : f.rings[h]) {
-          r.u0 = std::min(r.u0, p.x()); r.v0 = std::min(r.v0, p.y());
-          r.u1 = std::max(r.u1, p.x()); r.v1 = std::max(r.v1, p.y());
-        }
-        if (!sizeOk(r)) continue;
-        // A hole overlapping a ray-traced opening completes it where the evidence stops short
-        // (indoor rays leaving upwards hit nothing): such sides move out to the hole's side.
-        bool dup = false;
-        for (std::size_t q = 0; q < rects.size(); ++q) {
-          if (overlap(rects[q], r) <= 0.1) continue;
-          dup = true;
-          Rect& x = rects[q];
-          const double gap = params.snap_distance;  // farther than the wall snap could reach
-          Rect merged = x;
-          if (r.u0 < x.u0 - gap) merged.u0 = r.u0;
-          if (r.u1 > x.u1 + gap) merged.u1 = r.u1;
-          if (r.v0 < x.v0 - gap) merged.v0 = r.v0;
-          if (r.v1 > x.v1 + gap) merged.v1 = r.v1;
-          if (merged.area() > x.area()) {
-            x = merged;
-            result.openings[first_opening + q] = makeOpening(f, x, view[k], result.facades[k],
-                                                             result.openings[first_opening + q].evidence_count);
-          }
-        }
-        if (dup) continue;
-        rects.push_back(r);
-        result.openings.push_back(makeOpening(f, r, view[k], result.facades[k], f.rings[h].size()));
-      }
-    }
+    FacadeOpenings out{facades[k], result.facades[k], view[k], {}, result.openings,
+                       result.openings.size()};
+    addRayOpenings(out, cloud, evidence[k], params);
+    if (params.source != OpeningSource::RayTracing) addHoleOpenings(out, params);
   }
   reportProgress(progress, 1.0, "openings");
   return result;

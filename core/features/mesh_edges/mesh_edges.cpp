@@ -128,18 +128,13 @@ void splitTJunctions(const std::vector<Eigen::Vector3d>& verts, EdgeMap& edge_tr
   }
 }
 
-}  // namespace
-
-MeshEdgeResult extractSharpEdges(const TriangleMesh& mesh, const MeshEdgeParams& params,
-                                 Progress* progress) {
-  validateParams(MeshEdgeParams::schema(), params);
-  MeshEdgeResult result;
-  std::vector<Eigen::Vector3d> verts;
-  const auto vmap = weld(mesh, params.weld_tolerance, verts);
-  reportProgress(progress, 0.1, "edges");
-  // Edge -> incident triangles (after welding; degenerate triangles skipped).
+/// Edge -> incident triangles (after welding; degenerate triangles skipped), and the unit
+/// normal of each triangle (zero for skipped ones).
+EdgeMap edgeTriangles(const TriangleMesh& mesh, const std::vector<std::uint32_t>& vmap,
+                      const std::vector<Eigen::Vector3d>& verts,
+                      std::vector<Eigen::Vector3d>& normals) {
   EdgeMap edge_tris;
-  std::vector<Eigen::Vector3d> normals(mesh.triangles.size(), Eigen::Vector3d::Zero());
+  normals.assign(mesh.triangles.size(), Eigen::Vector3d::Zero());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
     const std::uint32_t a = vmap[tri[0]], b = vmap[tri[1]], c = vmap[tri[2]];
@@ -152,17 +147,20 @@ MeshEdgeResult extractSharpEdges(const TriangleMesh& mesh, const MeshEdgeParams&
       edge_tris[edgeKey(ed[0], ed[1])].push_back(static_cast<std::uint32_t>(t));
     }
   }
-  checkCanceled(progress);
-  splitTJunctions(verts, edge_tris, std::max(10.0 * params.weld_tolerance, 1e-6));
-  checkCanceled(progress);
-  // Sharp edges: dihedral (turning) angle between face normals above the threshold. Edges
-  // between coplanar triangles vanish, which merges coplanar triangles into facets.
-  const double cos_thr = std::cos(params.angle_threshold_deg * M_PI / 180.0);
-  std::vector<std::array<std::uint32_t, 2>> sharp;
+  return edge_tris;
+}
+
+using Edge = std::array<std::uint32_t, 2>;
+
+/// Sharp edges: dihedral (turning) angle between face normals above the threshold. Edges
+/// between coplanar triangles vanish, which merges coplanar triangles into facets.
+std::vector<Edge> sharpEdges(const EdgeMap& edge_tris, const std::vector<Eigen::Vector3d>& normals,
+                             double cos_thr, bool include_boundary) {
+  std::vector<Edge> sharp;
   for (const auto& [key, tris] : edge_tris) {
     bool is_sharp = false;
     if (tris.size() == 1) {
-      is_sharp = params.include_boundary;
+      is_sharp = include_boundary;
     } else {
       for (std::size_t i = 0; i < tris.size() && !is_sharp; ++i)
         for (std::size_t j = i + 1; j < tris.size() && !is_sharp; ++j)
@@ -171,15 +169,19 @@ MeshEdgeResult extractSharpEdges(const TriangleMesh& mesh, const MeshEdgeParams&
     if (is_sharp) sharp.push_back({static_cast<std::uint32_t>(key >> 32), static_cast<std::uint32_t>(key & 0xffffffffu)});
   }
   std::sort(sharp.begin(), sharp.end());  // deterministic order
-  result.sharp_edge_count = sharp.size();
-  reportProgress(progress, 0.5, "chaining");
-  // Chain: at each vertex, link pairs of incident sharp edges that continue each other.
+  return sharp;
+}
+
+/// Chain: at each vertex, link pairs of incident sharp edges that continue each other
+/// (turn by less than acos(cos_col)). Returns the chains as lists of edge indices.
+std::map<std::size_t, std::vector<std::uint32_t>> chainEdges(const std::vector<Edge>& sharp,
+                                                             const std::vector<Eigen::Vector3d>& verts,
+                                                             double cos_col) {
   std::vector<std::vector<std::uint32_t>> incident(verts.size());
   for (std::size_t e = 0; e < sharp.size(); ++e) {
     incident[sharp[e][0]].push_back(static_cast<std::uint32_t>(e));
     incident[sharp[e][1]].push_back(static_cast<std::uint32_t>(e));
   }
-  const double cos_col = std::cos(params.collinear_tolerance_deg * M_PI / 180.0);
   UnionFind uf(sharp.size());
   for (std::size_t v = 0; v < verts.size(); ++v) {
     const auto& inc = incident[v];
@@ -193,24 +195,53 @@ MeshEdgeResult extractSharpEdges(const TriangleMesh& mesh, const MeshEdgeParams&
       }
     }
   }
-  // Each group: extreme vertices along the direction of its first edge.
   std::map<std::size_t, std::vector<std::uint32_t>> groups;
   for (std::size_t e = 0; e < sharp.size(); ++e) groups[uf.find(e)].push_back(static_cast<std::uint32_t>(e));
-  for (const auto& [root, members] : groups) {
-    const auto& e0 = sharp[members.front()];
-    const Eigen::Vector3d d = (verts[e0[1]] - verts[e0[0]]).normalized();
-    const Eigen::Vector3d o = verts[e0[0]];
-    double lo = 0, hi = 0;
-    Eigen::Vector3d a = o, b = o;
-    for (auto m : members)
-      for (auto vi : sharp[m]) {
-        const double s = (verts[vi] - o).dot(d);
-        if (s < lo) { lo = s; a = verts[vi]; }
-        if (s > hi) { hi = s; b = verts[vi]; }
-      }
-    Segment3D seg;
-    seg.a = a;
-    seg.b = b;
+  return groups;
+}
+
+/// A chain as one segment: extreme vertices along the direction of its first edge.
+Segment3D chainSegment(const std::vector<std::uint32_t>& members, const std::vector<Edge>& sharp,
+                       const std::vector<Eigen::Vector3d>& verts) {
+  const auto& e0 = sharp[members.front()];
+  const Eigen::Vector3d d = (verts[e0[1]] - verts[e0[0]]).normalized();
+  const Eigen::Vector3d o = verts[e0[0]];
+  double lo = 0, hi = 0;
+  Eigen::Vector3d a = o, b = o;
+  for (auto m : members)
+    for (auto vi : sharp[m]) {
+      const double s = (verts[vi] - o).dot(d);
+      if (s < lo) { lo = s; a = verts[vi]; }
+      if (s > hi) { hi = s; b = verts[vi]; }
+    }
+  Segment3D seg;
+  seg.a = a;
+  seg.b = b;
+  return seg;
+}
+
+}  // namespace
+
+MeshEdgeResult extractSharpEdges(const TriangleMesh& mesh, const MeshEdgeParams& params,
+                                 Progress* progress) {
+  validateParams(MeshEdgeParams::schema(), params);
+  MeshEdgeResult result;
+  std::vector<Eigen::Vector3d> verts;
+  const auto vmap = weld(mesh, params.weld_tolerance, verts);
+  reportProgress(progress, 0.1, "edges");
+  std::vector<Eigen::Vector3d> normals;
+  EdgeMap edge_tris = edgeTriangles(mesh, vmap, verts, normals);
+  checkCanceled(progress);
+  splitTJunctions(verts, edge_tris, std::max(10.0 * params.weld_tolerance, 1e-6));
+  checkCanceled(progress);
+  const std::vector<Edge> sharp =
+      sharpEdges(edge_tris, normals, std::cos(params.angle_threshold_deg * M_PI / 180.0),
+                 params.include_boundary);
+  result.sharp_edge_count = sharp.size();
+  reportProgress(progress, 0.5, "chaining");
+  const double cos_col = std::cos(params.collinear_tolerance_deg * M_PI / 180.0);
+  for (const auto& [root, members] : chainEdges(sharp, verts, cos_col)) {
+    const Segment3D seg = chainSegment(members, sharp, verts);
     if (seg.length() >= params.min_length && seg.length() > 0) result.segments.push_back(seg);
   }
   std::stable_sort(result.segments.begin(), result.segments.end(),

@@ -62,6 +62,114 @@ std::vector<std::uint32_t> inliersOf(const PointCloud& cloud,
   return all;
 }
 
+/// Score subset (deterministic for the seed): every active point when there are at most
+/// `size`, else `size` drawn with replacement.
+std::vector<Eigen::Vector3f> drawSample(const PointCloud& cloud,
+                                        const std::vector<std::uint32_t>& active, int size,
+                                        std::mt19937_64& rng) {
+  std::vector<Eigen::Vector3f> sample;
+  const std::size_t s = std::min<std::size_t>(active.size(), size);
+  sample.reserve(s);
+  if (s == active.size()) {
+    for (auto i : active) sample.push_back(cloud.positions[i]);
+  } else {
+    std::uniform_int_distribution<std::size_t> pick(0, active.size() - 1);
+    for (std::size_t k = 0; k < s; ++k) sample.push_back(cloud.positions[active[pick(rng)]]);
+  }
+  return sample;
+}
+
+/// The sample's points grouped by coarse voxel (for local draws).
+struct SampleCells {
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
+  std::vector<std::uint64_t> cell_of;  ///< per sample point
+
+  SampleCells(const std::vector<Eigen::Vector3f>& sample, float cell) : cell_of(sample.size()) {
+    for (std::size_t k = 0; k < sample.size(); ++k) {
+      cell_of[k] = voxelKey(sample[k], cell);
+      cells[cell_of[k]].push_back(static_cast<std::uint32_t>(k));
+    }
+  }
+};
+
+/// `iterations` plane hypotheses through three sample points (up to 10 draws each): even ones
+/// draw the 2nd and 3rd point in the first one's voxel, odd ones anywhere in the sample.
+std::vector<Hypothesis> drawHypotheses(const std::vector<Eigen::Vector3f>& sample,
+                                       SampleCells& local, int iterations, std::mt19937_64& rng) {
+  std::vector<Hypothesis> hyps(iterations);
+  std::uniform_int_distribution<std::size_t> pick_s(0, sample.size() - 1);
+  for (int h = 0; h < iterations; ++h) {
+    for (int attempt = 0; attempt < 10 && !hyps[h].valid; ++attempt) {
+      const std::size_t a = pick_s(rng);
+      std::size_t b, c;
+      if (h % 2 == 0) {
+        const auto& cell = local.cells[local.cell_of[a]];
+        if (cell.size() < 3) continue;
+        std::uniform_int_distribution<std::size_t> pc(0, cell.size() - 1);
+        b = cell[pc(rng)];
+        c = cell[pc(rng)];
+      } else {
+        b = pick_s(rng);
+        c = pick_s(rng);
+      }
+      if (a == b || b == c || a == c) continue;
+      hyps[h] = planeThrough(sample[a], sample[b], sample[c]);
+    }
+  }
+  return hyps;
+}
+
+/// Index of the hypothesis of least eq. (2) cost over the sample (scored in parallel), or -1
+/// when none is valid.
+std::ptrdiff_t cheapestHypothesis(const std::vector<Hypothesis>& hyps,
+                                  const std::vector<Eigen::Vector3f>& sample, float t2) {
+  std::vector<double> cost(hyps.size(), std::numeric_limits<double>::infinity());
+  tbb::parallel_for(std::size_t(0), hyps.size(), [&](std::size_t h) {
+    if (!hyps[h].valid) return;
+    const auto& hy = hyps[h];
+    double c = 0;
+    for (const auto& p : sample) {
+      const float e = hy.n.dot(p) - hy.d;
+      c += std::min(e * e, t2);
+    }
+    cost[h] = c;
+  });
+  const auto best = std::min_element(cost.begin(), cost.end()) - cost.begin();
+  return std::isfinite(cost[best]) ? best : -1;
+}
+
+/// Inliers of the hypothesis among all remaining points, refitted by least squares; the refit
+/// is kept only while it gains inliers (a hypothesis across a corner must not drift away).
+DetectedPlane refitOnInliers(const PointCloud& cloud, const std::vector<std::uint32_t>& active,
+                             const Hypothesis& hyp, double threshold) {
+  DetectedPlane plane;
+  Eigen::Vector3d n = hyp.n.cast<double>();
+  double d = hyp.d;
+  plane.inliers = inliersOf(cloud, active, n, d, threshold);
+  plane.fit.normal = n;
+  plane.fit.offset = d;
+  for (int round = 0; round < 3 && plane.inliers.size() >= 3; ++round) {
+    const PlaneFit fit = fitPlaneLocal(cloud, plane.inliers);
+    if (!fit.valid) break;
+    auto refit = inliersOf(cloud, active, fit.normal, fit.offset, threshold);
+    if (refit.size() < plane.inliers.size()) break;
+    const bool same = refit.size() == plane.inliers.size();
+    plane.inliers.swap(refit);
+    plane.fit = fit;
+    if (same) break;
+  }
+  return plane;
+}
+
+/// `active` without `removed` (both sorted by index).
+void removeInliers(std::vector<std::uint32_t>& active, const std::vector<std::uint32_t>& removed) {
+  std::vector<std::uint32_t> rest;
+  rest.reserve(active.size() - removed.size());
+  std::set_difference(active.begin(), active.end(), removed.begin(), removed.end(),
+                      std::back_inserter(rest));
+  active.swap(rest);
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> finiteIndices(const PointCloud& cloud) {
@@ -84,87 +192,21 @@ std::vector<DetectedPlane> detectMsac(const PointCloud& cloud, std::vector<std::
   while (static_cast<int>(planes.size()) < params.max_planes &&
          active.size() >= static_cast<std::size_t>(params.min_inliers)) {
     checkCanceled(progress);
-    // Score subset (deterministic for the seed).
-    std::vector<Eigen::Vector3f> sample;
-    const std::size_t s = std::min<std::size_t>(active.size(), params.score_sample);
-    sample.reserve(s);
-    if (s == active.size()) {
-      for (auto i : active) sample.push_back(cloud.positions[i]);
-    } else {
-      std::uniform_int_distribution<std::size_t> pick(0, active.size() - 1);
-      for (std::size_t k = 0; k < s; ++k) sample.push_back(cloud.positions[active[pick(rng)]]);
-    }
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
-    std::vector<std::uint64_t> sample_cell(s);
-    for (std::size_t k = 0; k < s; ++k) {
-      sample_cell[k] = voxelKey(sample[k], local_cell);
-      cells[sample_cell[k]].push_back(static_cast<std::uint32_t>(k));
-    }
-    // Hypotheses.
-    std::vector<Hypothesis> hyps(params.iterations);
-    std::uniform_int_distribution<std::size_t> pick_s(0, s - 1);
-    for (int h = 0; h < params.iterations; ++h) {
-      for (int attempt = 0; attempt < 10 && !hyps[h].valid; ++attempt) {
-        const std::size_t a = pick_s(rng);
-        std::size_t b, c;
-        if (h % 2 == 0) {
-          const auto& cell = cells[sample_cell[a]];
-          if (cell.size() < 3) continue;
-          std::uniform_int_distribution<std::size_t> pc(0, cell.size() - 1);
-          b = cell[pc(rng)];
-          c = cell[pc(rng)];
-        } else {
-          b = pick_s(rng);
-          c = pick_s(rng);
-        }
-        if (a == b || b == c || a == c) continue;
-        hyps[h] = planeThrough(sample[a], sample[b], sample[c]);
-      }
-    }
+    const std::vector<Eigen::Vector3f> sample = drawSample(cloud, active, params.score_sample, rng);
+    SampleCells local(sample, local_cell);
+    const std::vector<Hypothesis> hyps = drawHypotheses(sample, local, params.iterations, rng);
     // Score: eq. (2) over the subset, in parallel over hypotheses.
-    std::vector<double> cost(hyps.size(), std::numeric_limits<double>::infinity());
-    tbb::parallel_for(std::size_t(0), hyps.size(), [&](std::size_t h) {
-      if (!hyps[h].valid) return;
-      const auto& hy = hyps[h];
-      double c = 0;
-      for (const auto& p : sample) {
-        const float e = hy.n.dot(p) - hy.d;
-        c += std::min(e * e, t2);
-      }
-      cost[h] = c;
-    });
-    const auto best = std::min_element(cost.begin(), cost.end()) - cost.begin();
-    if (!std::isfinite(cost[best])) break;
-    // Refit by least squares on the inliers of all remaining points; keep the refit only while
-    // it gains inliers (a hypothesis across a corner must not drift away).
-    DetectedPlane plane;
-    Eigen::Vector3d n = hyps[best].n.cast<double>();
-    double d = hyps[best].d;
-    plane.inliers = inliersOf(cloud, active, n, d, threshold);
-    plane.fit.normal = n;
-    plane.fit.offset = d;
-    for (int round = 0; round < 3 && plane.inliers.size() >= 3; ++round) {
-      const PlaneFit fit = fitPlaneLocal(cloud, plane.inliers);
-      if (!fit.valid) break;
-      auto refit = inliersOf(cloud, active, fit.normal, fit.offset, threshold);
-      if (refit.size() < plane.inliers.size()) break;
-      const bool same = refit.size() == plane.inliers.size();
-      plane.inliers.swap(refit);
-      plane.fit = fit;
-      if (same) break;
-    }
+    const std::ptrdiff_t best = cheapestHypothesis(hyps, sample, t2);
+    if (best < 0) break;
+    // Refit by least squares on the inliers of all remaining points.
+    DetectedPlane plane = refitOnInliers(cloud, active, hyps[best], threshold);
     if (plane.inliers.size() < static_cast<std::size_t>(params.min_inliers) || plane.inliers.size() < 3) {
       if (++failures >= 3) break;  // three bad draws in a row: nothing large is left
       continue;
     }
     failures = 0;
     plane.fit = fitPlaneLocal(cloud, plane.inliers);
-    // Remove inliers (both lists are sorted by index).
-    std::vector<std::uint32_t> rest;
-    rest.reserve(active.size() - plane.inliers.size());
-    std::set_difference(active.begin(), active.end(), plane.inliers.begin(), plane.inliers.end(),
-                        std::back_inserter(rest));
-    active.swap(rest);
+    removeInliers(active, plane.inliers);
     planes.push_back(std::move(plane));
     reportProgress(progress, 1.0 - double(active.size()) / double(initial), "MSAC planes");
   }

@@ -45,13 +45,8 @@ std::vector<std::uint32_t> grow(const PointCloud& cloud, const Grid& g,
   return region;
 }
 
-}  // namespace
-
-std::vector<DetectedPlane> detectSensorTopology(const PointCloud& cloud, double threshold,
-                                                const PlaneExtractionParams& params,
-                                                std::uint64_t seed, Progress* progress) {
-  if (!cloud.hasGrid())
-    throw InputError("sensor-topology RANSAC needs an organized scan (row/column per point)");
+/// The grid of every scan of the cloud, and its free (finite, gridded) points in index order.
+Grid buildGrid(const PointCloud& cloud, std::vector<std::uint32_t>& free_points) {
   Grid g;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     g.rows = std::max(g.rows, cloud.row[i] + 1);
@@ -61,7 +56,6 @@ std::vector<DetectedPlane> detectSensorTopology(const PointCloud& cloud, double 
   if (cloud.hasScanId())
     for (auto id : cloud.scan_id) scans = std::max<std::size_t>(scans, id + 1u);
   g.cell.assign(scans * g.rows * g.cols, -1);
-  std::vector<std::uint32_t> free_points;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (!cloud.positions[i].allFinite() || cloud.row[i] < 0 || cloud.column[i] < 0) continue;
     const std::size_t scan = cloud.hasScanId() ? cloud.scan_id[i] : 0;
@@ -72,72 +66,113 @@ std::vector<DetectedPlane> detectSensorTopology(const PointCloud& cloud, double 
     cell = static_cast<std::int64_t>(i);
     free_points.push_back(static_cast<std::uint32_t>(i));
   }
-  std::vector<char> used(cloud.size(), 1);
-  for (auto i : free_points) used[i] = 0;
-  std::size_t free_count = free_points.size();
-  const std::size_t initial = std::max<std::size_t>(1, free_count);
-  std::vector<int> stamp(cloud.size(), -1);
+  return g;
+}
+
+/// What the detection has used so far: points taken by planes (or small regions), the free
+/// list (compacted now and then) and the stamps of region growing.
+struct TopologyState {
+  std::vector<char> used;
+  std::vector<std::uint32_t> free_points;
+  std::size_t free_count = 0;
+  std::vector<int> stamp;
   int stamp_id = 0;
+
+  void take(const std::vector<std::uint32_t>& points) {
+    for (auto i : points) used[i] = 1;
+    free_count -= points.size();
+  }
+  /// Compact the free list now and then.
+  void compact() {
+    if (free_points.size() <= 2 * free_count) return;
+    std::vector<std::uint32_t> f;
+    for (auto i : free_points)
+      if (!used[i]) f.push_back(i);
+    free_points.swap(f);
+  }
+};
+
+/// Largest region grown from `hypotheses` planes, each through a free point and two free
+/// points of its grid window (within `w` rows and columns).
+std::vector<std::uint32_t> largestRegion(const PointCloud& cloud, const Grid& g,
+                                         TopologyState& st, int hypotheses, int w,
+                                         double threshold, std::mt19937_64& rng) {
+  std::uniform_int_distribution<std::size_t> pick(0, st.free_points.size() - 1);
+  std::uniform_int_distribution<int> off(-w, w);
+  std::vector<std::uint32_t> best;
+  for (int h = 0; h < hypotheses; ++h) {
+    std::uint32_t a = st.free_points[pick(rng)];
+    if (st.used[a]) continue;
+    std::int64_t b = -1, c = -1;
+    for (int attempt = 0; attempt < 20 && (b < 0 || c < 0 || b == c); ++attempt) {
+      const std::size_t scan = cloud.hasScanId() ? cloud.scan_id[a] : 0;
+      const auto j = g.at(scan, cloud.row[a] + off(rng), cloud.column[a] + off(rng));
+      if (j < 0 || st.used[j] || j == a) continue;
+      if (b < 0) b = j; else c = j;
+    }
+    if (b < 0 || c < 0 || b == c) continue;
+    const Eigen::Vector3d pa = cloud.positions[a].cast<double>();
+    Eigen::Vector3d n = (cloud.positions[b].cast<double>() - pa).cross(cloud.positions[c].cast<double>() - pa);
+    if (n.norm() < 1e-12) continue;
+    n.normalize();
+    auto region = grow(cloud, g, st.used, a, n, n.dot(pa), threshold, st.stamp, st.stamp_id++);
+    if (region.size() > best.size()) best.swap(region);
+  }
+  return best;
+}
+
+/// The region refitted by least squares, regrown from its first point, refitted again.
+DetectedPlane refitRegion(const PointCloud& cloud, const Grid& g, TopologyState& st,
+                          const std::vector<std::uint32_t>& region, double threshold) {
+  DetectedPlane plane;
+  plane.fit = fitPlaneLocal(cloud, region);
+  if (plane.fit.valid) {
+    plane.inliers = grow(cloud, g, st.used, region[0], plane.fit.normal, plane.fit.offset, threshold,
+                         st.stamp, st.stamp_id++);
+    if (plane.inliers.size() >= 3) plane.fit = fitPlaneLocal(cloud, plane.inliers);
+  }
+  return plane;
+}
+
+}  // namespace
+
+std::vector<DetectedPlane> detectSensorTopology(const PointCloud& cloud, double threshold,
+                                                const PlaneExtractionParams& params,
+                                                std::uint64_t seed, Progress* progress) {
+  if (!cloud.hasGrid())
+    throw InputError("sensor-topology RANSAC needs an organized scan (row/column per point)");
+  TopologyState st;
+  const Grid g = buildGrid(cloud, st.free_points);
+  st.used.assign(cloud.size(), 1);
+  for (auto i : st.free_points) st.used[i] = 0;
+  st.free_count = st.free_points.size();
+  const std::size_t initial = std::max<std::size_t>(1, st.free_count);
+  st.stamp.assign(cloud.size(), -1);
   std::mt19937_64 rng(seed);
   const int hypotheses = std::max(20, params.iterations / 8);
-  const int w = params.grid_window;
   std::vector<DetectedPlane> planes;
   int failures = 0;
   while (static_cast<int>(planes.size()) < params.max_planes &&
-         free_count >= static_cast<std::size_t>(params.min_inliers) && failures < 5) {
+         st.free_count >= static_cast<std::size_t>(params.min_inliers) && failures < 5) {
     checkCanceled(progress);
-    // Compact the free list now and then.
-    if (free_points.size() > 2 * free_count) {
-      std::vector<std::uint32_t> f;
-      for (auto i : free_points)
-        if (!used[i]) f.push_back(i);
-      free_points.swap(f);
-    }
-    std::uniform_int_distribution<std::size_t> pick(0, free_points.size() - 1);
-    std::uniform_int_distribution<int> off(-w, w);
-    std::vector<std::uint32_t> best;
-    for (int h = 0; h < hypotheses; ++h) {
-      std::uint32_t a = free_points[pick(rng)];
-      if (used[a]) continue;
-      std::int64_t b = -1, c = -1;
-      for (int attempt = 0; attempt < 20 && (b < 0 || c < 0 || b == c); ++attempt) {
-        const std::size_t scan = cloud.hasScanId() ? cloud.scan_id[a] : 0;
-        const auto j = g.at(scan, cloud.row[a] + off(rng), cloud.column[a] + off(rng));
-        if (j < 0 || used[j] || j == a) continue;
-        if (b < 0) b = j; else c = j;
-      }
-      if (b < 0 || c < 0 || b == c) continue;
-      const Eigen::Vector3d pa = cloud.positions[a].cast<double>();
-      Eigen::Vector3d n = (cloud.positions[b].cast<double>() - pa).cross(cloud.positions[c].cast<double>() - pa);
-      if (n.norm() < 1e-12) continue;
-      n.normalize();
-      auto region = grow(cloud, g, used, a, n, n.dot(pa), threshold, stamp, stamp_id++);
-      if (region.size() > best.size()) best.swap(region);
-    }
+    st.compact();
+    const auto best = largestRegion(cloud, g, st, hypotheses, params.grid_window, threshold, rng);
     if (best.size() < 3) {
       ++failures;
       continue;
     }
-    DetectedPlane plane;
-    plane.fit = fitPlaneLocal(cloud, best);
-    if (plane.fit.valid) {
-      plane.inliers = grow(cloud, g, used, best[0], plane.fit.normal, plane.fit.offset, threshold,
-                           stamp, stamp_id++);
-      if (plane.inliers.size() >= 3) plane.fit = fitPlaneLocal(cloud, plane.inliers);
-    }
+    DetectedPlane plane = refitRegion(cloud, g, st, best, threshold);
     if (!plane.fit.valid || plane.inliers.size() < static_cast<std::size_t>(params.min_inliers)) {
       // Mark the small region used so it is not drawn again, count a failure.
-      for (auto i : best) used[i] = 1;
-      free_count -= best.size();
+      st.take(best);
       ++failures;
       continue;
     }
     failures = 0;
-    for (auto i : plane.inliers) used[i] = 1;
-    free_count -= plane.inliers.size();
+    st.take(plane.inliers);
     std::sort(plane.inliers.begin(), plane.inliers.end());
     planes.push_back(std::move(plane));
-    reportProgress(progress, 1.0 - double(free_count) / double(initial), "topology planes");
+    reportProgress(progress, 1.0 - double(st.free_count) / double(initial), "topology planes");
   }
   return planes;
 }

@@ -22,13 +22,14 @@ std::vector<Eigen::Vector3d> DirectionClusteringResult::directions() const {
   return d;
 }
 
-DirectionClusteringResult clusterDirections(const std::vector<DirectionItem>& items,
-                                            const DirectionClusteringParams& p) {
-  DirectionClusteringResult r;
-  r.cluster_of_item.assign(items.size(), -1);
-  const double cos_tol = std::cos(p.angle_tolerance_deg * M_PI / 180.0);
+namespace {
+
+/// Items with a usable direction (finite, non-zero, positive weight), as unit vectors, in
+/// decreasing weight (inliers / length), ties by index: deterministic.
+std::vector<int> usableByWeight(const std::vector<DirectionItem>& items,
+                                std::vector<Eigen::Vector3d>& unit) {
   std::vector<int> order;
-  std::vector<Eigen::Vector3d> unit(items.size());
+  unit.resize(items.size());
   for (std::size_t i = 0; i < items.size(); ++i) {
     const double n = items[i].direction.norm();
     if (n > 0 && std::isfinite(n) && items[i].weight > 0) {
@@ -36,16 +37,24 @@ DirectionClusteringResult clusterDirections(const std::vector<DirectionItem>& it
       order.push_back(int(i));
     }
   }
-  // Decreasing weight (inliers / length), ties by index: deterministic.
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return items[a].weight > items[b].weight; });
-  // Seeds: heaviest item, then the heaviest one farther than theta from every seed (|.|).
-  struct Acc {
-    Eigen::Vector3d ref, sum;
-  };
-  std::vector<Acc> acc;
+  return order;
+}
+
+/// A cluster's seed direction and the weighted sum of its sign-aligned members.
+struct Accumulator {
+  Eigen::Vector3d ref, sum;
+};
+
+/// Seeds: heaviest item, then the heaviest one farther than theta from every seed (|.|).
+std::vector<Accumulator> seedClusters(const std::vector<DirectionItem>& items,
+                                      const std::vector<Eigen::Vector3d>& unit,
+                                      const std::vector<int>& order, double cos_tol,
+                                      int max_clusters, DirectionClusteringResult& r) {
+  std::vector<Accumulator> acc;
   for (int i : order) {
-    if (int(acc.size()) >= p.max_clusters) break;
+    if (int(acc.size()) >= max_clusters) break;
     bool far = true;
     for (const auto& a : acc)
       if (std::abs(unit[i].dot(a.ref)) >= cos_tol) far = false;
@@ -54,8 +63,14 @@ DirectionClusteringResult clusterDirections(const std::vector<DirectionItem>& it
     r.clusters.push_back({unit[i], items[i].weight, {i}});
     r.cluster_of_item[i] = int(r.clusters.size()) - 1;
   }
-  // Remaining items by decreasing weight join the closest cluster within theta; the cluster
-  // direction is the weighted mean with members flipped to agree with the seed (2023 step 5).
+  return acc;
+}
+
+/// Remaining items by decreasing weight join the closest cluster within theta; the cluster
+/// direction is the weighted mean with members flipped to agree with the seed (2023 step 5).
+void joinClusters(const std::vector<DirectionItem>& items, const std::vector<Eigen::Vector3d>& unit,
+                  const std::vector<int>& order, double cos_tol, std::vector<Accumulator>& acc,
+                  DirectionClusteringResult& r) {
   for (int i : order) {
     if (r.cluster_of_item[i] >= 0) continue;
     int best = -1;
@@ -76,7 +91,10 @@ DirectionClusteringResult clusterDirections(const std::vector<DirectionItem>& it
     c.members.push_back(i);
     r.cluster_of_item[i] = best;
   }
-  // Heaviest cluster first (stable), remapping indices.
+}
+
+/// Heaviest cluster first (stable), remapping indices.
+void sortByWeight(DirectionClusteringResult& r) {
   std::vector<int> perm(r.clusters.size());
   std::iota(perm.begin(), perm.end(), 0);
   std::stable_sort(perm.begin(), perm.end(),
@@ -90,7 +108,11 @@ DirectionClusteringResult clusterDirections(const std::vector<DirectionItem>& it
   r.clusters = std::move(sorted);
   for (auto& c : r.cluster_of_item)
     if (c >= 0) c = inv[c];
-  // Canonical sign: the larger of |z|, |x|, |y| component positive, so directions are stable.
+}
+
+/// Canonical sign: the larger of |z|, |x|, |y| component positive, so directions are stable.
+/// Then the horizontal cluster: the one with the largest |z| (the normal of horizontal planes).
+void canonicalSignsAndHorizontal(DirectionClusteringResult& r) {
   for (auto& c : r.clusters) {
     Eigen::Index k;
     c.direction.cwiseAbs().maxCoeff(&k);
@@ -104,6 +126,21 @@ DirectionClusteringResult clusterDirections(const std::vector<DirectionItem>& it
       r.horizontal = int(k);
     }
   }
+}
+
+}  // namespace
+
+DirectionClusteringResult clusterDirections(const std::vector<DirectionItem>& items,
+                                            const DirectionClusteringParams& p) {
+  DirectionClusteringResult r;
+  r.cluster_of_item.assign(items.size(), -1);
+  const double cos_tol = std::cos(p.angle_tolerance_deg * M_PI / 180.0);
+  std::vector<Eigen::Vector3d> unit;
+  const std::vector<int> order = usableByWeight(items, unit);
+  std::vector<Accumulator> acc = seedClusters(items, unit, order, cos_tol, p.max_clusters, r);
+  joinClusters(items, unit, order, cos_tol, acc, r);
+  sortByWeight(r);
+  canonicalSignsAndHorizontal(r);
   return r;
 }
 

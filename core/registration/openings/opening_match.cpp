@@ -14,6 +14,141 @@ std::vector<Segment3D> edgesOf(const std::vector<OrientedOpening>& v) {
     for (const auto& e : o.edges) out.push_back(e);
   return out;
 }
+
+/// Normal equations of one least-squares step in x = (yaw about c, t), with the weighted
+/// squared residuals of the point-to-line rows.
+struct YawTranslationSystem {
+  Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d b = Eigen::Vector4d::Zero();
+  double sq = 0.0, wsum = 0.0;
+};
+
+/// Mean midpoint of the matched edges (the centre of the yaw).
+Eigen::Vector3d matchCentre(const std::vector<ThickEdgeMatch>& matches) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const auto& m : matches) c += 0.5 * (m.a + m.b);
+  c /= double(matches.size());
+  return c;
+}
+
+/// Rows of both endpoints of every match: residual r = P (q - p) - P (z x (p - c)) yaw - P dt.
+void addPointToLineRows(const std::vector<ThickEdgeMatch>& matches,
+                        const std::vector<Segment3D>& target_edges, const Eigen::Vector3d& c,
+                        YawTranslationSystem& sys) {
+  for (const auto& m : matches) {
+    const Segment3D& q = target_edges[m.target_edge];
+    const Eigen::Vector3d dir = (q.b - q.a).normalized();
+    // Point-to-line (2023 eq. 11, A = I - d d^T) without the façade-normal component.
+    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - dir * dir.transpose() -
+                              m.facade_normal * m.facade_normal.transpose();
+    for (const Eigen::Vector3d& p : {m.a, m.b}) {
+      const Eigen::Vector3d r = P * (q.a - p);
+      Eigen::Matrix<double, 3, 4> J;
+      J.col(0) = P * Eigen::Vector3d::UnitZ().cross(p - c);
+      J.rightCols<3>() = P;
+      sys.A += m.similarity * J.transpose() * J;
+      sys.b += m.similarity * J.transpose() * r;
+      sys.sq += m.similarity * r.squaredNorm();
+      sys.wsum += m.similarity;
+    }
+  }
+}
+
+/// Façade group of each match: normals within 30° and target edges within 2d of the plane
+/// of the group's first edge. Returns the number of groups.
+int facadeGroups(const std::vector<ThickEdgeMatch>& matches,
+                 const std::vector<Segment3D>& target_edges, double d, std::vector<int>& group) {
+  group.assign(matches.size(), -1);
+  int groups = 0;
+  for (std::size_t i = 0; i < matches.size(); ++i) {
+    if (group[i] >= 0) continue;
+    group[i] = groups;
+    const auto& mi = matches[i];
+    const Segment3D& qi = target_edges[mi.target_edge];
+    for (std::size_t j = i + 1; j < matches.size(); ++j) {
+      const auto& mj = matches[j];
+      if (group[j] < 0 && mi.facade_normal.dot(mj.facade_normal) > std::cos(M_PI / 6) &&
+          std::abs(mi.facade_normal.dot(target_edges[mj.target_edge].a - qi.a)) < 2 * d)
+        group[j] = groups;
+    }
+    ++groups;
+  }
+  return groups;
+}
+
+/// Openings on one façade lie in one plane whatever the wall thickness: the spread of their
+/// normal offsets about the façade's mean offset observes the yaw (the zero-thickness
+/// placement of the paper, with the common thickness eliminated per façade).
+void addCoplanarityRows(const std::vector<ThickEdgeMatch>& matches,
+                        const std::vector<Segment3D>& target_edges, const Eigen::Vector3d& c,
+                        double d, YawTranslationSystem& sys) {
+  std::vector<int> group;
+  const int groups = facadeGroups(matches, target_edges, d, group);
+  for (int g = 0; g < groups; ++g) {
+    double mr = 0.0, mj = 0.0, w = 0.0;
+    std::vector<std::tuple<double, double, double>> rows;  // residual, d/dyaw, weight
+    for (std::size_t i = 0; i < matches.size(); ++i) {
+      if (group[i] != g) continue;
+      const auto& m = matches[i];
+      const Segment3D& q = target_edges[m.target_edge];
+      for (const Eigen::Vector3d& p : {m.a, m.b}) {
+        // Before the per-opening move onto the façade face (the move would hide the yaw).
+        const double r = m.facade_normal.dot(q.a - p) + m.thickness;
+        const double jy = m.facade_normal.dot(Eigen::Vector3d::UnitZ().cross(p - c));
+        rows.emplace_back(r, jy, m.similarity);
+        mr += m.similarity * r;
+        mj += m.similarity * jy;
+        w += m.similarity;
+      }
+    }
+    if (rows.size() < 4 || w <= 0) continue;
+    mr /= w;
+    mj /= w;
+    for (const auto& [r, jy, wt] : rows) {
+      sys.A(0, 0) += wt * (jy - mj) * (jy - mj);
+      sys.b(0) += wt * (jy - mj) * (r - mr);
+    }
+  }
+}
+
+/// Whether the matches lie on non-parallel façades (normals more than 30° apart).
+bool twoFacadeDirections(const std::vector<ThickEdgeMatch>& matches) {
+  bool two_directions = false;
+  for (const auto& m : matches)
+    if (std::abs(m.facade_normal.dot(matches.front().facade_normal)) < std::cos(M_PI / 6))
+      two_directions = true;
+  return two_directions;
+}
+
+/// The step x = (yaw, t). The yaw is only observable with openings on non-parallel façades
+/// (on one façade it moves the edges along the façade normal, which is free). Without it,
+/// the translation alone, minimum-norm: no motion along an unconstrained direction. False
+/// when the system is not determined.
+bool solveYawTranslation(const YawTranslationSystem& sys, bool two_directions,
+                         Eigen::Vector4d& x) {
+  const Eigen::Matrix4d& A = sys.A;
+  const Eigen::Vector4d& b = sys.b;
+  x = Eigen::Vector4d::Zero();
+  if (two_directions) {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> es(A);
+    if (es.eigenvalues()(0) < 1e-6 * es.eigenvalues()(3)) return false;
+    x = A.ldlt().solve(b);
+  } else if (A(0, 0) > 0.0) {
+    // One façade: yaw from the coplanarity rows, then the in-plane translation (min-norm).
+    x(0) = b(0) / A(0, 0);
+    const Eigen::Matrix3d At = A.bottomRightCorner<3, 3>();
+    Eigen::JacobiSVD<Eigen::Matrix3d> svd(At, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    svd.setThreshold(1e-3);
+    x.tail<3>() = svd.solve(b.tail<3>() - A.block<3, 1>(1, 0) * x(0));
+  } else {
+    const Eigen::Matrix3d At = A.bottomRightCorner<3, 3>();
+    Eigen::JacobiSVD<Eigen::Matrix3d> svd(At, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    svd.setThreshold(1e-3);
+    x.tail<3>() = svd.solve(b.tail<3>());
+  }
+  return true;
+}
+
 }  // namespace
 
 std::vector<OrientedOpening> orientedOpenings(const FeatureSet& f, double vertical_tolerance_deg) {
@@ -103,102 +238,15 @@ RigidTransform ThickOpeningMatcher::polish(const std::vector<OrientedOpening>& s
   for (int it = 0; it < iterations; ++it) {
     const ThickScore s = score(source, t, true);
     if (s.matches.empty()) break;
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (const auto& m : s.matches) c += 0.5 * (m.a + m.b);
-    c /= double(s.matches.size());
+    const Eigen::Vector3d c = matchCentre(s.matches);
     // Unknowns x = (yaw about c, t): residual r = P (q - p) - P (z x (p - c)) yaw - P dt.
-    Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
-    Eigen::Vector4d b = Eigen::Vector4d::Zero();
-    double sq = 0.0, wsum = 0.0;
-    for (const auto& m : s.matches) {
-      const Segment3D& q = index_.segments()[m.target_edge];
-      const Eigen::Vector3d dir = (q.b - q.a).normalized();
-      // Point-to-line (2023 eq. 11, A = I - d d^T) without the façade-normal component.
-      const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - dir * dir.transpose() -
-                                m.facade_normal * m.facade_normal.transpose();
-      for (const Eigen::Vector3d& p : {m.a, m.b}) {
-        const Eigen::Vector3d r = P * (q.a - p);
-        Eigen::Matrix<double, 3, 4> J;
-        J.col(0) = P * Eigen::Vector3d::UnitZ().cross(p - c);
-        J.rightCols<3>() = P;
-        A += m.similarity * J.transpose() * J;
-        b += m.similarity * J.transpose() * r;
-        sq += m.similarity * r.squaredNorm();
-        wsum += m.similarity;
-      }
-    }
-    // Openings on one façade lie in one plane whatever the wall thickness: the spread of their
-    // normal offsets about the façade's mean offset observes the yaw (the zero-thickness
-    // placement of the paper, with the common thickness eliminated per façade).
-    {
-      std::vector<int> group(s.matches.size(), -1);
-      int groups = 0;
-      for (std::size_t i = 0; i < s.matches.size(); ++i) {
-        if (group[i] >= 0) continue;
-        group[i] = groups;
-        const auto& mi = s.matches[i];
-        const Segment3D& qi = index_.segments()[mi.target_edge];
-        for (std::size_t j = i + 1; j < s.matches.size(); ++j) {
-          const auto& mj = s.matches[j];
-          if (group[j] < 0 && mi.facade_normal.dot(mj.facade_normal) > std::cos(M_PI / 6) &&
-              std::abs(mi.facade_normal.dot(index_.segments()[mj.target_edge].a - qi.a)) < 2 * d_)
-            group[j] = groups;
-        }
-        ++groups;
-      }
-      for (int g = 0; g < groups; ++g) {
-        double mr = 0.0, mj = 0.0, w = 0.0;
-        std::vector<std::tuple<double, double, double>> rows;  // residual, d/dyaw, weight
-        for (std::size_t i = 0; i < s.matches.size(); ++i) {
-          if (group[i] != g) continue;
-          const auto& m = s.matches[i];
-          const Segment3D& q = index_.segments()[m.target_edge];
-          for (const Eigen::Vector3d& p : {m.a, m.b}) {
-            // Before the per-opening move onto the façade face (the move would hide the yaw).
-            const double r = m.facade_normal.dot(q.a - p) + m.thickness;
-            const double jy = m.facade_normal.dot(Eigen::Vector3d::UnitZ().cross(p - c));
-            rows.emplace_back(r, jy, m.similarity);
-            mr += m.similarity * r;
-            mj += m.similarity * jy;
-            w += m.similarity;
-          }
-        }
-        if (rows.size() < 4 || w <= 0) continue;
-        mr /= w;
-        mj /= w;
-        for (const auto& [r, jy, wt] : rows) {
-          A(0, 0) += wt * (jy - mj) * (jy - mj);
-          b(0) += wt * (jy - mj) * (r - mr);
-        }
-      }
-    }
-    if (rms) *rms = wsum > 0 ? std::sqrt(sq / wsum) : 0.0;
-    if (wsum <= 0) break;
-    // The yaw is only observable with openings on non-parallel façades (on one façade it moves
-    // the edges along the façade normal, which is free). Without it, solve the translation
-    // alone, minimum-norm: no motion along an unconstrained direction.
-    bool two_directions = false;
-    for (const auto& m : s.matches)
-      if (std::abs(m.facade_normal.dot(s.matches.front().facade_normal)) < std::cos(M_PI / 6))
-        two_directions = true;
-    Eigen::Vector4d x = Eigen::Vector4d::Zero();
-    if (two_directions) {
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> es(A);
-      if (es.eigenvalues()(0) < 1e-6 * es.eigenvalues()(3)) break;
-      x = A.ldlt().solve(b);
-    } else if (A(0, 0) > 0.0) {
-      // One façade: yaw from the coplanarity rows, then the in-plane translation (min-norm).
-      x(0) = b(0) / A(0, 0);
-      const Eigen::Matrix3d At = A.bottomRightCorner<3, 3>();
-      Eigen::JacobiSVD<Eigen::Matrix3d> svd(At, Eigen::ComputeFullU | Eigen::ComputeFullV);
-      svd.setThreshold(1e-3);
-      x.tail<3>() = svd.solve(b.tail<3>() - A.block<3, 1>(1, 0) * x(0));
-    } else {
-      const Eigen::Matrix3d At = A.bottomRightCorner<3, 3>();
-      Eigen::JacobiSVD<Eigen::Matrix3d> svd(At, Eigen::ComputeFullU | Eigen::ComputeFullV);
-      svd.setThreshold(1e-3);
-      x.tail<3>() = svd.solve(b.tail<3>());
-    }
+    YawTranslationSystem sys;
+    addPointToLineRows(s.matches, index_.segments(), c, sys);
+    addCoplanarityRows(s.matches, index_.segments(), c, d_, sys);
+    if (rms) *rms = sys.wsum > 0 ? std::sqrt(sys.sq / sys.wsum) : 0.0;
+    if (sys.wsum <= 0) break;
+    Eigen::Vector4d x;
+    if (!solveYawTranslation(sys, twoFacadeDirections(s.matches), x)) break;
     const Eigen::Matrix3d dR = Eigen::AngleAxisd(x(0), Eigen::Vector3d::UnitZ()).toRotationMatrix();
     t = RigidTransform(dR * t.rotation(), dR * (t.translation() - c) + c + x.tail<3>());
     if (std::abs(x(0)) < 1e-7 && x.tail<3>().norm() < 1e-5) break;

@@ -3,10 +3,12 @@
 #include <Eigen/SVD>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <sstream>
 
+#include "registration/planes/plane_hypotheses.hpp"
 #include "registration/planes/polygon_raster.hpp"
 
 namespace plumb {
@@ -219,6 +221,187 @@ double planeSimilarity(const std::vector<PlanarPolygon>& source,
                     p.oriented_normals, nullptr);
 }
 
+namespace planes_registration_detail {
+
+Associations independentAssociations(const DirectionClusteringResult& cs,
+                                     const RotationCandidate& rot) {
+  Associations out;
+  std::vector<int>& chosen = out.clusters;
+  std::vector<Eigen::Vector3d>& dirs = out.directions;
+  for (std::size_t k = 0; k < cs.clusters.size(); ++k) {
+    if (rot.target_of_source[k] < 0) continue;
+    const Eigen::Vector3d c = rot.rotation * cs.clusters[k].direction;
+    if (chosen.size() == 1 && std::abs(c.dot(dirs[0])) > std::cos(M_PI / 6)) continue;
+    if (chosen.size() == 2 &&
+        std::abs(c.dot(dirs[0].cross(dirs[1]).normalized())) < std::sin(M_PI / 6))
+      continue;
+    if (chosen.size() < 3) {
+      chosen.push_back(int(k));
+      dirs.push_back(c);
+    }
+  }
+  return out;
+}
+
+std::optional<Eigen::Vector3d> solveTranslation(const Eigen::Matrix3d& N, const Eigen::Vector3d& rhs,
+                                                double min_conditioning) {
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(N, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const auto sv = svd.singularValues();
+  if (sv(2) < min_conditioning * sv(0)) return std::nullopt;
+  return Eigen::Vector3d(svd.solve(rhs));
+}
+
+}  // namespace planes_registration_detail
+
+namespace {
+
+using planes_registration_detail::Associations;
+
+/// Eq. 10 (similarity) between the prepared polygons of both sides under a transform.
+struct Scorer {
+  const Prepared& src;
+  const Prepared& tgt;
+  double d_thr, cos_tol;
+  bool oriented;
+  double operator()(const RigidTransform& T, std::vector<PairMatch>* matches = nullptr,
+                    bool coarse = false) const {
+    return similarity(src, tgt, T, d_thr, cos_tol, oriented, matches, coarse);
+  }
+};
+
+/// Explains why the inputs cannot determine a transform (too few polygons or normal
+/// directions); false then.
+bool enoughPolygons(const Prepared& src, const Prepared& tgt, const PlaneRegistrationParams& p,
+                    GlobalRegistrationResult& r) {
+  if (src.polys.size() >= 3 && tgt.polys.size() >= 3) return true;
+  r.status = RegistrationStatus::TooFewFeatures;
+  r.message = "planes: need at least 3 polygons larger than " +
+              std::to_string(p.min_polygon_area) + " m^2 in each dataset (source has " +
+              std::to_string(src.polys.size()) + ", target " + std::to_string(tgt.polys.size()) +
+              ")";
+  return false;
+}
+
+bool enoughDirections(const DirectionClusteringResult& cs, const DirectionClusteringResult& ct,
+                      GlobalRegistrationResult& r) {
+  if (cs.clusters.size() >= 3 && ct.clusters.size() >= 3) return true;  // 3 independent normals
+  r.status = RegistrationStatus::TooFewFeatures;
+  r.message = "planes: the polygons span fewer than three normal directions (source " +
+              std::to_string(cs.clusters.size()) + ", target " +
+              std::to_string(ct.clusters.size()) +
+              "), so the translation is not determined by planes";
+  return false;
+}
+
+/// Eq. 22 from the three representative pairs of offset modes; nothing when ill-conditioned.
+std::optional<Eigen::Vector3d> translationOf(const Prepared& src, const Prepared& tgt,
+                                             const Eigen::Matrix3d& R,
+                                             const std::array<const OffsetMode*, 3>& modes,
+                                             double min_conditioning) {
+  Eigen::Matrix3d N;
+  Eigen::Vector3d rhs;
+  int row = 0;
+  for (const OffsetMode* m : modes) {
+    const auto& ps = *src.polys[m->s];
+    const auto& pt = *tgt.polys[m->t];
+    const Eigen::Vector3d n1 = R * ps.normal;
+    const double s = n1.dot(pt.normal) >= 0 ? 1.0 : -1.0;
+    N.row(row) = n1.transpose();
+    rhs(row) = s * pt.offset - ps.offset;  // eq. 21, sign-corrected
+    ++row;
+  }
+  return planes_registration_detail::solveTranslation(N, rhs, min_conditioning);
+}
+
+/// The clusters of both sides and the parameters every hypothesis step shares.
+struct HypothesisContext {
+  const Scorer& score;
+  const DirectionClusteringResult& cs;
+  const DirectionClusteringResult& ct;
+  const PlaneRegistrationParams& p;
+};
+
+/// Hypotheses of one rotation, pre-scored with coarse overlap samples (stage 1): offset
+/// modes of three independent associations, every triple of modes solved by eq. 22.
+void prescoreRotation(const HypothesisContext& c, const RotationCandidate& rot,
+                      std::vector<Hypothesis>& prescored, std::size_t& ill_conditioned) {
+  const Prepared& src = c.score.src;
+  const Prepared& tgt = c.score.tgt;
+  const auto& p = c.p;
+  // Three associations with independent directions: the heaviest matched cluster, the
+  // heaviest one at least 30° from it, and the heaviest one best out of their plane.
+  const Associations a = planes_registration_detail::independentAssociations(c.cs, rot);
+  std::vector<std::vector<OffsetMode>> modes;
+  for (std::size_t q = 0; q < a.clusters.size(); ++q) {
+    const int k = a.clusters[q];
+    modes.push_back(offsetModes(src, c.cs.clusters[k].members, tgt,
+                                c.ct.clusters[rot.target_of_source[k]].members, rot.rotation,
+                                a.directions[q], p.distance_threshold, p.modes_per_association,
+                                p.oriented_normals));
+  }
+  if (modes.size() < 3) return;
+  for (const auto& m0 : modes[0])
+    for (const auto& m1 : modes[1])
+      for (const auto& m2 : modes[2]) {
+        const auto t = translationOf(src, tgt, rot.rotation, {&m0, &m1, &m2}, p.min_conditioning);
+        if (!t) {
+          ++ill_conditioned;
+          continue;
+        }
+        const RigidTransform T(rot.rotation, *t);
+        // Stage 1: eq. 10 with coarse overlap samples.
+        prescored.push_back({T, c.score(T, nullptr, true), rot.label});
+      }
+}
+
+/// Stage 2: eq. 10 with full overlap samples on the best pre-scored hypotheses.
+HypothesisRanking rescoreBest(const Scorer& score, std::vector<Hypothesis> prescored,
+                              const PlaneRegistrationParams& p) {
+  HypothesisRanking ranking(2.0, std::max(0.3, 5 * p.distance_threshold));
+  std::stable_sort(prescored.begin(), prescored.end(),
+                   [](const Hypothesis& a, const Hypothesis& b) { return a.score > b.score; });
+  if (prescored.size() > std::size_t(p.rescored_hypotheses)) prescored.resize(p.rescored_hypotheses);
+  for (auto& h : prescored) {
+    h.score = score(h.transform);
+    ranking.add(h);
+  }
+  return ranking;
+}
+
+/// Least-squares polish on the matched pairs while it keeps the score (within 0.1%).
+RigidTransform polishOnMatches(const Scorer& score, RigidTransform T, int iterations,
+                               double best_score) {
+  for (int it = 0; it < iterations; ++it) {
+    std::vector<PairMatch> m;
+    score(T, &m);
+    const RigidTransform U = polish(score.src, score.tgt, T, m);
+    if (score(U) < best_score * 0.999) break;
+    T = U;
+  }
+  return T;
+}
+
+/// Score, matched source polygons and plane RMS (eq. 21 residuals) of the final transform.
+void measureFinal(const Scorer& score, const RigidTransform& T, GlobalRegistrationResult& r) {
+  std::vector<PairMatch> m;
+  r.score = score(T, &m);
+  r.transform = T;
+  std::vector<bool> matched(score.src.polys.size(), false);
+  double sq = 0.0, wsum = 0.0;
+  for (const auto& k : m) {
+    matched[k.s] = true;
+    const double e = score.tgt.polys[k.t]->normal.dot(T.apply(score.src.polys[k.s]->centroid)) -
+                     score.tgt.polys[k.t]->offset;
+    sq += k.weight * e * e;
+    wsum += k.weight;
+  }
+  r.inlier_features = std::count(matched.begin(), matched.end(), true);
+  r.feature_rms = wsum > 0 ? std::sqrt(sq / wsum) : 0.0;
+  if (r.runner_up && r.score > 0) r.relative_gap = (r.score - r.runner_up->score) / r.score;
+}
+
+}  // namespace
+
 GlobalRegistrationResult registerPlanes(const std::vector<PlanarPolygon>& source_in,
                                         const std::vector<PlanarPolygon>& target_in,
                                         const PlaneRegistrationParams& p, Progress* progress) {
@@ -230,124 +413,28 @@ GlobalRegistrationResult registerPlanes(const std::vector<PlanarPolygon>& source
   reportProgress(progress, 0.0, "planes: rasterising polygons");
   const Prepared src = prepare(source_in, p);
   const Prepared tgt = prepare(target_in, p);
-  if (src.polys.size() < 3 || tgt.polys.size() < 3) {
-    r.status = RegistrationStatus::TooFewFeatures;
-    r.message = "planes: need at least 3 polygons larger than " +
-                std::to_string(p.min_polygon_area) + " m^2 in each dataset (source has " +
-                std::to_string(src.polys.size()) + ", target " + std::to_string(tgt.polys.size()) +
-                ")";
-    return r;
-  }
+  if (!enoughPolygons(src, tgt, p, r)) return r;
   const auto cs = clusterPlaneNormals(collect(src), p.clustering);
   const auto ct = clusterPlaneNormals(collect(tgt), p.clustering);
-  if (cs.clusters.size() < 3 || ct.clusters.size() < 3) {  // need 3 independent normals
-    r.status = RegistrationStatus::TooFewFeatures;
-    r.message = "planes: the polygons span fewer than three normal directions (source " +
-                std::to_string(cs.clusters.size()) + ", target " +
-                std::to_string(ct.clusters.size()) +
-                "), so the translation is not determined by planes";
-    return r;
-  }
+  if (!enoughDirections(cs, ct, r)) return r;
   RotationEnumerationParams rp = p.rotations;
   rp.angle_tolerance_deg = p.clustering.angle_tolerance_deg;
   const auto rotations = enumerateRotations(cs.directions(), ct.directions(), rp);
-  const double cos_tol = std::cos(p.clustering.angle_tolerance_deg * M_PI / 180.0);
-  HypothesisRanking ranking(2.0, std::max(0.3, 5 * p.distance_threshold));
+  const Scorer score{src, tgt, p.distance_threshold,
+                     std::cos(p.clustering.angle_tolerance_deg * M_PI / 180.0), p.oriented_normals};
+  const HypothesisContext context{score, cs, ct, p};
   std::size_t ill_conditioned = 0;
   std::vector<Hypothesis> prescored;
   for (std::size_t ri = 0; ri < rotations.size(); ++ri) {
     checkCanceled(progress);
     reportProgress(progress, 0.05 + 0.85 * double(ri) / std::max<std::size_t>(1, rotations.size()),
                    "planes: scoring hypotheses");
-    const auto& rot = rotations[ri];
-    // Three associations with independent directions: the heaviest matched cluster, the
-    // heaviest one at least 30° from it, and the heaviest one best out of their plane.
-    std::vector<int> chosen;
-    std::vector<Eigen::Vector3d> dirs;
-    for (std::size_t k = 0; k < cs.clusters.size(); ++k) {
-      if (rot.target_of_source[k] < 0) continue;
-      const Eigen::Vector3d c = rot.rotation * cs.clusters[k].direction;
-      if (chosen.size() == 1 && std::abs(c.dot(dirs[0])) > std::cos(M_PI / 6)) continue;
-      if (chosen.size() == 2 &&
-          std::abs(c.dot(dirs[0].cross(dirs[1]).normalized())) < std::sin(M_PI / 6))
-        continue;
-      if (chosen.size() < 3) {
-        chosen.push_back(int(k));
-        dirs.push_back(c);
-      }
-    }
-    std::vector<std::vector<OffsetMode>> modes;
-    for (std::size_t q = 0; q < chosen.size(); ++q) {
-      const int k = chosen[q];
-      modes.push_back(offsetModes(src, cs.clusters[k].members, tgt,
-                                  ct.clusters[rot.target_of_source[k]].members, rot.rotation,
-                                  dirs[q], p.distance_threshold, p.modes_per_association,
-                                  p.oriented_normals));
-    }
-    if (modes.size() < 3) continue;
-    for (const auto& m0 : modes[0])
-      for (const auto& m1 : modes[1])
-        for (const auto& m2 : modes[2]) {
-          // Eq. 22 from the three representative pairs.
-          Eigen::Matrix3d N;
-          Eigen::Vector3d rhs;
-          int row = 0;
-          for (const OffsetMode* m : {&m0, &m1, &m2}) {
-            const auto& ps = *src.polys[m->s];
-            const auto& pt = *tgt.polys[m->t];
-            const Eigen::Vector3d n1 = rot.rotation * ps.normal;
-            const double s = n1.dot(pt.normal) >= 0 ? 1.0 : -1.0;
-            N.row(row) = n1.transpose();
-            rhs(row) = s * pt.offset - ps.offset;  // eq. 21, sign-corrected
-            ++row;
-          }
-          Eigen::JacobiSVD<Eigen::Matrix3d> svd(N, Eigen::ComputeFullU | Eigen::ComputeFullV);
-          const auto sv = svd.singularValues();
-          if (sv(2) < p.min_conditioning * sv(0)) {
-            ++ill_conditioned;
-            continue;
-          }
-          const RigidTransform T(rot.rotation, svd.solve(rhs));
-          // Stage 1: eq. 10 with coarse overlap samples.
-          const double score =
-              similarity(src, tgt, T, p.distance_threshold, cos_tol, p.oriented_normals, nullptr, true);
-          prescored.push_back({T, score, rot.label});
-        }
+    prescoreRotation(context, rotations[ri], prescored, ill_conditioned);
   }
-  // Stage 2: eq. 10 with full overlap samples on the best pre-scored hypotheses.
-  std::stable_sort(prescored.begin(), prescored.end(),
-                   [](const Hypothesis& a, const Hypothesis& b) { return a.score > b.score; });
-  if (prescored.size() > std::size_t(p.rescored_hypotheses)) prescored.resize(p.rescored_hypotheses);
-  for (auto& h : prescored) {
-    h.score = similarity(src, tgt, h.transform, p.distance_threshold, cos_tol, p.oriented_normals, nullptr);
-    ranking.add(h);
-  }
+  const HypothesisRanking ranking = rescoreBest(score, std::move(prescored), p);
   finalizeFromRanking(ranking, p.min_score, p.min_relative_gap, r);
-  if (ranking.best()) {
-    RigidTransform T = r.transform;
-    for (int it = 0; it < p.polish_iterations; ++it) {
-      std::vector<PairMatch> m;
-      similarity(src, tgt, T, p.distance_threshold, cos_tol, p.oriented_normals, &m);
-      const RigidTransform U = polish(src, tgt, T, m);
-      if (similarity(src, tgt, U, p.distance_threshold, cos_tol, p.oriented_normals, nullptr) < r.score * 0.999) break;
-      T = U;
-    }
-    std::vector<PairMatch> m;
-    r.score = similarity(src, tgt, T, p.distance_threshold, cos_tol, p.oriented_normals, &m);
-    r.transform = T;
-    std::vector<bool> matched(src.polys.size(), false);
-    double sq = 0.0, wsum = 0.0;
-    for (const auto& k : m) {
-      matched[k.s] = true;
-      const double e = tgt.polys[k.t]->normal.dot(T.apply(src.polys[k.s]->centroid)) -
-                       tgt.polys[k.t]->offset;
-      sq += k.weight * e * e;
-      wsum += k.weight;
-    }
-    r.inlier_features = std::count(matched.begin(), matched.end(), true);
-    r.feature_rms = wsum > 0 ? std::sqrt(sq / wsum) : 0.0;
-    if (r.runner_up && r.score > 0) r.relative_gap = (r.score - r.runner_up->score) / r.score;
-  }
+  if (ranking.best())
+    measureFinal(score, polishOnMatches(score, r.transform, p.polish_iterations, r.score), r);
   if (ill_conditioned) r.figures.push_back({"ill-conditioned triples rejected", double(ill_conditioned)});
   r.message = "planes: " + r.message;
   reportProgress(progress, 1.0, "planes: done");

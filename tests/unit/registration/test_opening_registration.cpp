@@ -1,9 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <random>
+#include <set>
 #include <sstream>
+#include <tuple>
 
+#include "registration/openings/opening_hypotheses.hpp"
 #include "registration/openings/opening_registration.hpp"
 #include "unit/registration/synthetic_building.hpp"
 
@@ -229,4 +233,113 @@ TEST(OpeningRegistration, TheSeedDrawsTheHypothesesBeyondTheLimit) {
   for (std::uint64_t seed = 2; seed <= 6; ++seed)
     differing += outcome(registerOpenings(source, outdoor, p, seed)) != a;
   EXPECT_GE(differing, 1) << "five other seeds all gave seed 1's result:\n" << a;
+}
+
+// --- The hypothesis steps alone (registration/openings/opening_hypotheses.hpp) ---
+
+namespace {
+namespace od = plumb::openings_detail;
+
+// An opening 1 m wide, 2 m high, in the plane through `bottom_left` with horizontal direction
+// `right` (corners counter-clockwise seen from the side right x up points to).
+Opening rectOpening(const Eigen::Vector3d& bottom_left, const Eigen::Vector3d& right) {
+  Opening o;
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  o.corners = {bottom_left, bottom_left + right, bottom_left + right + 2 * up, bottom_left + 2 * up};
+  return o;
+}
+
+OrientedOpening oriented(const Eigen::Vector3d& normal, const Eigen::Vector3d& centre, double width) {
+  OrientedOpening o;
+  o.normal = normal;
+  o.centre = centre;
+  o.width = width;
+  return o;
+}
+}  // namespace
+
+TEST(OpeningHypotheses, BasesAreEveryPairingInOrderUpToTheLimit) {
+  const auto all = od::baseHypotheses(3, 2, 12, 7);
+  ASSERT_EQ(all.size(), 12u);
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    EXPECT_EQ(all[k].s, int(k / 4));
+    EXPECT_EQ(all[k].t, int(k / 2 % 2));
+    EXPECT_EQ(all[k].pairing, int(k % 2));
+  }
+}
+
+TEST(OpeningHypotheses, BasesBeyondTheLimitAreDrawnBySeedWithoutRepeats) {
+  const auto a = od::baseHypotheses(5, 4, 10, 1);
+  ASSERT_EQ(a.size(), 10u);
+  std::set<std::tuple<int, int, int>> seen;
+  for (const auto& b : a) {
+    EXPECT_TRUE(b.s >= 0 && b.s < 5 && b.t >= 0 && b.t < 4 && (b.pairing == 0 || b.pairing == 1));
+    seen.insert({b.s, b.t, b.pairing});
+  }
+  EXPECT_EQ(seen.size(), 10u) << "a base drawn twice";
+  const auto same = od::baseHypotheses(5, 4, 10, 1);
+  const auto other = od::baseHypotheses(5, 4, 10, 2);
+  auto key = [](const std::vector<od::Base>& v) {
+    std::vector<std::tuple<int, int, int>> k;
+    for (const auto& b : v) k.emplace_back(b.s, b.t, b.pairing);
+    return k;
+  };
+  EXPECT_EQ(key(same), key(a));
+  EXPECT_NE(key(other), key(a));
+}
+
+TEST(OpeningHypotheses, ZeroThicknessPlacementPutsThePairedCornersTogether) {
+  // Indoor opening in the wall y = 0 facing into the room (-y), outdoor opening in the façade
+  // x = 5 facing out (+x), its bottom-left (seen from outside) at (5, 2, 0).
+  FeatureSet in, out;
+  in.openings.push_back(rectOpening({1, 0, 0}, {1, 0, 0}));
+  out.openings.push_back(rectOpening({5, 2, 0}, {0, 1, 0}));
+  const auto s = orientedOpenings(in, 5.0), t = orientedOpenings(out, 5.0);
+  ASSERT_EQ(s.size(), 1u);
+  ASSERT_EQ(t.size(), 1u);
+  ASSERT_NEAR(s[0].normal.y(), -1.0, 1e-12);
+  ASSERT_NEAR(t[0].normal.x(), 1.0, 1e-12);
+  for (int pairing : {0, 1}) {
+    const RigidTransform T =
+        od::zeroThicknessPlacement(s[0], in.openings[0], t[0], out.openings[0], pairing);
+    // The wall's normal turns onto the façade's, opposite; the rotation is a yaw.
+    EXPECT_NEAR((T.rotation() * s[0].normal + t[0].normal).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((T.rotation() * Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitZ()).norm(), 0.0, 1e-12);
+    const int cs = pairing == 0 ? 0 : 1, ct = pairing == 0 ? 1 : 0;
+    EXPECT_NEAR((T.apply(in.openings[0].corners[cs]) - out.openings[0].corners[ct]).norm(), 0.0, 1e-12)
+        << "pairing " << pairing;
+  }
+}
+
+TEST(OpeningHypotheses, ThicknessCandidatesComeFromPerpendicularFacingOpenings) {
+  // The façade faces +x. A source opening on a perpendicular wall (facing -y) at x = 0.8
+  // pairs with target openings facing +y at the same height and width: each gives its x
+  // offset as a thickness.
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY();
+  const std::vector<OrientedOpening> src = {
+      oriented(-Y, {0.8, 0, 1}, 1.0),
+      oriented(-X, {0.8, 0, 1}, 1.0),  // parallel to the façade: gives nothing
+  };
+  const std::vector<OrientedOpening> tgt = {
+      oriented(Y, {0.5, 0.2, 1}, 1.0),    // 0.30
+      oriented(Y, {0.48, 0.2, 1}, 1.0),   // 0.32: within d/2 of 0.30, dropped
+      oriented(Y, {0.3, 0.2, 1}, 1.0),    // 0.50
+      oriented(Y, {-0.7, 0.2, 1}, 1.0),   // 1.50: thicker than the maximum
+      oriented(Y, {1.0, 0.2, 1}, 1.0),    // -0.20: in front of the façade
+      oriented(Y, {0.6, 0.2, 1.5}, 1.0),  // another height
+      oriented(Y, {0.6, 0.2, 1}, 1.5),    // another width
+      oriented(-Y, {0.6, 0.2, 1}, 1.0),   // not facing
+  };
+  const od::ThicknessSearch search{0.1, std::cos(5 * M_PI / 180), std::sin(5 * M_PI / 180), 1.0};
+  const auto th = od::thicknessCandidates(src, tgt, RigidTransform(), X, search);
+  ASSERT_EQ(th.size(), 2u);
+  EXPECT_NEAR(th[0], 0.30, 1e-12);
+  EXPECT_NEAR(th[1], 0.50, 1e-12);
+  // Under a placement, the source opening is moved first: 0.25 m further along +x.
+  const RigidTransform shifted(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.25, 0, 0));
+  const auto moved = od::thicknessCandidates(src, tgt, shifted, X, search);
+  ASSERT_EQ(moved.size(), 3u);
+  EXPECT_NEAR(moved[0], 0.05, 1e-12);  // the target at x = 1.0, now behind the façade face
+  EXPECT_NEAR(moved[1], 0.55, 1e-12);
+  EXPECT_NEAR(moved[2], 0.75, 1e-12);
 }

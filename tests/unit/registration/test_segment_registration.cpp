@@ -4,6 +4,7 @@
 
 #include "registration/segments/line_alignment.hpp"
 #include "registration/segments/segment_registration.hpp"
+#include "registration/segments/translation_voting.hpp"
 #include "unit/registration/random_pose_trials.hpp"
 #include "unit/registration/synthetic_building.hpp"
 
@@ -62,4 +63,56 @@ TEST(SegmentRegistration, UnrelatedSegmentsAreNotAConfidentAnswer) {
   }
   const auto r = registerSegments(junk, truth.segments, {});
   EXPECT_FALSE(r.ok()) << r.message;
+}
+
+namespace {
+// The 12 edges of the box [0, 4] x [0, 3] x [0, 2.5] moved by `shift`.
+std::vector<Segment3D> boxEdges(const Eigen::Vector3d& shift) {
+  const Eigen::Vector3d size(4, 3, 2.5);
+  std::vector<Segment3D> out;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        Eigen::Vector3d a = Eigen::Vector3d::Zero();
+        a[(axis + 1) % 3] = i * size[(axis + 1) % 3];
+        a[(axis + 2) % 3] = j * size[(axis + 2) % 3];
+        Eigen::Vector3d b = a;
+        b[axis] = size[axis];
+        Segment3D s;
+        s.a = a + shift;
+        s.b = b + shift;
+        out.push_back(s);
+      }
+  return out;
+}
+}  // namespace
+
+TEST(TranslationVoting, StrongestPeakIsTheShiftAndPeaksAreApart) {
+  // Source edges moved by -t: every pair of an edge with itself votes along a line through t,
+  // the three directions' lines cross only there.
+  const Eigen::Vector3d t(1.3, -0.7, 0.45);
+  const auto target = boxEdges(Eigen::Vector3d::Zero());
+  const auto source = boxEdges(-t);
+  const auto cs = clusterSegmentDirections(source, {});
+  const auto ct = clusterSegmentDirections(target, {});
+  ASSERT_EQ(cs.clusters.size(), 3u);
+  RotationCandidate rot;
+  for (const auto& c : cs.clusters) {
+    int match = -1;
+    for (std::size_t m = 0; m < ct.clusters.size(); ++m)
+      if (std::abs(c.direction.dot(ct.clusters[m].direction)) > 0.99) match = int(m);
+    rot.target_of_source.push_back(match);
+  }
+  const double cell = 0.1;
+  const auto peaks = voteTranslations(source, cs, target, ct, rot, cell, 5);
+  ASSERT_FALSE(peaks.empty());
+  EXPECT_LE(peaks.size(), 5u);
+  EXPECT_LT((peaks[0] - t).norm(), 1.8 * cell) << peaks[0].transpose();
+  for (std::size_t i = 0; i < peaks.size(); ++i)
+    for (std::size_t j = i + 1; j < peaks.size(); ++j)
+      EXPECT_GT((peaks[i] - peaks[j]).cwiseAbs().maxCoeff(), 2.5 * cell) << "peaks " << i << ", " << j;
+  EXPECT_EQ(voteTranslations(source, cs, target, ct, rot, cell, 1).size(), 1u);
+  // Without associations nothing votes.
+  rot.target_of_source.assign(cs.clusters.size(), -1);
+  EXPECT_TRUE(voteTranslations(source, cs, target, ct, rot, cell, 5).empty());
 }
