@@ -97,70 +97,73 @@ void applyNumbers(const Args& a, SurveyRequest& r) {
   applyParamOptions(MmsParams::schema(), "mms", a.params, r.mms_params);
 }
 
-int run(const Args& a) {
-  if (a.list) {
-    for (const auto& n : buildingPresetNames()) std::cout << n << "  " << buildingPresetDescription(n) << "\n";
-    return 0;
-  }
+/// The options that need no parsing: one source at most, an output directory, a format.
+void checkChoices(const Args& a) {
   if (a.outdir.empty()) throw InputError("simulate: -o OUTDIR is required");
   const int sources = !a.preset.empty() + !a.building.empty() + !a.model.empty();
   if (sources > 1) throw InputError("simulate: give only one of --preset, --building, --model");
   if (a.format != "e57" && a.format != "ply") throw InputError("simulate: --format must be e57 or ply");
-  SurveyRequest checked;
-  applyNumbers(a, checked);  // every numeric option is checked before any work is done
+}
 
+/// What is scanned: an imported model, or a generated building (with its spec and truth).
+struct Subject {
   std::optional<GeneratedBuilding> generated;
   BimModel model;
   std::vector<bool> glass;
   std::vector<Eigen::Vector3d> outline;
+};
+
+Subject loadSubject(const Args& a) {
+  Subject s;
   if (!a.model.empty()) {
-    model = readModel(a.model);
+    s.model = readModel(a.model);
     // Imported windows (frames and panes) let the laser through, like glass.
-    for (const auto e : model.triangle_element) {
-      const std::string& type = e < model.elements.size() ? model.elements[e].type : std::string();
-      glass.push_back(type == "IfcWindow" || type == "IfcPlate");
+    for (const auto e : s.model.triangle_element) {
+      const std::string& type = e < s.model.elements.size() ? s.model.elements[e].type : std::string();
+      s.glass.push_back(type == "IfcWindow" || type == "IfcPlate");
     }
   } else {
     const BuildingSpec spec = !a.building.empty() ? readBuildingSpec(a.building)
                                                   : buildingPreset(a.preset.empty() ? "house" : a.preset);
-    generated = generateBuilding(spec);
-    model = generated->model;
-    glass = generated->glass_triangles;
-    outline = generated->truth.footprint;
+    s.generated = generateBuilding(spec);
+    s.model = s.generated->model;
+    s.glass = s.generated->glass_triangles;
+    s.outline = s.generated->truth.footprint;
   }
+  return s;
+}
 
+/// The survey the options ask for (--demo's, with the stations and scanners given).
+SurveyRequest surveyRequest(const Args& a, const Subject& s, std::uint64_t seed) {
   SurveyRequest r;
   if (a.demo) {
-    if (!generated) throw InputError("simulate: --demo needs a generated building (no --model)");
-    r = demoSurveyRequest(generated->spec, checked.seed);
+    if (!s.generated) throw InputError("simulate: --demo needs a generated building (no --model)");
+    r = demoSurveyRequest(s.generated->spec, seed);
   }
   applyNumbers(a, r);
   r.glass_transparent = !a.opaque_glass;
   if (a.tls_rooms) {
-    if (!generated) throw InputError("simulate: --tls-rooms needs a generated building (no --model)");
-    for (const auto& c : roomCentres(generated->spec, 0)) r.tls_stations.push_back(c);
+    if (!s.generated) throw InputError("simulate: --tls-rooms needs a generated building (no --model)");
+    for (const auto& c : roomCentres(s.generated->spec, 0)) r.tls_stations.push_back(c);
   }
   r.mms = r.mms || a.mms || !a.trajectory.empty();
   if (!a.trajectory.empty()) r.trajectory = readTrajectory(a.trajectory);
   r.perturb_mms = r.perturb_mms || a.perturb_mms;
   if (r.tls_stations.empty() && !r.mms)
     throw InputError("simulate: nothing to scan: give --tls x,y,z, --tls-rooms, --mms or --trajectory");
+  return r;
+}
 
-  Progress progress([](double f, std::string_view stage) {
-    std::cerr << "\r" << stage << " " << static_cast<int>(f * 100) << "%   " << std::flush;
-  });
-  const SimulatedSurvey survey = simulateSurvey(model, glass, outline, r, &progress);
-  std::cerr << "\n";
-
-  const std::filesystem::path out(a.outdir);
-  std::filesystem::create_directories(out);
+/// Writes each dataset as <name>.<format>; returns truth.json with their transforms.
+nlohmann::json writeDatasets(const std::filesystem::path& out, const SimulatedSurvey& survey,
+                             const std::string& format) {
   nlohmann::json truth;
   truth["reference"] = "model";
   truth["description"] = "transform maps each perturbed dataset (its scans in the dataset frame) to the model frame";
   truth["datasets"] = nlohmann::json::array();
   truth["scans"] = nlohmann::json::array();
   for (const auto& d : survey.datasets) {
-    const std::string file = d.name + "." + a.format;
+    const std::string file = d.name + "." + format;
     writeDataset(out / file, d.data);
     const auto transform = nlohmann::json::parse(transformToJson(d.truth));
     std::size_t points = 0;
@@ -174,28 +177,54 @@ int run(const Args& a) {
                                  {"transform", transform}});
     std::cout << file << ": " << d.data.scans.size() << " scan(s), " << points << " points\n";
   }
-  if (survey.mms_trajectory) {
-    const Trajectory& traj = *survey.mms_trajectory;
-    RigidTransform model_to_outdoor;
-    for (const auto& d : survey.datasets)
-      if (d.name == "outdoor") model_to_outdoor = d.truth.inverse();
-    writeFileAtomically(out / "trajectory.txt", [&](std::ostream& o) {
-      o.precision(std::numeric_limits<double>::max_digits10);
-      o << "# t x y z: MMS sensor trajectory (s, m), outdoor dataset frame\n";
-      for (std::size_t i = 0; i < traj.times.size(); ++i) {
-        const Eigen::Vector3d p = model_to_outdoor.apply(traj.positions[i]);
-        o << traj.times[i] << " " << p.x() << " " << p.y() << " " << p.z() << "\n";
-      }
-    });
-    truth["trajectory"] = {{"file", "trajectory.txt"}, {"dataset", "outdoor"}, {"samples", traj.times.size()},
-                           {"description", "MMS sensor positions 't x y z' in the outdoor dataset frame"}};
-    std::cout << "trajectory.txt: " << traj.times.size() << " samples, " << traj.duration() << " s\n";
+  return truth;
+}
+
+/// trajectory.txt: the MMS trajectory in the outdoor dataset frame, listed in `truth`.
+void writeTrajectory(const std::filesystem::path& out, const SimulatedSurvey& survey, nlohmann::json& truth) {
+  const Trajectory& traj = *survey.mms_trajectory;
+  RigidTransform model_to_outdoor;
+  for (const auto& d : survey.datasets)
+    if (d.name == "outdoor") model_to_outdoor = d.truth.inverse();
+  writeFileAtomically(out / "trajectory.txt", [&](std::ostream& o) {
+    o.precision(std::numeric_limits<double>::max_digits10);
+    o << "# t x y z: MMS sensor trajectory (s, m), outdoor dataset frame\n";
+    for (std::size_t i = 0; i < traj.times.size(); ++i) {
+      const Eigen::Vector3d p = model_to_outdoor.apply(traj.positions[i]);
+      o << traj.times[i] << " " << p.x() << " " << p.y() << " " << p.z() << "\n";
+    }
+  });
+  truth["trajectory"] = {{"file", "trajectory.txt"}, {"dataset", "outdoor"}, {"samples", traj.times.size()},
+                         {"description", "MMS sensor positions 't x y z' in the outdoor dataset frame"}};
+  std::cout << "trajectory.txt: " << traj.times.size() << " samples, " << traj.duration() << " s\n";
+}
+
+int run(const Args& a) {
+  if (a.list) {
+    for (const auto& n : buildingPresetNames()) std::cout << n << "  " << buildingPresetDescription(n) << "\n";
+    return 0;
   }
-  writeModel(out / "model.ply", model);
-  writeModel(out / "model.obj", model);
-  if (generated) writeBuildingTruth(out / "ground_truth.json", *generated);
+  checkChoices(a);
+  SurveyRequest checked;
+  applyNumbers(a, checked);  // every numeric option is checked before any work is done
+  const Subject subject = loadSubject(a);
+  const SurveyRequest r = surveyRequest(a, subject, checked.seed);
+
+  Progress progress([](double f, std::string_view stage) {
+    std::cerr << "\r" << stage << " " << static_cast<int>(f * 100) << "%   " << std::flush;
+  });
+  const SimulatedSurvey survey = simulateSurvey(subject.model, subject.glass, subject.outline, r, &progress);
+  std::cerr << "\n";
+
+  const std::filesystem::path out(a.outdir);
+  std::filesystem::create_directories(out);
+  nlohmann::json truth = writeDatasets(out, survey, a.format);
+  if (survey.mms_trajectory) writeTrajectory(out, survey, truth);
+  writeModel(out / "model.ply", subject.model);
+  writeModel(out / "model.obj", subject.model);
+  if (subject.generated) writeBuildingTruth(out / "ground_truth.json", *subject.generated);
   writeFileAtomically(out / "truth.json", [&](std::ostream& o) { o << truth.dump(2) << "\n"; });
-  std::cout << "model: " << model.mesh.triangleCount() << " triangles, " << model.elements.size()
+  std::cout << "model: " << subject.model.mesh.triangleCount() << " triangles, " << subject.model.elements.size()
             << " elements; wrote " << out.string() << "\n";
   return 0;
 }

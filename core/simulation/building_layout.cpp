@@ -134,74 +134,88 @@ std::vector<Eigen::Vector2d> footprint(const Planner& p) {
   return out;
 }
 
-}  // namespace
+/// The wall of storey `st` on line `i` of `axis` in cell `r` of the other axis (half thickness
+/// `h` > 0), between z0 and z1; it reaches into the walls crossing its end nodes.
+LayoutWall makeWall(const Planner& p, int axis, long i, long r, double h, int st, double z0, double z1) {
+  const auto& cross = p.lines(1 - axis);
+  LayoutWall w;
+  w.axis = axis;
+  w.line = p.lines(axis)[static_cast<std::size_t>(i)];
+  w.half = h;
+  w.storey = st;
+  const bool before = p.room(axis, i - 1, r), after = p.room(axis, i, r);
+  w.outside_sign = before && after ? 0 : (before ? +1 : -1);
+  const double a0 = cross[static_cast<std::size_t>(r)] - p.nodeHalfAlong(axis, i, r);
+  const double a1 = cross[static_cast<std::size_t>(r + 1)] + p.nodeHalfAlong(axis, i, r + 1);
+  w.box = axis == 0 ? makeBox(w.line - h, w.line + h, a0, a1, z0, z1) : makeBox(a0, a1, w.line - h, w.line + h, z0, z1);
+  w.name = "wall-" + std::to_string(st) + (axis == 0 ? "-u" : "-v") + std::to_string(i) +
+           (axis == 0 ? "-r" : "-c") + std::to_string(r);
+  return w;
+}
 
-BuildingLayout layoutBuilding(const BuildingSpec& spec) {
-  BuildingLayout L;
-  const double a = spec.axis_angle_deg * M_PI / 180.0;
-  L.cos_a = std::abs(spec.axis_angle_deg - 90.0) < 1e-12 ? 0.0 : std::cos(a);
-  L.sin_a = std::abs(spec.axis_angle_deg - 90.0) < 1e-12 ? 1.0 : std::sin(a);
-  const Planner p(spec, L.sin_a);
+void addWalls(BuildingLayout& L, const BuildingSpec& spec, const Planner& p) {
   const double H = spec.storey_height, ts = spec.slab_thickness;
-  int window_number = 0, door_number = 0;
-
   for (int st = 0; st < spec.storeys; ++st) {
     const double z0 = st * H + ts, z1 = (st + 1) * H;
     // Walls on u-lines (axis 0, run along v), then on v-lines (axis 1, run along u).
-    for (int axis = 0; axis < 2; ++axis) {
-      const auto& lines = p.lines(axis);
-      const auto& cross = p.lines(1 - axis);
+    for (int axis = 0; axis < 2; ++axis)
       for (long i = 0; i <= p.cells(axis); ++i)
-        for (long r = 0; r < p.cells(1 - axis); ++r) {
-          const double h = p.half(axis, i, r);
-          if (h == 0.0) continue;
-          LayoutWall w;
-          w.axis = axis;
-          w.line = lines[static_cast<std::size_t>(i)];
-          w.half = h;
-          w.storey = st;
-          const bool before = p.room(axis, i - 1, r), after = p.room(axis, i, r);
-          w.outside_sign = before && after ? 0 : (before ? +1 : -1);
-          const double a0 = cross[static_cast<std::size_t>(r)] - p.nodeHalfAlong(axis, i, r);
-          const double a1 = cross[static_cast<std::size_t>(r + 1)] + p.nodeHalfAlong(axis, i, r + 1);
-          w.box = axis == 0 ? makeBox(w.line - h, w.line + h, a0, a1, z0, z1) : makeBox(a0, a1, w.line - h, w.line + h, z0, z1);
-          w.name = "wall-" + std::to_string(st) + (axis == 0 ? "-u" : "-v") + std::to_string(i) +
-                   (axis == 0 ? "-r" : "-c") + std::to_string(r);
-          L.walls.push_back(w);
-        }
-    }
+        for (long r = 0; r < p.cells(1 - axis); ++r)
+          if (const double h = p.half(axis, i, r); h != 0.0) L.walls.push_back(makeWall(p, axis, i, r, h, st, z0, z1));
   }
+}
 
-  // Openings: windows in exterior segments, doors in interior ones, one entrance door.
-  bool entrance_done = !spec.entrance_door;
-  for (int wi = 0; wi < static_cast<int>(L.walls.size()); ++wi) {
-    const LayoutWall w = L.walls[static_cast<std::size_t>(wi)];
-    const int along = 1 - w.axis;
-    // Clear span between the walls crossing the segment's end nodes.
-    const double span0 = w.box.lo[along] + 2 * p.half_ext;  // conservative
-    const double span1 = w.box.hi[along] - 2 * p.half_ext;
-    const double floor_z = w.box.lo.z();
-    if (w.outside_sign != 0) {
-      const bool entrance = !entrance_done && w.storey == 0 && w.axis == 1 && w.line == 0.0;
-      if (entrance) {
-        entrance_done = true;
-        const double c = 0.5 * (span0 + span1);
-        addOpening(L, w, wi, c - spec.door_width / 2, c + spec.door_width / 2, floor_z,
-                   floor_z + spec.door_height, true, w.storey, door_number++);
-        continue;
-      }
-      for (double c : slotCentres(span0, span1, spec.window_width, spec.window_spacing))
-        addOpening(L, w, wi, c - spec.window_width / 2, c + spec.window_width / 2,
-                   floor_z + spec.sill_height, floor_z + spec.sill_height + spec.window_height,
-                   false, w.storey, window_number++);
-    } else if (spec.interior_doors && span1 - span0 >= spec.door_width + 0.3) {
-      const double c = 0.5 * (span0 + span1);
-      addOpening(L, w, wi, c - spec.door_width / 2, c + spec.door_width / 2, floor_z,
-                 floor_z + spec.door_height, true, w.storey, door_number++);
+/// Numbers the openings as they are added; the entrance door is the first exterior ground
+/// floor segment on v-line 0.
+struct OpeningCount {
+  int windows = 0, doors = 0;
+  bool entrance_done = false;
+};
+
+/// A door of the spec's size centred on [span0, span1] of wall `wi`, from its floor.
+void addDoor(BuildingLayout& L, const BuildingSpec& spec, int wi, double span0, double span1,
+             OpeningCount& count) {
+  const LayoutWall w = L.walls[static_cast<std::size_t>(wi)];
+  const double floor_z = w.box.lo.z();
+  const double c = 0.5 * (span0 + span1);
+  addOpening(L, w, wi, c - spec.door_width / 2, c + spec.door_width / 2, floor_z,
+             floor_z + spec.door_height, true, w.storey, count.doors++);
+}
+
+void addWallOpenings(BuildingLayout& L, const BuildingSpec& spec, const Planner& p, int wi,
+                     OpeningCount& count) {
+  const LayoutWall w = L.walls[static_cast<std::size_t>(wi)];
+  const int along = 1 - w.axis;
+  // Clear span between the walls crossing the segment's end nodes.
+  const double span0 = w.box.lo[along] + 2 * p.half_ext;  // conservative
+  const double span1 = w.box.hi[along] - 2 * p.half_ext;
+  const double floor_z = w.box.lo.z();
+  if (w.outside_sign != 0) {
+    const bool entrance = !count.entrance_done && w.storey == 0 && w.axis == 1 && w.line == 0.0;
+    if (entrance) {
+      count.entrance_done = true;
+      addDoor(L, spec, wi, span0, span1, count);
+      return;
     }
+    for (double c : slotCentres(span0, span1, spec.window_width, spec.window_spacing))
+      addOpening(L, w, wi, c - spec.window_width / 2, c + spec.window_width / 2,
+                 floor_z + spec.sill_height, floor_z + spec.sill_height + spec.window_height,
+                 false, w.storey, count.windows++);
+  } else if (spec.interior_doors && span1 - span0 >= spec.door_width + 0.3) {
+    addDoor(L, spec, wi, span0, span1, count);
   }
+}
 
-  // Slabs: ground floor, one per storey above, roof. Cover rooms and wall footprints.
+/// Windows in exterior segments, doors in interior ones, one entrance door.
+void addOpenings(BuildingLayout& L, const BuildingSpec& spec, const Planner& p) {
+  OpeningCount count;
+  count.entrance_done = !spec.entrance_door;
+  for (int wi = 0; wi < static_cast<int>(L.walls.size()); ++wi) addWallOpenings(L, spec, p, wi, count);
+}
+
+/// Ground floor, one per storey above, roof. Cover rooms and wall footprints.
+void addSlabs(BuildingLayout& L, const BuildingSpec& spec, const Planner& p) {
+  const double H = spec.storey_height, ts = spec.slab_thickness;
   for (int level = 0; level <= spec.storeys; ++level) {
     LayoutPart slab;
     slab.name = level == 0 ? "ground-slab" : (level == spec.storeys ? "roof-slab" : "slab-" + std::to_string(level));
@@ -220,10 +234,45 @@ BuildingLayout layoutBuilding(const BuildingSpec& spec) {
       }
     L.slabs.push_back(slab);
   }
+}
 
-  // Furniture: random boxes in each room, away from the room centre (scanner stations).
-  std::mt19937_64 rng(spec.seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+/// The random furniture generator (one sequence for the whole building).
+struct FurnitureRandom {
+  std::mt19937_64 rng;
+  std::uniform_real_distribution<double> unit{0.0, 1.0};
+};
+
+/// Up to spec.furniture_per_room random boxes on the floor (at fz) of the free area
+/// [u0, u1] x [v0, v1] of a room.
+void furnishRoom(BuildingLayout& L, const BuildingSpec& spec, double u0, double u1, double v0,
+                 double v1, double fz, FurnitureRandom& random) {
+  auto& [rng, unit] = random;
+  const Eigen::Vector2d centre(0.5 * (u0 + u1), 0.5 * (v0 + v1));
+  std::vector<Box> placed;
+  for (int attempt = 0; attempt < 40 && static_cast<int>(placed.size()) < spec.furniture_per_room; ++attempt) {
+    const double w = 0.5 + unit(rng), d = 0.4 + 0.6 * unit(rng), h = 0.4 + 0.8 * unit(rng);
+    if (u1 - u0 < w || v1 - v0 < d) continue;
+    const double bu = u0 + unit(rng) * (u1 - u0 - w), bv = v0 + unit(rng) * (v1 - v0 - d);
+    Box b = makeBox(bu, bu + w, bv, bv + d, fz, fz + h);
+    // Keep 1 m around the room centre free, and 0.3 m between pieces.
+    const bool near_centre = bu - 1.0 < centre.x() && bu + w + 1.0 > centre.x() &&
+                             bv - 1.0 < centre.y() && bv + d + 1.0 > centre.y();
+    bool overlaps = false;
+    for (const auto& o : placed)
+      overlaps |= b.lo.x() < o.hi.x() + 0.3 && o.lo.x() < b.hi.x() + 0.3 &&
+                  b.lo.y() < o.hi.y() + 0.3 && o.lo.y() < b.hi.y() + 0.3;
+    if (near_centre || overlaps) continue;
+    placed.push_back(b);
+    LayoutPart part;
+    part.boxes.push_back(b);
+    part.name = "furniture-" + std::to_string(L.furniture.size());
+    L.furniture.push_back(part);
+  }
+}
+
+/// Random boxes in each room, away from the room centre (scanner stations).
+void addFurniture(BuildingLayout& L, const BuildingSpec& spec, const Planner& p) {
+  FurnitureRandom random{std::mt19937_64(spec.seed)};
   const double margin = p.half_ext + 0.3;
   for (int st = 0; st < spec.storeys && spec.furniture_per_room > 0; ++st)
     for (long r = 0; r < p.R; ++r)
@@ -231,30 +280,22 @@ BuildingLayout layoutBuilding(const BuildingSpec& spec) {
         if (!spec.isRoom(c, r)) continue;
         const double u0 = p.U[static_cast<std::size_t>(c)] + margin, u1 = p.U[static_cast<std::size_t>(c + 1)] - margin;
         const double v0 = p.V[static_cast<std::size_t>(r)] + margin, v1 = p.V[static_cast<std::size_t>(r + 1)] - margin;
-        const Eigen::Vector2d centre(0.5 * (u0 + u1), 0.5 * (v0 + v1));
-        std::vector<Box> placed;
-        for (int attempt = 0; attempt < 40 && static_cast<int>(placed.size()) < spec.furniture_per_room; ++attempt) {
-          const double w = 0.5 + unit(rng), d = 0.4 + 0.6 * unit(rng), h = 0.4 + 0.8 * unit(rng);
-          if (u1 - u0 < w || v1 - v0 < d) continue;
-          const double bu = u0 + unit(rng) * (u1 - u0 - w), bv = v0 + unit(rng) * (v1 - v0 - d);
-          const double fz = st * H + ts;
-          Box b = makeBox(bu, bu + w, bv, bv + d, fz, fz + h);
-          // Keep 1 m around the room centre free, and 0.3 m between pieces.
-          const bool near_centre = bu - 1.0 < centre.x() && bu + w + 1.0 > centre.x() &&
-                                   bv - 1.0 < centre.y() && bv + d + 1.0 > centre.y();
-          bool overlaps = false;
-          for (const auto& o : placed)
-            overlaps |= b.lo.x() < o.hi.x() + 0.3 && o.lo.x() < b.hi.x() + 0.3 &&
-                        b.lo.y() < o.hi.y() + 0.3 && o.lo.y() < b.hi.y() + 0.3;
-          if (near_centre || overlaps) continue;
-          placed.push_back(b);
-          LayoutPart part;
-          part.boxes.push_back(b);
-          part.name = "furniture-" + std::to_string(L.furniture.size());
-          L.furniture.push_back(part);
-        }
+        furnishRoom(L, spec, u0, u1, v0, v1, st * spec.storey_height + spec.slab_thickness, random);
       }
+}
 
+}  // namespace
+
+BuildingLayout layoutBuilding(const BuildingSpec& spec) {
+  BuildingLayout L;
+  const double a = spec.axis_angle_deg * M_PI / 180.0;
+  L.cos_a = std::abs(spec.axis_angle_deg - 90.0) < 1e-12 ? 0.0 : std::cos(a);
+  L.sin_a = std::abs(spec.axis_angle_deg - 90.0) < 1e-12 ? 1.0 : std::sin(a);
+  const Planner p(spec, L.sin_a);
+  addWalls(L, spec, p);
+  addOpenings(L, spec, p);
+  addSlabs(L, spec, p);
+  addFurniture(L, spec, p);
   L.footprint_uv = footprint(p);
   return L;
 }

@@ -1,6 +1,8 @@
 #pragma once
 // The start of the GUI tests: a shown main window, optionally with some files opened the way
-// File > Open does (MainWindow::openFiles: background loading tasks), loaded without errors.
+// File > Open does (MainWindow::openFiles: background loading tasks), loaded without errors;
+// and the test's main().
+#include <QApplication>
 #include <QSignalSpy>
 #include <QSize>
 #include <QStringList>
@@ -11,6 +13,7 @@
 #include "ui/main_window.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/tasks/task_manager.hpp"
+#include "ui/view/surface_format.hpp"
 
 namespace plumb::test {
 
@@ -34,6 +37,17 @@ inline void openWindowWithFiles(std::unique_ptr<ui::MainWindow>& window, const Q
   window->openFiles(files);
   QVERIFY(idle.wait(60000));
   QVERIFY2(app.log.errorCount() == 0, qPrintable(app.log.toPlainText()));
+}
+
+/// The main() of a GUI test: the default surface format (before the application), the
+/// application with its settings under `organization`, then the slots of `Test`.
+template <class Test>
+int runGuiTest(int argc, char** argv, const char* organization = "PlumbTests") {
+  ui::setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  QCoreApplication::setOrganizationName(organization);
+  Test test;
+  return QTest::qExec(&test, argc, argv);
 }
 
 }  // namespace plumb::test

@@ -94,6 +94,91 @@ json readJson(const QString& path) {
   }
 }
 
+/// The file as a whole: a Plumb project of this version with a "layers" array.
+void checkProject(const json& j, const std::string& file) {
+  if (!j.is_object() || !j.contains("plumb-project"))
+    throw FileError(file, "not a Plumb project (no \"plumb-project\" key)");
+  if (j.at("plumb-project") != kProjectVersion)
+    throw FileError(file, "unsupported project version " + j.at("plumb-project").dump());
+  if (!j.contains("layers") || !j.at("layers").is_array())
+    throw FileError(file, "\"layers\" must be an array");
+}
+
+/// layers[i] (`e`): its file and trajectory (relative to `dir`), visibility and transform.
+Entry readEntry(const json& e, std::size_t i, const QDir& dir, const std::string& file) {
+  const std::string where = "layers[" + std::to_string(i) + "]";
+  if (!e.is_object() || !e.contains("file") || !e.at("file").is_string())
+    throw FileError(file, where + " needs a \"file\" string");
+  Entry entry;
+  entry.file = dir.absoluteFilePath(QString::fromStdString(e.at("file").get<std::string>()));
+  entry.visible = e.value("visible", true);
+  if (e.contains("trajectory")) {
+    if (!e.at("trajectory").is_string()) throw FileError(file, where + ".trajectory must be a string");
+    entry.trajectory = dir.absoluteFilePath(QString::fromStdString(e.at("trajectory").get<std::string>()));
+  }
+  if (e.contains("transform")) {
+    try {
+      entry.transform = transformFromJson(e.at("transform").dump(), file);
+    } catch (const std::exception& ex) {
+      throw FileError(file, where + ".transform: " + ex.what());
+    }
+  }
+  return entry;
+}
+
+/// The source and target layer indices of the project's registration (-1: none); its
+/// parameters go to the Registration dock at once.
+std::pair<int, int> readRegistration(AppContext& app, const json& j, const std::string& file) {
+  if (!j.contains("registration") || !app.registration) return {-1, -1};
+  const json& r = j.at("registration");
+  const std::pair<int, int> layers{r.value("source", -1), r.value("target", -1)};
+  if (r.contains("params")) {
+    PipelineParams p;
+    try {
+      pipelineParamsFromJson(r.at("params"), p);
+    } catch (const std::exception& ex) {
+      throw FileError(file, std::string("registration.params: ") + ex.what());
+    }
+    app.registration->params() = p;
+    app.registration->refreshParams();
+  }
+  return layers;
+}
+
+/// Loads the entries' files; each layer gets its entry's transform, visibility and trajectory.
+/// `finish` runs when every file is loaded and every trajectory attached.
+void loadEntries(AppContext& app, std::shared_ptr<const std::vector<Entry>> entries, ProjectDone finish) {
+  QStringList files;
+  for (const auto& e : *entries) files << e.file;
+  auto layers = std::make_shared<std::vector<Layer*>>(entries->size(), nullptr);
+  if (files.isEmpty()) {
+    finish(true, *layers);
+    return;
+  }
+  auto remaining = std::make_shared<int>(int(entries->size()));  // loads and attachments to wait for
+  auto all_ok = std::make_shared<bool>(true);
+  auto step = [remaining, all_ok, layers, finish](bool ok) {
+    *all_ok = *all_ok && ok;
+    if (--*remaining == 0) finish(*all_ok, *layers);
+  };
+  loadFiles(
+      app, files,
+      [&app, entries, layers, remaining, step](Layer& layer, const QString& p) {
+        for (std::size_t i = 0; i < entries->size(); ++i)
+          if (const Entry& entry = (*entries)[i]; entry.file == p && !(*layers)[i]) {
+            (*layers)[i] = &layer;
+            setLayerTransform(app.scene, layer, entry.transform);
+            layer.setVisible(entry.visible);
+            if (!entry.trajectory.isEmpty() && layer.kind() == LayerKind::Dataset) {
+              ++*remaining;
+              startAttachTrajectory(app, static_cast<DatasetLayer&>(layer), entry.trajectory, step);
+            }
+            break;
+          }
+      },
+      [step](const QString&, bool ok) { step(ok); });
+}
+
 }  // namespace
 
 void openProject(AppContext& app, const QString& path, ProjectDone done) {
@@ -102,92 +187,22 @@ void openProject(AppContext& app, const QString& path, ProjectDone done) {
                      " while a task works on the open layers: wait for it or cancel it");
   const json j = readJson(path);
   const std::string file = path.toStdString();
-  if (!j.is_object() || !j.contains("plumb-project"))
-    throw FileError(file, "not a Plumb project (no \"plumb-project\" key)");
-  if (j.at("plumb-project") != kProjectVersion)
-    throw FileError(file, "unsupported project version " + j.at("plumb-project").dump());
-  if (!j.contains("layers") || !j.at("layers").is_array())
-    throw FileError(file, "\"layers\" must be an array");
+  checkProject(j, file);
   const QDir dir = QFileInfo(path).absoluteDir();
   auto entries = std::make_shared<std::vector<Entry>>();
-  for (std::size_t i = 0; i < j.at("layers").size(); ++i) {
-    const json& e = j.at("layers")[i];
-    const std::string where = "layers[" + std::to_string(i) + "]";
-    if (!e.is_object() || !e.contains("file") || !e.at("file").is_string())
-      throw FileError(file, where + " needs a \"file\" string");
-    Entry entry;
-    entry.file = dir.absoluteFilePath(QString::fromStdString(e.at("file").get<std::string>()));
-    entry.visible = e.value("visible", true);
-    if (e.contains("trajectory")) {
-      if (!e.at("trajectory").is_string()) throw FileError(file, where + ".trajectory must be a string");
-      entry.trajectory = dir.absoluteFilePath(QString::fromStdString(e.at("trajectory").get<std::string>()));
-    }
-    if (e.contains("transform")) {
-      try {
-        entry.transform = transformFromJson(e.at("transform").dump(), file);
-      } catch (const std::exception& ex) {
-        throw FileError(file, where + ".transform: " + ex.what());
-      }
-    }
-    entries->push_back(entry);
-  }
-  int source = -1, target = -1;
-  if (j.contains("registration") && app.registration) {
-    const json& r = j.at("registration");
-    source = r.value("source", -1);
-    target = r.value("target", -1);
-    if (r.contains("params")) {
-      PipelineParams p;
-      try {
-        pipelineParamsFromJson(r.at("params"), p);
-      } catch (const std::exception& ex) {
-        throw FileError(file, std::string("registration.params: ") + ex.what());
-      }
-      app.registration->params() = p;
-      app.registration->refreshParams();
-    }
-  }
+  for (std::size_t i = 0; i < j.at("layers").size(); ++i) entries->push_back(readEntry(j.at("layers")[i], i, dir, file));
+  const auto [source, target] = readRegistration(app, j, file);
   app.undo.clear();
   app.scene.clear();
-  QStringList files;
-  for (const auto& e : *entries) files << e.file;
-  auto layers = std::make_shared<std::vector<Layer*>>(entries->size(), nullptr);
-  auto remaining = std::make_shared<int>(int(entries->size()));
-  auto all_ok = std::make_shared<bool>(true);
-  app.log.info(QObject::tr("Opening project %1 (%2 files)").arg(path).arg(files.size()));
-  auto finish = [&app, layers, source, target, done, all_ok] {
+  app.log.info(QObject::tr("Opening project %1 (%2 files)").arg(path).arg(qsizetype(entries->size())));
+  loadEntries(app, entries, [&app, source, target, done](bool ok, const std::vector<Layer*>& layers) {
     if (app.registration) {
-      auto at = [&layers](int i) { return i >= 0 && std::size_t(i) < layers->size() ? (*layers)[std::size_t(i)] : nullptr; };
+      auto at = [&layers](int i) { return i >= 0 && std::size_t(i) < layers.size() ? layers[std::size_t(i)] : nullptr; };
       if (Layer* s = at(source)) app.registration->setSourceLayer(s);
       if (Layer* t = at(target)) app.registration->setTargetLayer(t);
     }
-    if (done) done(*all_ok, *layers);
-  };
-  if (files.isEmpty()) {
-    finish();
-    return;
-  }
-  // Done when every file is loaded and every trajectory attached (each counts in remaining).
-  auto step = [remaining, all_ok, finish](bool ok) {
-    *all_ok = *all_ok && ok;
-    if (--*remaining == 0) finish();
-  };
-  loadFiles(
-      app, files,
-      [&app, entries, layers, remaining, step](Layer& layer, const QString& p) {
-        for (std::size_t i = 0; i < entries->size(); ++i)
-          if ((*entries)[i].file == p && !(*layers)[i]) {
-            (*layers)[i] = &layer;
-            setLayerTransform(app.scene, layer, (*entries)[i].transform);
-            layer.setVisible((*entries)[i].visible);
-            if (!(*entries)[i].trajectory.isEmpty() && layer.kind() == LayerKind::Dataset) {
-              ++*remaining;
-              startAttachTrajectory(app, static_cast<DatasetLayer&>(layer), (*entries)[i].trajectory, step);
-            }
-            break;
-          }
-      },
-      [step](const QString&, bool ok) { step(ok); });
+    if (done) done(ok, layers);
+  });
 }
 
 }  // namespace plumb::ui

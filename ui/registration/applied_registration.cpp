@@ -3,12 +3,14 @@
 #include <QUndoStack>
 
 #include "ui/layers/layer_transform.hpp"
+#include "ui/panels/log_panel.hpp"
 #include "ui/registration/transform_command.hpp"
 
 namespace plumb::ui {
 
-AppliedRegistration::AppliedRegistration(Scene& scene, QUndoStack& undo, QObject* parent)
-    : QObject(parent), scene_(scene), undo_(undo) {
+AppliedRegistration::AppliedRegistration(Scene& scene, QUndoStack& undo, LogPanel& log,
+                                         QObject* parent)
+    : QObject(parent), scene_(scene), undo_(undo), log_(log) {
   connect(&undo_, &QUndoStack::indexChanged, this, [this] {
     if (!command_) return;
     if (commandIndex() < 0) command_ = nullptr;  // deleted (stack cleared, branch dropped)
@@ -41,6 +43,7 @@ void AppliedRegistration::apply(Layer& source, const RigidTransform& before,
 
 void AppliedRegistration::accept() {
   if (!undecided()) return;
+  log_.info(tr("Registration of %1 accepted").arg(layer_.get()->name()));
   decided_ = true;
   emit changed();
 }
@@ -48,14 +51,16 @@ void AppliedRegistration::accept() {
 void AppliedRegistration::revert() {
   Layer* layer = layer_.get();
   if (!undecided() || !layer) return;
+  const QString name = layer->name();
   showBefore(false);
   decided_ = true;
   if (undo_.index() > 0 && undo_.command(undo_.index() - 1) == command_) {
     undo_.undo();
   } else {
     undo_.push(new TransformCommand(scene_, *layer, layerTransform(*layer), before_,
-                                    tr("Revert %1").arg(layer->name())));
+                                    tr("Revert %1").arg(name)));
   }
+  log_.info(tr("Registration of %1 reverted").arg(name));
   emit changed();
 }
 

@@ -3,7 +3,7 @@
 // it: the source's transforms before and after, the undo command that applied it, Accept
 // (keep), Revert (undo it) and the before/after toggle. It follows the undo stack: once
 // Edit > Undo took the command back, the result is no longer in effect (inEffect() false,
-// changed()), and Redo puts it back.
+// changed()), and Redo puts it back. Accept and Revert say so in the log.
 #include <QObject>
 #include <QString>
 
@@ -15,12 +15,13 @@ class QUndoStack;
 
 namespace plumb::ui {
 
+class LogPanel;
 class Scene;
 
 class AppliedRegistration : public QObject {
   Q_OBJECT
  public:
-  AppliedRegistration(Scene& scene, QUndoStack& undo, QObject* parent = nullptr);
+  AppliedRegistration(Scene& scene, QUndoStack& undo, LogPanel& log, QObject* parent = nullptr);
 
   /// Moves `source` from where it is to `after` through an undo command named `text`;
   /// `before`: where the registration started (the before/after toggle shows it).
@@ -46,6 +47,7 @@ class AppliedRegistration : public QObject {
   int commandIndex() const;
   Scene& scene_;
   QUndoStack& undo_;
+  LogPanel& log_;
   LayerRef layer_;
   RigidTransform before_, after_;
   const QUndoCommand* command_ = nullptr;

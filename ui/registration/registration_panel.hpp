@@ -9,36 +9,39 @@
 
 #include "quality/cloud_distance.hpp"
 #include "registration/auto/registration_pipeline.hpp"
-#include "model/rigid_transform.hpp"
-#include "ui/layers/layer.hpp"
 
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QLayout;
 class QPushButton;
-class QToolBox;
 
 namespace plumb::ui {
 
 struct AppContext;
-class AppliedRegistration;
+class DatasetLayer;
 class DistanceCheck;
 class HistogramWidget;
 class Layer;
+class LayerPairCombos;
+class ParamGroupsBox;
 class ParamPanel;
 class QualityReportView;
+class RegistrationResultBox;
+class RegistrationRunner;
 struct LayerDistances;
 
+/// The widgets; the work is the RegistrationRunner's.
 class RegistrationPanel : public QWidget {
   Q_OBJECT
  public:
   RegistrationPanel(AppContext& app, QWidget* parent = nullptr);
   ~RegistrationPanel() override;
 
-  PipelineParams& params() { return params_; }
+  PipelineParams& params();
   /// Re-reads every parameter editor (after params() changed elsewhere, e.g. a project).
   void refreshParams();
-  DistanceParams& distanceParams() { return distance_params_; }
+  DistanceParams& distanceParams();
 
   /// The layers to register; until chosen (here or in the combos), defaultRegistrationPair.
   Layer* sourceLayer() const;
@@ -57,9 +60,9 @@ class RegistrationPanel : public QWidget {
   /// Before/after: show the source where it was before the last registration.
   void showBefore(bool before);
 
-  std::shared_ptr<const PipelineResult> lastResult() const { return result_; }
+  std::shared_ptr<const PipelineResult> lastResult() const;
   std::shared_ptr<const LayerDistances> lastDistances() const;
-  const QualityReportView& report() const { return *report_; }
+  const QualityReportView& report() const;
   const HistogramWidget& histogram() const { return *histogram_; }
   bool legendVisible() const;
 
@@ -69,48 +72,31 @@ class RegistrationPanel : public QWidget {
   void distancesComputed(bool ok);
 
  private:
-  void rebuildLayerCombos();
-  static void selectLayer(QComboBox& combo, const Layer* layer);
+  QLayout* buildInputs();
+  QLayout* buildActions();
+  QWidget* buildVisualCheck();
+  void connectSignals();
+  void followInputs();
   void updateEnabled();
-  void applyResult(std::shared_ptr<const PipelineResult> result, Layer& source,
-                   const RigidTransform& start);
-  void forgetLayer(Layer* layer);
-  void followAppliedResult();
-  /// The features shown on the source and target were detected by this dock for these two
-  /// layers with the current extraction parameters.
-  bool featuresUpToDate() const;
   void updateFeaturesState();
-  bool checkInputs(Layer*& source, Layer*& target);
+  void withdrawDistanceCheck(Layer* layer);
+  void showDistances(std::shared_ptr<const LayerDistances> distances, DatasetLayer& source,
+                     Layer& target, double max_distance);
 
   AppContext& app_;
-  PipelineParams params_;
-  DistanceParams distance_params_;
-  QComboBox* source_;
-  QComboBox* target_;
+  RegistrationRunner* runner_;  ///< child QObject
+  LayerPairCombos* layers_;     ///< child QObject
   QComboBox* method_;
   QCheckBox* use_features_;
-  QToolBox* groups_;
-  std::vector<std::pair<std::string, ParamPanel*>> panels_;
-  ParamPanel* distance_panel_;
+  ParamGroupsBox* groups_;
+  ParamPanel* distance_panel_ = nullptr;
   QPushButton* detect_;
   QPushButton* register_;
-  QPushButton* accept_;
-  QPushButton* revert_;
   QPushButton* distance_;
-  QCheckBox* before_;
-  QualityReportView* report_;
+  RegistrationResultBox* result_;
   HistogramWidget* histogram_;
   QLabel* distance_stats_;
-  AppliedRegistration* applied_;  ///< the last result applied (child QObject)
   std::unique_ptr<DistanceCheck> check_;
-  std::shared_ptr<const PipelineResult> result_;
-  /// What the last feature detection ran on and with (extraction parameters as JSON text).
-  struct DetectedFeatures {
-    LayerRef source, target;
-    std::string params;
-  } features_;
-  bool busy_ = false;
-  bool chosen_ = false;  ///< the user (or a project) chose the source/target
 };
 
 }  // namespace plumb::ui

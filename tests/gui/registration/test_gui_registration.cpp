@@ -328,12 +328,6 @@ class GuiRegistrationTest : public QObject {
   Layer* model_ = nullptr;
 };
 
-int main(int argc, char** argv) {
-  setDefaultSurfaceFormat();
-  QApplication app(argc, argv);
-  QCoreApplication::setOrganizationName("PlumbTests");
-  GuiRegistrationTest test;
-  return QTest::qExec(&test, argc, argv);
-}
+int main(int argc, char** argv) { return test::runGuiTest<GuiRegistrationTest>(argc, argv); }
 
 #include "test_gui_registration.moc"

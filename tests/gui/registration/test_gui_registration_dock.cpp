@@ -358,12 +358,6 @@ class GuiRegistrationDockTest : public QObject {
   bool lastOk_ = false;
 };
 
-int main(int argc, char** argv) {
-  setDefaultSurfaceFormat();
-  QApplication app(argc, argv);
-  QCoreApplication::setOrganizationName("PlumbTests");
-  GuiRegistrationDockTest test;
-  return QTest::qExec(&test, argc, argv);
-}
+int main(int argc, char** argv) { return test::runGuiTest<GuiRegistrationDockTest>(argc, argv); }
 
 #include "test_gui_registration_dock.moc"

@@ -328,12 +328,6 @@ class GuiAppTest : public QObject {
   std::unique_ptr<MainWindow> window_;
 };
 
-int main(int argc, char** argv) {
-  setDefaultSurfaceFormat();
-  QApplication app(argc, argv);
-  QCoreApplication::setOrganizationName("PlumbTests");
-  GuiAppTest test;
-  return QTest::qExec(&test, argc, argv);
-}
+int main(int argc, char** argv) { return test::runGuiTest<GuiAppTest>(argc, argv); }
 
 #include "test_gui_app.moc"

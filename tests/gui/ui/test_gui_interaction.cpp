@@ -500,12 +500,6 @@ class GuiInteractionTest : public QObject {
   std::vector<std::pair<FileRequest, QString>> requests_;
 };
 
-int main(int argc, char** argv) {
-  setDefaultSurfaceFormat();
-  QApplication app(argc, argv);
-  QCoreApplication::setOrganizationName("PlumbTestsInteraction");
-  GuiInteractionTest test;
-  return QTest::qExec(&test, argc, argv);
-}
+int main(int argc, char** argv) { return test::runGuiTest<GuiInteractionTest>(argc, argv, "PlumbTestsInteraction"); }
 
 #include "test_gui_interaction.moc"
