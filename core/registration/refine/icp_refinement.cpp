@@ -100,7 +100,9 @@ double slideCost(const LocalClouds& s, const Eigen::Matrix3d& R, const Eigen::Ve
                  double d, double gate) {
   const double d2 = d * d;
   const float gate2 = float(gate * gate);
-  return tbb::parallel_reduce(
+  // Deterministic reduce: the same chunks summed in the same order on every run, so the cost
+  // (and the candidates compared on it) do not change with thread timing.
+  return tbb::parallel_deterministic_reduce(
              tbb::blocked_range<std::size_t>(0, s.src.size(), 512), 0.0,
              [&](const auto& range, double sum) {
                std::vector<int> idx(1);

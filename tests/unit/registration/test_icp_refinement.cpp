@@ -44,3 +44,22 @@ TEST(IcpRefinement, ConvergesFromAFewDegreesAndDecimetres) {
     }
   }
 }
+
+// "Results are deterministic for a given seed": the fit cost and the slide test sum over
+// thousands of points in parallel; summed in whatever order the threads finish, their last
+// digits changed from run to run (and with them the comparison of close candidates).
+TEST(IcpRefinement, SameInputsGiveBitIdenticalFiguresOnEveryRun) {
+  const TriangleMesh mesh = boxesMesh(test::asymmetricRooms());
+  const PointCloud target = noisyScan(mesh, 0.05, 0.003, 1);
+  const PointCloud source = noisyScan(mesh, 0.05, 0.003, 2);
+  const RigidTransform start = RigidTransform::fromYaw(0.02, {0.05, -0.04, 0.01});
+  const RefineParams p;
+  const RefineResult first = refineRegistration(source, target, start, p);
+  ASSERT_GT(first.source_points, 10000u);  // enough 512-point chunks for threads to interleave
+  for (int run = 0; run < 5; ++run) {
+    const RefineResult again = refineRegistration(source, target, start, p);
+    EXPECT_EQ(again.fit_cost, first.fit_cost) << "run " << run;
+    EXPECT_EQ(again.direction_resistance, first.direction_resistance) << "run " << run;
+    EXPECT_EQ(again.transform.matrix(), first.transform.matrix()) << "run " << run;
+  }
+}

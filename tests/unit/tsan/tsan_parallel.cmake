@@ -4,7 +4,7 @@
 #   test_features           voxel grid / region growing / point assignment (segments), MSAC
 #                           plane search, segment lines per patch, openings' ray casts;
 #   test_registration_icp   the refinement's correspondence search (parallel_for), slide test
-#                           (parallel_reduce) and target normals (parallel_for).
+#                           (parallel_deterministic_reduce) and target normals (parallel_for).
 # Nothing with the UI, I/O, simulation or quality is built: that keeps the cost low (measured
 # wall times in tests/unit/tsan/CMakeLists.txt). Inputs: SRC, BIN, DATA.
 #

@@ -20,4 +20,11 @@ T parallel_reduce(const blocked_range<Value>& range, const T& identity, const Bo
   return out;
 }
 
+/// The shim's parallel_reduce already joins chunk results in range order.
+template <class Value, class T, class Body, class Join>
+T parallel_deterministic_reduce(const blocked_range<Value>& range, const T& identity,
+                                const Body& body, const Join& join) {
+  return parallel_reduce(range, identity, body, join);
+}
+
 }  // namespace tbb
