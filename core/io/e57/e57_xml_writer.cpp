@@ -97,6 +97,80 @@ void prototypeField(Xml& x, const FieldSpec& f) {
   }
 }
 
+/// pose: rotation as a normalised double quaternion with w >= 0, and translation.
+void poseXml(Xml& x, const Scan& scan) {
+  Eigen::Quaterniond q = scan.pose.quaternion().normalized();  // normalised doubles (pitfall 6)
+  if (q.w() < 0) q.coeffs() = -q.coeffs();
+  const Eigen::Vector3d& t = scan.pose.translation();
+  x.open("pose", "type=\"Structure\"");
+  x.open("rotation", "type=\"Structure\"");
+  x.flt("w", q.w()), x.flt("x", q.x()), x.flt("y", q.y()), x.flt("z", q.z());
+  x.close("rotation");
+  x.open("translation", "type=\"Structure\"");
+  x.flt("x", t.x()), x.flt("y", t.y()), x.flt("z", t.z());
+  x.close("translation");
+  x.close("pose");
+}
+
+/// cartesianBounds, indexBounds, intensityLimits and colorLimits, for those the scan has.
+void limitsXml(Xml& x, const WrittenScan& w) {
+  if (w.bounds) {  // all six, as Float (E57RefImpl reads them as FloatNode)
+    x.open("cartesianBounds", "type=\"Structure\"");
+    x.flt("xMinimum", w.bounds->min.x()), x.flt("xMaximum", w.bounds->max.x());
+    x.flt("yMinimum", w.bounds->min.y()), x.flt("yMaximum", w.bounds->max.y());
+    x.flt("zMinimum", w.bounds->min.z()), x.flt("zMaximum", w.bounds->max.z());
+    x.close("cartesianBounds");
+  }
+  if (w.rows || w.returns) {  // all six children, Integer (pitfall in §6)
+    const auto rows = w.rows.value_or(std::pair<std::int64_t, std::int64_t>{0, 0});
+    const auto cols = w.columns.value_or(std::pair<std::int64_t, std::int64_t>{0, 0});
+    const auto rets = w.returns.value_or(std::pair<std::int64_t, std::int64_t>{0, 0});
+    x.open("indexBounds", "type=\"Structure\"");
+    x.integer("rowMinimum", rows.first), x.integer("rowMaximum", rows.second);
+    x.integer("columnMinimum", cols.first), x.integer("columnMaximum", cols.second);
+    x.integer("returnMinimum", rets.first), x.integer("returnMaximum", rets.second);
+    x.close("indexBounds");
+  }
+  if (w.intensity) {
+    x.open("intensityLimits", "type=\"Structure\"");
+    if (w.intensity_integer) {
+      x.integer("intensityMinimum", static_cast<std::int64_t>(w.intensity->first));
+      x.integer("intensityMaximum", static_cast<std::int64_t>(w.intensity->second));
+    } else {
+      x.flt("intensityMinimum", w.intensity->first);
+      x.flt("intensityMaximum", w.intensity->second);
+    }
+    x.close("intensityLimits");
+  }
+  if (w.colors) {
+    x.open("colorLimits", "type=\"Structure\"");
+    for (const char* c : {"Red", "Green", "Blue"}) {
+      x.integer((std::string("color") + c + "Minimum").c_str(), 0);
+      x.integer((std::string("color") + c + "Maximum").c_str(), 255);
+    }
+    x.close("colorLimits");
+  }
+}
+
+/// One data3D vectorChild: identification, pose, limits and the points' CompressedVector.
+void scanXml(Xml& x, const WrittenScan& w) {
+  const Scan& scan = *w.scan;
+  x.open("vectorChild", "type=\"Structure\"");
+  x.str("guid", w.guid);
+  x.str("name", scan.name);
+  if (!scan.description.empty()) x.str("description", scan.description);
+  if (scan.has_pose || !scan.pose.isIdentity()) poseXml(x, scan);
+  limitsXml(x, w);
+  x.open("points", "type=\"CompressedVector\" fileOffset=\"" + std::to_string(w.section_offset) +
+                       "\" recordCount=\"" + std::to_string(w.records) + "\"");
+  x.open("prototype", "type=\"Structure\"");
+  for (const FieldSpec& f : w.prototype) prototypeField(x, f);
+  x.close("prototype");
+  x.line("<codecs type=\"Vector\" allowHeterogeneousChildren=\"1\"/>");
+  x.close("points");
+  x.close("vectorChild");
+}
+
 }  // namespace
 
 std::string newGuid() {
@@ -124,70 +198,7 @@ std::string buildXml(const std::string& file_guid, const std::string& coordinate
   x.str("e57LibraryVersion", "Plumb E57 writer 1.0");
   if (!coordinate_system.empty()) x.str("coordinateMetadata", coordinate_system);
   x.open("data3D", "type=\"Vector\" allowHeterogeneousChildren=\"1\"");
-  for (const WrittenScan& w : scans) {
-    const Scan& scan = *w.scan;
-    x.open("vectorChild", "type=\"Structure\"");
-    x.str("guid", w.guid);
-    x.str("name", scan.name);
-    if (!scan.description.empty()) x.str("description", scan.description);
-    if (scan.has_pose || !scan.pose.isIdentity()) {
-      Eigen::Quaterniond q = scan.pose.quaternion().normalized();  // normalised doubles (pitfall 6)
-      if (q.w() < 0) q.coeffs() = -q.coeffs();
-      const Eigen::Vector3d& t = scan.pose.translation();
-      x.open("pose", "type=\"Structure\"");
-      x.open("rotation", "type=\"Structure\"");
-      x.flt("w", q.w()), x.flt("x", q.x()), x.flt("y", q.y()), x.flt("z", q.z());
-      x.close("rotation");
-      x.open("translation", "type=\"Structure\"");
-      x.flt("x", t.x()), x.flt("y", t.y()), x.flt("z", t.z());
-      x.close("translation");
-      x.close("pose");
-    }
-    if (w.bounds) {  // all six, as Float (E57RefImpl reads them as FloatNode)
-      x.open("cartesianBounds", "type=\"Structure\"");
-      x.flt("xMinimum", w.bounds->min.x()), x.flt("xMaximum", w.bounds->max.x());
-      x.flt("yMinimum", w.bounds->min.y()), x.flt("yMaximum", w.bounds->max.y());
-      x.flt("zMinimum", w.bounds->min.z()), x.flt("zMaximum", w.bounds->max.z());
-      x.close("cartesianBounds");
-    }
-    if (w.rows || w.returns) {  // all six children, Integer (pitfall in §6)
-      const auto rows = w.rows.value_or(std::pair<std::int64_t, std::int64_t>{0, 0});
-      const auto cols = w.columns.value_or(std::pair<std::int64_t, std::int64_t>{0, 0});
-      const auto rets = w.returns.value_or(std::pair<std::int64_t, std::int64_t>{0, 0});
-      x.open("indexBounds", "type=\"Structure\"");
-      x.integer("rowMinimum", rows.first), x.integer("rowMaximum", rows.second);
-      x.integer("columnMinimum", cols.first), x.integer("columnMaximum", cols.second);
-      x.integer("returnMinimum", rets.first), x.integer("returnMaximum", rets.second);
-      x.close("indexBounds");
-    }
-    if (w.intensity) {
-      x.open("intensityLimits", "type=\"Structure\"");
-      if (w.intensity_integer) {
-        x.integer("intensityMinimum", static_cast<std::int64_t>(w.intensity->first));
-        x.integer("intensityMaximum", static_cast<std::int64_t>(w.intensity->second));
-      } else {
-        x.flt("intensityMinimum", w.intensity->first);
-        x.flt("intensityMaximum", w.intensity->second);
-      }
-      x.close("intensityLimits");
-    }
-    if (w.colors) {
-      x.open("colorLimits", "type=\"Structure\"");
-      for (const char* c : {"Red", "Green", "Blue"}) {
-        x.integer((std::string("color") + c + "Minimum").c_str(), 0);
-        x.integer((std::string("color") + c + "Maximum").c_str(), 255);
-      }
-      x.close("colorLimits");
-    }
-    x.open("points", "type=\"CompressedVector\" fileOffset=\"" + std::to_string(w.section_offset) +
-                         "\" recordCount=\"" + std::to_string(w.records) + "\"");
-    x.open("prototype", "type=\"Structure\"");
-    for (const FieldSpec& f : w.prototype) prototypeField(x, f);
-    x.close("prototype");
-    x.line("<codecs type=\"Vector\" allowHeterogeneousChildren=\"1\"/>");
-    x.close("points");
-    x.close("vectorChild");
-  }
+  for (const WrittenScan& w : scans) scanXml(x, w);
   x.close("data3D");
   x.line("<images2D type=\"Vector\" allowHeterogeneousChildren=\"1\"/>");
   x.s += "</e57Root>\n";

@@ -84,6 +84,34 @@ struct LasHeader {
 LasHeader parseHeader(std::span<const std::uint8_t> bytes, std::uint64_t file_size,
                       const std::filesystem::path& file);
 
+// --- the steps of parseHeader, in its order (each throws FileError at its field's byte) ---
+
+/// The "LASF" signature and at least the 227 bytes of a LAS 1.0-1.2 header in `bytes`.
+void checkSignatureAndSize(std::span<const std::uint8_t> bytes, std::uint64_t file_size,
+                           const std::filesystem::path& file);
+/// The fields of the first 227 bytes, as stored (no check).
+LasHeader loadHeaderFields(const std::uint8_t* p);
+/// Version 1.0 to 1.4 and a header size of at least what the version requires, within the
+/// file and within the `available` bytes read.
+void checkVersionAndHeaderSize(const LasHeader& h, std::size_t available, std::uint64_t file_size,
+                               const std::filesystem::path& file);
+/// The 1.3 waveform start and the 1.4 EVLR and 64-bit count fields, per h.version_minor.
+void loadVersionFields(LasHeader& h, const std::uint8_t* p);
+/// Not LAZ, a format 0..10 (a warning when the version does not define it) and a record
+/// length that holds the format's fields.
+void checkPointFormat(LasHeader& h, const std::filesystem::path& file);
+/// Finite, non-zero scale factors and finite offsets.
+void checkScaleAndOffset(const LasHeader& h, const std::filesystem::path& file);
+/// Offset to point data after the header and within the file.
+void checkOffsetToPoints(const LasHeader& h, std::uint64_t file_size, const std::filesystem::path& file);
+/// Sets h.point_count (LAS_FACTS section 2 rule, a warning when the 1.4 counts disagree) and
+/// returns the byte offset of the count it used.
+std::uint64_t choosePointCount(LasHeader& h);
+/// h.point_count records of h.record_length bytes fit between the point data and the end of
+/// the points (the EVLRs after them, else the end of the file); `count_at` names the count.
+void checkPointCount(const LasHeader& h, std::uint64_t count_at, std::uint64_t file_size,
+                     const std::filesystem::path& file);
+
 /// Serialises a header of h.header_size bytes (227 for 1.2, 375 for 1.4).
 std::vector<std::uint8_t> serializeHeader(const LasHeader& h);
 

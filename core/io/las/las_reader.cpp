@@ -63,8 +63,15 @@ Eigen::Vector3d chooseOffset(const LasHeader& h, const ByteSource& src) {
   return rounded;
 }
 
-Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
-                       const LasReadOptions& options, Progress* progress) {
+/// The header, the VLRs and the EVLRs, with the warnings of reading them.
+struct LasPrologue {
+  LasHeader header;
+  std::vector<LasVlr> vlrs;
+  std::vector<std::string> warnings;
+};
+
+/// Reads the header and the (E)VLRs; refuses LASzip data (its VLR, whatever the extension).
+LasPrologue readPrologue(const ByteSource& src, const std::filesystem::path& file) {
   const std::uint64_t size = src.size();
   // Header and VLRs: [0, offset_to_points), read once (or used in place for memory input).
   std::vector<std::uint8_t> owned;
@@ -79,17 +86,23 @@ Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
     }
   };
   view(std::min<std::uint64_t>(size, 1 << 16));
-  LasHeader h = parseHeader(prefix, size, file);
+  LasPrologue p{parseHeader(prefix, size, file), {}, {}};
+  const LasHeader& h = p.header;
   if (h.offset_to_points > prefix.size()) view(h.offset_to_points);
-  std::vector<std::string> warnings = h.warnings;
-  std::vector<LasVlr> vlrs = parseVlrs(prefix.first(h.offset_to_points), h, file);
-  parseEvlrs(src, h, file, vlrs, warnings);
-  for (const auto& v : vlrs)
+  p.warnings = h.warnings;
+  p.vlrs = parseVlrs(prefix.first(h.offset_to_points), h, file);
+  parseEvlrs(src, h, file, p.vlrs, p.warnings);
+  for (const auto& v : p.vlrs)
     if (v.user_id == "laszip encoded" && v.record_id == 22204)
       throw FileError(file, lazMessage("it carries the LASzip VLR"), atByte(v.at, "VLR"));
+  return p;
+}
 
-  const PointLayout layout = pointLayout(h.format());
-  const std::size_t extra_bytes = h.record_length - layout.min_size;
+/// The fields of the `extra_bytes` bytes after each record's format fields, from the first
+/// Extra Bytes VLR (LASF_Spec 4); none without it (a warning) or when options say so.
+std::vector<ExtraField> extraFields(const std::vector<LasVlr>& vlrs, std::size_t extra_bytes,
+                                    const LasReadOptions& options, const std::filesystem::path& file,
+                                    std::vector<std::string>& warnings) {
   std::vector<ExtraField> extras;
   const LasVlr* extra_vlr = nullptr;
   for (const auto& v : vlrs)
@@ -99,17 +112,11 @@ Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
                        " extra bytes per point without an Extra Bytes VLR; ignored");
   if (extra_vlr) extras = parseExtraBytes(*extra_vlr, extra_bytes, file, warnings);
   if (!options.extra_bytes) extras.clear();
+  return extras;
+}
 
-  Dataset d;
-  d.source = file;
-  d.format = "las";
-  d.coordinate_system = coordinateSystem(vlrs, h, warnings);
-  Scan scan;
-  scan.name = file.stem().string();
-  PointCloud& cloud = scan.cloud;
-  cloud.offset = chooseOffset(h, src);
-
-  PointDecoder decoder(h, std::move(extras), cloud);
+/// Decodes the h.point_count records in chunks of kChunkRecords (in place for memory input).
+void decodePoints(const ByteSource& src, const LasHeader& h, PointDecoder& decoder, Progress* progress) {
   const std::uint64_t n = h.point_count;
   std::vector<std::uint8_t> chunk;
   for (std::uint64_t first = 0; first < n; first += kChunkRecords) {
@@ -128,35 +135,35 @@ Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
     reportProgress(progress, static_cast<double>(first + count) / static_cast<double>(n),
                    "reading LAS points");
   }
-  cloud.dropNegligibleResiduals();
-  const bool rgb16 = decoder.finish();
-  if (decoder.badReturns() > 0)
-    warnings.push_back(std::to_string(decoder.badReturns()) +
-                       " points have a return number outside 1..number of returns (kept as "
-                       "stored)");
+}
 
-  // Header bounds are informative; a disagreement beyond scale rounding is reported.
-  const Bounds actual = decoder.worldBounds();
-  if (!actual.empty()) {
-    for (int a = 0; a < 3; ++a) {
-      const double tol = 2 * std::abs(h.scale[a]) + 1e-6 * std::abs(actual.max[a]);
-      if (!(std::abs(actual.min[a] - h.min[a]) <= tol && std::abs(actual.max[a] - h.max[a]) <= tol)) {
-        warnings.push_back("header bounds (min " + triple(h.min) + ", max " + triple(h.max) +
-                           ") disagree with the points (min " + num(actual.min.x()) + " " +
-                           num(actual.min.y()) + " " + num(actual.min.z()) + ", max " +
-                           num(actual.max.x()) + " " + num(actual.max.y()) + " " +
-                           num(actual.max.z()) + ")");
-        break;
-      }
+/// Header bounds are informative; a disagreement with the decoded points beyond scale
+/// rounding is reported as a warning.
+void checkHeaderBounds(const LasHeader& h, const Bounds& actual, std::vector<std::string>& warnings) {
+  if (actual.empty()) return;
+  for (int a = 0; a < 3; ++a) {
+    const double tol = 2 * std::abs(h.scale[a]) + 1e-6 * std::abs(actual.max[a]);
+    if (!(std::abs(actual.min[a] - h.min[a]) <= tol && std::abs(actual.max[a] - h.max[a]) <= tol)) {
+      warnings.push_back("header bounds (min " + triple(h.min) + ", max " + triple(h.max) +
+                         ") disagree with the points (min " + num(actual.min.x()) + " " +
+                         num(actual.min.y()) + " " + num(actual.min.z()) + ", max " +
+                         num(actual.max.x()) + " " + num(actual.max.y()) + " " +
+                         num(actual.max.z()) + ")");
+      return;
     }
   }
+}
 
-  auto& m = d.metadata;
+/// The facts `info` shows: header fields, how GPS time and colours are stored, every (E)VLR
+/// and the warnings (moved out of `warnings`).
+void addMetadata(std::vector<std::pair<std::string, std::string>>& m, const LasHeader& h,
+                 const PointLayout& layout, std::size_t extra_bytes, bool rgb16,
+                 const std::vector<LasVlr>& vlrs, std::vector<std::string>& warnings) {
   m.emplace_back("LAS version", std::to_string(h.version_major) + "." + std::to_string(h.version_minor));
   m.emplace_back("point format", std::to_string(h.format()));
   m.emplace_back("point record length", std::to_string(h.record_length) + " bytes (" +
                                             std::to_string(extra_bytes) + " extra)");
-  m.emplace_back("point count", std::to_string(n));
+  m.emplace_back("point count", std::to_string(h.point_count));
   if (!h.system_identifier.empty()) m.emplace_back("system identifier", h.system_identifier);
   if (!h.generating_software.empty()) m.emplace_back("generating software", h.generating_software);
   if (h.creation_year)
@@ -179,7 +186,35 @@ Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
     m.emplace_back(v.extended ? "EVLR " + std::to_string(++ne) : "VLR " + std::to_string(++nv),
                    vlrSummary(v));
   for (auto& w : warnings) m.emplace_back("warning", std::move(w));
+}
 
+Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
+                       const LasReadOptions& options, Progress* progress) {
+  LasPrologue p = readPrologue(src, file);
+  const LasHeader& h = p.header;
+  const PointLayout layout = pointLayout(h.format());
+  const std::size_t extra_bytes = h.record_length - layout.min_size;
+  std::vector<ExtraField> extras = extraFields(p.vlrs, extra_bytes, options, file, p.warnings);
+
+  Dataset d;
+  d.source = file;
+  d.format = "las";
+  d.coordinate_system = coordinateSystem(p.vlrs, h, p.warnings);
+  Scan scan;
+  scan.name = file.stem().string();
+  PointCloud& cloud = scan.cloud;
+  cloud.offset = chooseOffset(h, src);
+
+  PointDecoder decoder(h, std::move(extras), cloud);
+  decodePoints(src, h, decoder, progress);
+  cloud.dropNegligibleResiduals();
+  const bool rgb16 = decoder.finish();
+  if (decoder.badReturns() > 0)
+    p.warnings.push_back(std::to_string(decoder.badReturns()) +
+                         " points have a return number outside 1..number of returns (kept as "
+                         "stored)");
+  checkHeaderBounds(h, decoder.worldBounds(), p.warnings);
+  addMetadata(d.metadata, h, layout, extra_bytes, rgb16, p.vlrs, p.warnings);
   d.scans.push_back(std::move(scan));
   return d;
 }

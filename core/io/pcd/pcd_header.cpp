@@ -77,15 +77,69 @@ void checkNoHeaderAfterData(std::istream& in, const std::filesystem::path& path,
   }
 }
 
+/// PCL splits header lines at spaces, tabs and CRs only, and takes the first character of
+/// each TYPE word: other separators or longer TYPE words would make its layout differ from
+/// the one checked here (fuzz_pcd: a NULL read inside PCL for "TYPE FF F F").
+/// PCD headers are ASCII: a control byte (NUL, CR, VT, FF...) or a non-ASCII byte would also
+/// let PCL split the line differently (fuzz_pcd: a SEGV inside PCL for NULs in FIELDS).
+template <class Fail>
+void checkHeaderLineBytes(const std::string& line, Fail&& fail) {
+  for (unsigned char ch : line)
+    if ((ch < 0x20 && ch != '\t') || ch >= 0x7F) fail("control or non-ASCII byte in a header line");
+}
+
+/// Seen so far in the header: the layout, and whether WIDTH and POINTS were given.
+struct HeaderState {
+  PcdHeader h;
+  bool have_points = false, have_width = false;
+};
+
+/// The values of a layout or size keyword line (every keyword but DATA) into `st`; false for
+/// a word that is not a PCD header keyword.
+template <class Fail>
+bool parseKeywordLine(const std::string& key, std::istringstream& words, HeaderState& st, Fail&& fail) {
+  PcdHeader& h = st.h;
+  auto readAll = [&](auto& vec) {
+    typename std::decay_t<decltype(vec)>::value_type v;
+    while (words >> v) vec.push_back(v);
+    if (!words.eof()) fail("malformed " + key + " line");
+  };
+  if (key == "VERSION" || key == "VIEWPOINT") {
+  } else if (key == "FIELDS" || key == "COLUMNS") {
+    readAll(h.fields);
+  } else if (key == "SIZE") {
+    readAll(h.sizes);
+  } else if (key == "TYPE") {
+    std::vector<std::string> types;
+    readAll(types);
+    for (const auto& t : types) {
+      if (t.size() != 1) fail("TYPE '" + t + "' is not one of F, I, U");
+      h.types.push_back(t[0]);
+    }
+  } else if (key == "COUNT") {
+    readAll(h.counts);
+  } else if (key == "WIDTH") {
+    if (!parseDimension(words, h.width)) fail("WIDTH is not a whole number in 0 .. 4294967295");
+    st.have_width = true;
+  } else if (key == "HEIGHT") {
+    if (!parseDimension(words, h.height)) fail("HEIGHT is not a whole number in 0 .. 4294967295");
+  } else if (key == "POINTS") {
+    if (!parseDimension(words, h.points)) fail("POINTS is not a whole number in 0 .. 4294967295");
+    st.have_points = true;
+  } else {
+    return false;
+  }
+  return true;
+}
+
 PcdHeader checkHeader(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(path, "cannot open file");
   const auto file_size = std::filesystem::file_size(path);
   if (file_size == 0) throw FileError(path, "file is empty (0 bytes)");
-  PcdHeader h;
+  HeaderState st;
   std::string line;
   std::uint64_t line_no = 0, offset = 0;
-  bool have_points = false, have_width = false;
   while (std::getline(in, line)) {
     ++line_no;
     const std::uint64_t line_start = offset;
@@ -105,51 +159,19 @@ PcdHeader checkHeader(const std::filesystem::path& path) {
       loc.byte_offset = line_start;
       throw FileError(path, what + ": \"" + line.substr(0, 80) + "\"", loc);
     };
-    // PCL splits header lines at spaces, tabs and CRs only, and takes the first character of
-    // each TYPE word: other separators or longer TYPE words would make its layout differ from
-    // the one checked here (fuzz_pcd: a NULL read inside PCL for "TYPE FF F F").
-    // PCD headers are ASCII: a control byte (NUL, CR, VT, FF...) or a non-ASCII byte would also
-    // let PCL split the line differently (fuzz_pcd: a SEGV inside PCL for NULs in FIELDS).
-    for (unsigned char ch : line)
-      if ((ch < 0x20 && ch != '\t') || ch >= 0x7F) fail("control or non-ASCII byte in a header line");
-    auto readAll = [&](auto& vec) {
-      typename std::decay_t<decltype(vec)>::value_type v;
-      while (words >> v) vec.push_back(v);
-      if (!words.eof()) fail("malformed " + key + " line");
-    };
-    if (key == "VERSION") {
-    } else if (key == "FIELDS" || key == "COLUMNS") {
-      readAll(h.fields);
-    } else if (key == "SIZE") {
-      readAll(h.sizes);
-    } else if (key == "TYPE") {
-      std::vector<std::string> types;
-      readAll(types);
-      for (const auto& t : types) {
-        if (t.size() != 1) fail("TYPE '" + t + "' is not one of F, I, U");
-        h.types.push_back(t[0]);
-      }
-    } else if (key == "COUNT") {
-      readAll(h.counts);
-    } else if (key == "WIDTH") {
-      if (!parseDimension(words, h.width)) fail("WIDTH is not a whole number in 0 .. 4294967295");
-      have_width = true;
-    } else if (key == "HEIGHT") {
-      if (!parseDimension(words, h.height)) fail("HEIGHT is not a whole number in 0 .. 4294967295");
-    } else if (key == "VIEWPOINT") {
-    } else if (key == "POINTS") {
-      if (!parseDimension(words, h.points)) fail("POINTS is not a whole number in 0 .. 4294967295");
-      have_points = true;
-    } else if (key == "DATA") {
+    checkHeaderLineBytes(line, fail);
+    if (key == "DATA") {
+      PcdHeader& h = st.h;
       words >> h.data;
       if (h.data != "ascii" && h.data != "binary" && h.data != "binary_compressed")
         fail("unknown DATA type (expected ascii, binary or binary_compressed)");
       h.data_offset = offset;
       h.data_line = line_no + 1;
-      checkFields(h, have_width, have_points, fail);
+      checkFields(h, st.have_width, st.have_points, fail);
       checkNoHeaderAfterData(in, path, line_no, offset);
       return h;
-    } else {
+    }
+    if (!parseKeywordLine(key, words, st, fail)) {
       if (line_no == 1 && line.size() > 0)
         throw FileError(path, "not a PCD file: the first line is not a PCD header keyword", atByte(0));
       fail("unknown PCD header keyword '" + key + "'");

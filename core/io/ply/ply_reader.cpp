@@ -247,6 +247,39 @@ Eigen::Vector3d binaryPosition(const std::vector<Slot>& slots, const char* recor
 const char* const kFaceIdNames[] = {"element_id", "element", "object_id", "segment_id"};
 
 /// Reads one PLY file. Holds the state shared by the element readers.
+/// Moves the kExtraNames values read as doubles into their PointCloud columns (saturated to
+/// each column's type) and frees them.
+void storeExtras(const std::vector<std::string>& names, std::vector<Column<double>>& values, PointCloud& cloud) {
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const auto& v = values[k];
+    auto fill = [&](auto& dst) {
+      dst.resize(v.size());
+      for (std::size_t i = 0; i < v.size(); ++i)
+        dst[i] = saturate<typename std::decay_t<decltype(dst)>::value_type>(v[i]);
+    };
+    const std::string& nm = names[k];
+    if (nm == "return_index") fill(cloud.return_index);
+    else if (nm == "return_count") fill(cloud.return_count);
+    else if (nm == "timestamp" || nm == "gps_time") fill(cloud.timestamps);
+    else if (nm == "row") fill(cloud.row);
+    else if (nm == "column") fill(cloud.column);
+    else if (nm == "classification") fill(cloud.classification);
+    else if (nm == "scan_id") fill(cloud.scan_id);
+    Column<double>().swap(values[k]);
+  }
+}
+
+/// What the vertex properties become: one Slot per property, and which optional columns
+/// the cloud gets.
+struct VertexLayout {
+  std::vector<Slot> slots;
+  bool has_normals = false;
+  bool has_colors = false;
+  int intensity = -1;  ///< property index, -1 when none
+  std::vector<std::string> extra_names;  ///< kExtraNames present, in Slot::scalar order
+  bool double_coords = false;            ///< some coordinate is a double
+};
+
 class Reader {
  public:
   Reader(const std::filesystem::path& path, Progress* progress)
@@ -408,13 +441,13 @@ class Reader {
     }
   }
 
-  void readVertices(const Element& e) {
-    if (saw_vertex_) throw FileError(path_, "PLY file has two \"vertex\" elements", atLine(e.header_line, "PLY header"));
-    saw_vertex_ = true;
-    PointCloud& cloud = out_.vertices;
-    const std::size_t n = static_cast<std::size_t>(e.count);
-    // Map properties to columns.
-    std::vector<Slot> slots(e.properties.size());
+  /// Maps the vertex properties to columns: x y z (required), normals and colours when all
+  /// three are present, intensity, kExtraNames, and every other property a scalar field of
+  /// `cloud` (added here); with each property's type and byte offset in a fixed-size record.
+  VertexLayout mapVertexProperties(const Element& e, PointCloud& cloud) {
+    VertexLayout l;
+    std::vector<Slot>& slots = l.slots;
+    slots.resize(e.properties.size());
     std::map<std::string, int> index;
     for (std::size_t i = 0; i < e.properties.size(); ++i)
       if (!e.properties[i].is_list) index.emplace(lower(e.properties[i].name), static_cast<int>(i));
@@ -435,19 +468,17 @@ class Reader {
     if (!mapTriple(Target::Position, {{"x"}, {"y"}, {"z"}}))
       throw FileError(path_, "vertex element has no x, y and z properties",
                       atLine(e.header_line, "PLY header"));
-    const bool has_normals = mapTriple(Target::Normal, {{"nx", "normal_x"}, {"ny", "normal_y"}, {"nz", "normal_z"}});
-    const bool has_colors = mapTriple(Target::Color, {{"red", "diffuse_red", "r"}, {"green", "diffuse_green", "g"},
-                                                      {"blue", "diffuse_blue", "b"}});
-    const int ii = findAny({"intensity", "scalar_intensity"});
-    if (ii >= 0) slots[ii].target = Target::Intensity;
-    std::vector<std::string> extra_names;
+    l.has_normals = mapTriple(Target::Normal, {{"nx", "normal_x"}, {"ny", "normal_y"}, {"nz", "normal_z"}});
+    l.has_colors = mapTriple(Target::Color, {{"red", "diffuse_red", "r"}, {"green", "diffuse_green", "g"},
+                                             {"blue", "diffuse_blue", "b"}});
+    l.intensity = findAny({"intensity", "scalar_intensity"});
+    if (l.intensity >= 0) slots[l.intensity].target = Target::Intensity;
     for (const char* nm : kExtraNames)
       if (int k = findAny({nm}); k >= 0) {
         slots[k].target = Target::Extra;
-        slots[k].scalar = extra_names.size();
-        extra_names.emplace_back(nm);
+        slots[k].scalar = l.extra_names.size();
+        l.extra_names.emplace_back(nm);
       }
-    std::vector<Column<double>> extra_values(extra_names.size());
     std::size_t offset = 0;
     std::size_t n_scalars = 0;
     for (std::size_t i = 0; i < slots.size(); ++i) {
@@ -463,84 +494,79 @@ class Reader {
     }
     // Double coordinates: offset from a sample of the first records (offsetFromSample), and
     // a residual column so every double keeps its exact value (float sources need neither).
-    const bool double_coords = std::any_of(slots.begin(), slots.end(), [](const Slot& s) {
+    l.double_coords = std::any_of(slots.begin(), slots.end(), [](const Slot& s) {
       return s.target == Target::Position && s.type == Type::Float64;
     });
+    return l;
+  }
 
-    // Size the columns. resizeForOverwrite leaves the values uninitialised (every record writes
-    // every column) and Column<T> maps large columns on huge pages, so the threads that convert the records
+  /// Sizes the columns of `n` points and returns where the records go.
+  static Columns sizeColumns(PointCloud& cloud, std::size_t n, const VertexLayout& l,
+                             std::vector<Column<double>>& extra_values) {
+    // resizeForOverwrite leaves the values uninitialised (every record writes every column)
+    // and Column<T> maps large columns on huge pages, so the threads that convert the records
     // touch them first, window by window: the kernel's zeroing is spread evenly over the
     // threads and each huge page is still in cache when the converted values overwrite its
     // zeros (zeroing colours and intensity in a pass of their own first cost 70 MB of extra
     // memory traffic and 22% of the read time on 10M points).
     resizeForOverwrite(cloud.positions, n);
-    if (double_coords) resizeForOverwrite(cloud.position_residuals, n);
-    if (has_normals) resizeForOverwrite(cloud.normals, n);
-    if (has_colors) resizeForOverwrite(cloud.colors, n);
-    if (ii >= 0) resizeForOverwrite(cloud.intensity, n);
+    if (l.double_coords) resizeForOverwrite(cloud.position_residuals, n);
+    if (l.has_normals) resizeForOverwrite(cloud.normals, n);
+    if (l.has_colors) resizeForOverwrite(cloud.colors, n);
+    if (l.intensity >= 0) resizeForOverwrite(cloud.intensity, n);
     for (auto& f : cloud.scalar_fields) resizeForOverwrite(f.values, n);
     for (auto& v : extra_values) resizeForOverwrite(v, n);
     Columns c;
     c.pos = cloud.positions.empty() ? nullptr : cloud.positions[0].data();
     c.res = cloud.position_residuals.empty() ? nullptr : cloud.position_residuals[0].data();
-    c.nrm = has_normals && n ? cloud.normals[0].data() : nullptr;
-    c.rgb = has_colors && n ? cloud.colors[0].data() : nullptr;
-    c.inten = ii >= 0 ? cloud.intensity.data() : nullptr;
+    c.nrm = l.has_normals && n ? cloud.normals[0].data() : nullptr;
+    c.rgb = l.has_colors && n ? cloud.colors[0].data() : nullptr;
+    c.inten = l.intensity >= 0 ? cloud.intensity.data() : nullptr;
     for (auto& f : cloud.scalar_fields) c.scalars.push_back(f.values.data());
     for (auto& v : extra_values) c.extras.push_back(v.data());
-    struct StoreExtras {  // on every exit path that returns normally
-      std::vector<std::string>& names;
-      std::vector<Column<double>>& values;
-      PointCloud& cloud;
-      void operator()() {
-        for (std::size_t k = 0; k < names.size(); ++k) {
-          const auto& v = values[k];
-          auto fill = [&](auto& dst) {
-            dst.resize(v.size());
-            for (std::size_t i = 0; i < v.size(); ++i)
-              dst[i] = saturate<typename std::decay_t<decltype(dst)>::value_type>(v[i]);
-          };
-          const std::string& nm = names[k];
-          if (nm == "return_index") fill(cloud.return_index);
-          else if (nm == "return_count") fill(cloud.return_count);
-          else if (nm == "timestamp" || nm == "gps_time") fill(cloud.timestamps);
-          else if (nm == "row") fill(cloud.row);
-          else if (nm == "column") fill(cloud.column);
-          else if (nm == "classification") fill(cloud.classification);
-          else if (nm == "scan_id") fill(cloud.scan_id);
-          Column<double>().swap(values[k]);
-        }
-      }
-    } store_extras{extra_names, extra_values, cloud};
+    return c;
+  }
 
-    if (binary() && !e.hasLists()) {
-      const std::size_t stride = e.recordSize();
-      const bool sw = swap();
-      const std::uint64_t start = in_.offset();
-      if (n > 0 && in_.fill(stride) < stride) truncated(e, 0);
-      if (double_coords && n > 0) {
-        const std::size_t k = std::min({n, kOffsetSampleSize, std::max<std::size_t>(1, kWindowBytes / stride)});
-        const std::size_t got = std::min(k, in_.fill(k * stride) / stride);
-        std::vector<Eigen::Vector3d> sample(got);
-        for (std::size_t j = 0; j < got; ++j)
-          sample[j] = sw ? binaryPosition<true>(slots, in_.data() + j * stride)
-                         : binaryPosition<false>(slots, in_.data() + j * stride);
-        c.offset = offsetFromSample(std::move(sample));
-      }
-      cloud.offset = c.offset;
-      const std::uint64_t end = start + static_cast<std::uint64_t>(n) * stride;
-      if (end > in_.fileSize())
-        truncated(e, (in_.fileSize() - start) / stride, in_.fileSize());
-      readFixedRecords(start, n, stride, sw, slots, c);
-      in_.seek(end);
-      cloud.dropNegligibleResiduals();
-      store_extras();
-      return;
+  /// Binary vertex records without lists: the offset from a sample of the first records (with
+  /// double coordinates), then all records at their fixed stride.
+  void readFixedVertices(const Element& e, std::size_t n, const VertexLayout& l, Columns& c, PointCloud& cloud) {
+    const std::size_t stride = e.recordSize();
+    const bool sw = swap();
+    const std::uint64_t start = in_.offset();
+    if (n > 0 && in_.fill(stride) < stride) truncated(e, 0);
+    if (l.double_coords && n > 0) {
+      const std::size_t k = std::min({n, kOffsetSampleSize, std::max<std::size_t>(1, kWindowBytes / stride)});
+      const std::size_t got = std::min(k, in_.fill(k * stride) / stride);
+      std::vector<Eigen::Vector3d> sample(got);
+      for (std::size_t j = 0; j < got; ++j)
+        sample[j] = sw ? binaryPosition<true>(l.slots, in_.data() + j * stride)
+                       : binaryPosition<false>(l.slots, in_.data() + j * stride);
+      c.offset = offsetFromSample(std::move(sample));
     }
-    readRecords(e, n, slots, double_coords, c);
     cloud.offset = c.offset;
+    const std::uint64_t end = start + static_cast<std::uint64_t>(n) * stride;
+    if (end > in_.fileSize())
+      truncated(e, (in_.fileSize() - start) / stride, in_.fileSize());
+    readFixedRecords(start, n, stride, sw, l.slots, c);
+    in_.seek(end);
+  }
+
+  void readVertices(const Element& e) {
+    if (saw_vertex_) throw FileError(path_, "PLY file has two \"vertex\" elements", atLine(e.header_line, "PLY header"));
+    saw_vertex_ = true;
+    PointCloud& cloud = out_.vertices;
+    const std::size_t n = static_cast<std::size_t>(e.count);
+    const VertexLayout l = mapVertexProperties(e, cloud);
+    std::vector<Column<double>> extra_values(l.extra_names.size());
+    Columns c = sizeColumns(cloud, n, l, extra_values);
+    if (binary() && !e.hasLists()) {
+      readFixedVertices(e, n, l, c, cloud);
+    } else {
+      readRecords(e, n, l.slots, l.double_coords, c);
+      cloud.offset = c.offset;
+    }
     cloud.dropNegligibleResiduals();
-    store_extras();
+    storeExtras(l.extra_names, extra_values, cloud);  // only when the records were read
   }
 
   /// ASCII or list-carrying vertex records, one by one. With double coordinates the first

@@ -9,11 +9,11 @@
 
 #include "common/error.hpp"
 #include "io/text/text_io.hpp"
+#include "io/text/text_layout.hpp"
 
 namespace plumb {
+namespace text {
 namespace {
-
-enum class Col { X, Y, Z, R, G, B, I, NX, NY, NZ, Scalar };
 
 std::string readWhole(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -30,13 +30,6 @@ std::string_view trim(std::string_view s) {
 }
 
 bool isComment(std::string_view line) { return line.starts_with("#") || line.starts_with("//"); }
-
-/// ',' ';' or ' ' (whitespace runs) for a line.
-char detectDelimiter(std::string_view line) {
-  if (line.find(';') != std::string_view::npos) return ';';
-  if (line.find(',') != std::string_view::npos) return ',';
-  return ' ';
-}
 
 void split(std::string_view line, char delim, std::vector<std::string_view>& out) {
   out.clear();
@@ -93,43 +86,6 @@ bool parseNumber(std::string_view tok, bool decimal_comma, double& v) {
   return ec == std::errc() && p == tok.data() + tok.size();
 }
 
-Col columnFromName(std::string name) {
-  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
-  name.erase(std::remove(name.begin(), name.end(), '"'), name.end());
-  if (name.starts_with("//")) name.erase(0, 2);
-  if (name == "x") return Col::X;
-  if (name == "y") return Col::Y;
-  if (name == "z") return Col::Z;
-  if (name == "r" || name == "red") return Col::R;
-  if (name == "g" || name == "green") return Col::G;
-  if (name == "b" || name == "blue") return Col::B;
-  if (name == "i" || name == "intensity" || name == "scalar_intensity" || name == "reflectance") return Col::I;
-  if (name == "nx" || name == "normal_x") return Col::NX;
-  if (name == "ny" || name == "normal_y") return Col::NY;
-  if (name == "nz" || name == "normal_z") return Col::NZ;
-  return Col::Scalar;
-}
-
-/// Column roles guessed from the column count and a sample of rows (see text_io.hpp).
-std::vector<Col> guessColumns(std::size_t ncols, const std::vector<std::vector<double>>& sample) {
-  auto colorLike = [&](std::size_t first) {
-    for (const auto& row : sample)
-      for (std::size_t k = first; k < first + 3; ++k)
-        if (!(row[k] >= 0 && row[k] <= 255 && row[k] == std::floor(row[k]))) return false;
-    return true;
-  };
-  std::vector<Col> c{Col::X, Col::Y, Col::Z};
-  auto add = [&](std::initializer_list<Col> cols) { c.insert(c.end(), cols); };
-  if (ncols == 4) add({Col::I});
-  else if (ncols == 6) colorLike(3) ? add({Col::R, Col::G, Col::B}) : add({Col::NX, Col::NY, Col::NZ});
-  else if (ncols == 7) colorLike(4) ? add({Col::I, Col::R, Col::G, Col::B}) : add({Col::R, Col::G, Col::B, Col::I});
-  else if (ncols == 9)
-    colorLike(3) ? add({Col::R, Col::G, Col::B, Col::NX, Col::NY, Col::NZ})
-                 : add({Col::NX, Col::NY, Col::NZ, Col::R, Col::G, Col::B});
-  while (c.size() < ncols) c.push_back(Col::Scalar);
-  return c;
-}
-
 /// x y z of a row whose column roles are `cols`.
 Eigen::Vector3d positionOf(const std::vector<Col>& cols, const std::vector<double>& row) {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
@@ -164,166 +120,263 @@ void forEachLine(const std::string& text, std::size_t pos, std::uint64_t line_no
   }
 }
 
+/// Colour / normal triples only when complete; otherwise they stay scalar fields.
+void keepCompleteTriple(std::vector<Col>& cols, Col a, Col b, Col c) {
+  const bool all = std::count(cols.begin(), cols.end(), a) == 1 && std::count(cols.begin(), cols.end(), b) == 1 &&
+                   std::count(cols.begin(), cols.end(), c) == 1;
+  if (!all) std::replace_if(cols.begin(), cols.end(), [&](Col x) { return x == a || x == b || x == c; }, Col::Scalar);
+}
+
+/// The first intensity column is the intensity; later ones are scalar fields.
+void keepFirstIntensity(std::vector<Col>& cols) {
+  bool seen_i = false;
+  for (auto& c : cols)
+    if (c == Col::I) {
+      if (seen_i) c = Col::Scalar;
+      seen_i = true;
+    }
+}
+
+/// Pass 1, one non-empty line: a header comment, a header line, a PTS count line or a data
+/// row (sampled). Returns false once the sample is full.
+bool layoutLine(TextLayout& t, const Line& ln, std::string_view line, std::vector<std::string_view>& toks,
+                const std::filesystem::path& path) {
+  if (isComment(line)) {
+    if (t.data_pos == std::string::npos && t.names.empty())
+      if (auto names = commentHeaderNames(line)) t.names = std::move(*names);
+    return true;
+  }
+  const char d = t.delim ? t.delim : detectDelimiter(line);
+  splitChecked(line, d, toks, path, ln.number);
+  std::vector<double> vals(toks.size());
+  bool numeric = !toks.empty();
+  for (std::size_t k = 0; k < toks.size() && numeric; ++k) numeric = parseNumber(toks[k], d == ';', vals[k]);
+  if (t.data_pos == std::string::npos) {
+    if (numeric && toks.size() == 1 && vals[0] == std::floor(vals[0])) return true;  // PTS count
+    if (!numeric) {
+      if (!t.names.empty() || t.sample.size() > 0)
+        throw FileError(path, "'" + std::string(line.substr(0, 60)) + "' is neither a header nor numbers",
+                        atLine(ln.number));
+      t.names.assign(toks.begin(), toks.end());
+      return true;
+    }
+    t.delim = d;
+    t.ncols = toks.size();
+    t.data_pos = ln.offset;
+    t.data_line = ln.number;
+  }
+  if (numeric && toks.size() == t.ncols) t.sample.push_back(std::move(vals));
+  return t.sample.size() < 1000;
+}
+
 }  // namespace
 
-Dataset readText(const std::filesystem::path& path, Progress* progress) {
-  const std::string text = readWhole(path);
+char detectDelimiter(std::string_view line) {
+  if (line.find(';') != std::string_view::npos) return ';';
+  if (line.find(',') != std::string_view::npos) return ',';
+  return ' ';
+}
+
+Col columnFromName(std::string name) {
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+  name.erase(std::remove(name.begin(), name.end(), '"'), name.end());
+  if (name.starts_with("//")) name.erase(0, 2);
+  if (name == "x") return Col::X;
+  if (name == "y") return Col::Y;
+  if (name == "z") return Col::Z;
+  if (name == "r" || name == "red") return Col::R;
+  if (name == "g" || name == "green") return Col::G;
+  if (name == "b" || name == "blue") return Col::B;
+  if (name == "i" || name == "intensity" || name == "scalar_intensity" || name == "reflectance") return Col::I;
+  if (name == "nx" || name == "normal_x") return Col::NX;
+  if (name == "ny" || name == "normal_y") return Col::NY;
+  if (name == "nz" || name == "normal_z") return Col::NZ;
+  return Col::Scalar;
+}
+
+std::optional<std::vector<std::string>> commentHeaderNames(std::string_view comment) {
+  const std::string_view body = trim(comment.substr(comment.starts_with("//") ? 2 : 1));
+  std::vector<std::string_view> toks;
+  split(body, detectDelimiter(body), toks);
+  int xyz = 0;
+  for (auto t : toks) xyz += static_cast<int>(columnFromName(std::string(t)) <= Col::Z);
+  if (xyz != 3 || toks.size() > kMaxColumns) return std::nullopt;
+  return std::vector<std::string>(toks.begin(), toks.end());
+}
+
+std::vector<Col> guessColumns(std::size_t ncols, const std::vector<std::vector<double>>& sample) {
+  auto colorLike = [&](std::size_t first) {
+    for (const auto& row : sample)
+      for (std::size_t k = first; k < first + 3; ++k)
+        if (!(row[k] >= 0 && row[k] <= 255 && row[k] == std::floor(row[k]))) return false;
+    return true;
+  };
+  std::vector<Col> c{Col::X, Col::Y, Col::Z};
+  auto add = [&](std::initializer_list<Col> cols) { c.insert(c.end(), cols); };
+  if (ncols == 4) add({Col::I});
+  else if (ncols == 6) colorLike(3) ? add({Col::R, Col::G, Col::B}) : add({Col::NX, Col::NY, Col::NZ});
+  else if (ncols == 7) colorLike(4) ? add({Col::I, Col::R, Col::G, Col::B}) : add({Col::R, Col::G, Col::B, Col::I});
+  else if (ncols == 9)
+    colorLike(3) ? add({Col::R, Col::G, Col::B, Col::NX, Col::NY, Col::NZ})
+                 : add({Col::NX, Col::NY, Col::NZ, Col::R, Col::G, Col::B});
+  while (c.size() < ncols) c.push_back(Col::Scalar);
+  return c;
+}
+
+std::vector<Col> rolesFromHeader(const std::vector<std::string>& names, std::size_t ncols,
+                                 std::uint64_t data_line, const std::filesystem::path& path) {
+  if (names.size() != ncols)
+    throw FileError(path, "the header names " + std::to_string(names.size()) + " columns but data lines have " +
+                              std::to_string(ncols) + " values",
+                    atLine(data_line));
+  std::vector<Col> cols;
+  for (const auto& nm : names) cols.push_back(columnFromName(nm));
+  for (Col need : {Col::X, Col::Y, Col::Z})
+    if (std::count(cols.begin(), cols.end(), need) != 1)
+      throw FileError(path, "the header must name exactly one x, one y and one z column", atLine(data_line - 1));
+  keepCompleteTriple(cols, Col::R, Col::G, Col::B);
+  keepCompleteTriple(cols, Col::NX, Col::NY, Col::NZ);
+  keepFirstIntensity(cols);
+  return cols;
+}
+
+TextLayout scanLayout(const std::string& text, const std::filesystem::path& path) {
+  TextLayout t;
+  std::vector<std::string_view> toks;
+  forEachLine(text, 0, 1, path, [&](const Line& ln) {
+    const std::string_view line = trim(ln.text);
+    return line.empty() || layoutLine(t, ln, line, toks, path);
+  });
+  if (t.data_pos == std::string::npos)
+    throw FileError(path, "no data lines (only header or comment lines)", atLine(1));
+  if (t.ncols < 3)
+    throw FileError(path, "data lines have " + std::to_string(t.ncols) + " value(s); at least x y z are needed",
+                    atLine(t.data_line));
+  return t;
+}
+
+namespace {
+
+/// Refuses an empty file and binary content (a NUL byte in the first 64 KiB).
+void checkIsText(const std::string& text, const std::filesystem::path& path) {
   if (text.empty()) throw FileError(path, "file is empty (0 bytes)");
   const std::size_t probe = std::min<std::size_t>(text.size(), 65536);
   if (const void* nul = std::memchr(text.data(), '\0', probe))
     throw FileError(path, "binary content (NUL byte), not a text point file",
                     atByte(static_cast<std::uint64_t>(static_cast<const char*>(nul) - text.data())));
+}
 
-  // Pass 1: header, delimiter, column count and a sample of data rows.
-  std::vector<std::string> names;
-  char delim = 0;
-  std::size_t ncols = 0;
-  std::size_t data_pos = std::string::npos;
-  std::uint64_t data_line = 0;
-  std::vector<std::vector<double>> sample;
-  std::vector<std::string_view> toks;
-  forEachLine(text, 0, 1, path, [&](const Line& ln) {
-    std::string_view line = trim(ln.text);
-    if (line.empty()) return true;
-    if (isComment(line)) {
-      if (data_pos == std::string::npos && names.empty()) {
-        std::string_view body = trim(line.substr(line.starts_with("//") ? 2 : 1));
-        split(body, detectDelimiter(body), toks);
-        int xyz = 0;
-        for (auto t : toks) xyz += static_cast<int>(columnFromName(std::string(t)) <= Col::Z);
-        if (xyz == 3 && toks.size() <= kMaxColumns) names.assign(toks.begin(), toks.end());
-      }
-      return true;
-    }
-    const char d = delim ? delim : detectDelimiter(line);
-    splitChecked(line, d, toks, path, ln.number);
-    std::vector<double> vals(toks.size());
-    bool numeric = !toks.empty();
-    for (std::size_t k = 0; k < toks.size() && numeric; ++k) numeric = parseNumber(toks[k], d == ';', vals[k]);
-    if (data_pos == std::string::npos) {
-      if (numeric && toks.size() == 1 && vals[0] == std::floor(vals[0])) return true;  // PTS count
-      if (!numeric) {
-        if (!names.empty() || sample.size() > 0)
-          throw FileError(path, "'" + std::string(line.substr(0, 60)) + "' is neither a header nor numbers",
-                          atLine(ln.number));
-        names.assign(toks.begin(), toks.end());
-        return true;
-      }
-      delim = d;
-      ncols = toks.size();
-      data_pos = ln.offset;
-      data_line = ln.number;
-    }
-    if (numeric && toks.size() == ncols) sample.push_back(std::move(vals));
-    return sample.size() < 1000;
-  });
-  if (data_pos == std::string::npos)
-    throw FileError(path, "no data lines (only header or comment lines)", atLine(1));
-  if (ncols < 3)
-    throw FileError(path, "data lines have " + std::to_string(ncols) + " value(s); at least x y z are needed",
-                    atLine(data_line));
-
-  std::vector<Col> cols;
-  if (!names.empty()) {
-    if (names.size() != ncols)
-      throw FileError(path, "the header names " + std::to_string(names.size()) + " columns but data lines have " +
-                                std::to_string(ncols) + " values",
-                      atLine(data_line));
-    for (const auto& nm : names) cols.push_back(columnFromName(nm));
-    for (Col need : {Col::X, Col::Y, Col::Z})
-      if (std::count(cols.begin(), cols.end(), need) != 1)
-        throw FileError(path, "the header must name exactly one x, one y and one z column", atLine(data_line - 1));
-    // Colour / normal triples only when complete; otherwise keep them as scalar fields.
-    auto complete = [&](Col a, Col b, Col c) {
-      const bool all = std::count(cols.begin(), cols.end(), a) == 1 && std::count(cols.begin(), cols.end(), b) == 1 &&
-                       std::count(cols.begin(), cols.end(), c) == 1;
-      if (!all) std::replace_if(cols.begin(), cols.end(), [&](Col x) { return x == a || x == b || x == c; }, Col::Scalar);
-    };
-    complete(Col::R, Col::G, Col::B);
-    complete(Col::NX, Col::NY, Col::NZ);
-    bool seen_i = false;
-    for (auto& c : cols)
-      if (c == Col::I) {
-        if (seen_i) c = Col::Scalar;
-        seen_i = true;
-      }
-  } else {
-    cols = guessColumns(ncols, sample);
-  }
-
-  // Pass 2: all data rows into the columns.
-  Dataset d;
-  d.source = path;
-  d.format = "text";
-  Scan scan;
-  scan.name = path.stem().string();
-  PointCloud& c = scan.cloud;
-  const auto has = [&](Col x) { return std::find(cols.begin(), cols.end(), x) != cols.end(); };
-  std::vector<ScalarField*> scalar_of(ncols, nullptr);
-  for (std::size_t k = 0; k < ncols; ++k)
+/// Prepares `c` for the rows: one scalar field per Scalar column (named by the header, else
+/// "column N"), returned per column (nullptr for the others), and the offset.
+std::vector<ScalarField*> prepareCloud(PointCloud& c, const std::vector<Col>& cols, const TextLayout& t) {
+  std::vector<ScalarField*> scalar_of(t.ncols, nullptr);
+  for (std::size_t k = 0; k < t.ncols; ++k)
     if (cols[k] == Col::Scalar)
-      c.scalar_fields.push_back({names.empty() ? "column " + std::to_string(k + 1) : names[k], {}});
-  for (std::size_t k = 0, s = 0; k < ncols; ++k)
+      c.scalar_fields.push_back({t.names.empty() ? "column " + std::to_string(k + 1) : t.names[k], {}});
+  for (std::size_t k = 0, s = 0; k < t.ncols; ++k)
     if (cols[k] == Col::Scalar) scalar_of[k] = &c.scalar_fields[s++];
   // Offset from the sampled rows (robust to an odd first row); every row keeps its exact
   // double value through position residuals.
-  {
-    std::vector<Eigen::Vector3d> xyz;
-    for (const auto& row : sample) xyz.push_back(positionOf(cols, row));
-    c.offset = offsetFromSample(std::move(xyz));
+  std::vector<Eigen::Vector3d> xyz;
+  for (const auto& row : t.sample) xyz.push_back(positionOf(cols, row));
+  c.offset = offsetFromSample(std::move(xyz));
+  return scalar_of;
+}
+
+/// Pass 2, the values of one non-empty, non-comment line into `vals`; false for a PTS block
+/// count line. `count` is the number of points read so far (named in errors).
+bool parseDataRow(std::string_view line, const Line& ln, const TextLayout& t, std::uint64_t count,
+                  std::vector<std::string_view>& toks, std::vector<double>& vals, const std::filesystem::path& path) {
+  splitChecked(line, t.delim, toks, path, ln.number);
+  if (toks.size() == 1 && t.ncols > 1) {  // PTS block count line
+    double v;
+    if (parseNumber(toks[0], false, v) && v == std::floor(v)) return false;
   }
-  std::vector<double> vals(ncols);
+  if (toks.size() != t.ncols)
+    throw FileError(path, "expected " + std::to_string(t.ncols) + " values, found " + std::to_string(toks.size()),
+                    atLine(ln.number, "point " + std::to_string(count)));
+  for (std::size_t k = 0; k < t.ncols; ++k)
+    if (!parseNumber(toks[k], t.delim == ';', vals[k]))
+      throw FileError(path, "'" + std::string(toks[k]) + "' is not a number (column " + std::to_string(k + 1) + ")",
+                      atLine(ln.number, "point " + std::to_string(count)));
+  return true;
+}
+
+/// Appends the point of one row's values to `c`.
+void appendPoint(PointCloud& c, const std::vector<Col>& cols, const std::vector<double>& vals,
+                 const std::vector<ScalarField*>& scalar_of, bool has_rgb, bool has_normals) {
+  const Eigen::Vector3d p = positionOf(cols, vals);
+  Eigen::Vector3f n = Eigen::Vector3f::Zero();
+  Rgb8 rgb{0, 0, 0};
+  for (std::size_t k = 0; k < cols.size(); ++k) {
+    const double v = vals[k];
+    switch (cols[k]) {
+      case Col::X:
+      case Col::Y:
+      case Col::Z: break;
+      case Col::R: rgb[0] = colorByte(v); break;
+      case Col::G: rgb[1] = colorByte(v); break;
+      case Col::B: rgb[2] = colorByte(v); break;
+      case Col::I: c.intensity.push_back(static_cast<float>(v)); break;
+      case Col::NX: n.x() = static_cast<float>(v); break;
+      case Col::NY: n.y() = static_cast<float>(v); break;
+      case Col::NZ: n.z() = static_cast<float>(v); break;
+      case Col::Scalar: scalar_of[k]->values.push_back(static_cast<float>(v)); break;
+    }
+  }
+  Eigen::Vector3f hi, lo;
+  PointCloud::splitLocal(p - c.offset, hi, lo);
+  c.positions.push_back(hi);
+  c.position_residuals.push_back(lo);
+  if (has_rgb) c.colors.push_back(rgb);
+  if (has_normals) c.normals.push_back(n);
+}
+
+/// Pass 2: every data row from the first data line into `c`.
+void readRows(const std::string& text, const TextLayout& t, const std::vector<Col>& cols,
+              const std::vector<ScalarField*>& scalar_of, PointCloud& c, const std::filesystem::path& path,
+              Progress* progress) {
+  const auto has = [&](Col x) { return std::find(cols.begin(), cols.end(), x) != cols.end(); };
+  const bool has_rgb = has(Col::R), has_normals = has(Col::NX);
+  std::vector<std::string_view> toks;
+  std::vector<double> vals(t.ncols);
   const double total = static_cast<double>(text.size());
   std::uint64_t count = 0;
-  forEachLine(text, data_pos, data_line, path, [&](const Line& ln) {
-    std::string_view line = trim(ln.text);
+  forEachLine(text, t.data_pos, t.data_line, path, [&](const Line& ln) {
+    const std::string_view line = trim(ln.text);
     if (line.empty() || isComment(line)) return true;
-    splitChecked(line, delim, toks, path, ln.number);
-    if (toks.size() == 1 && ncols > 1) {  // PTS block count line
-      double v;
-      if (parseNumber(toks[0], false, v) && v == std::floor(v)) return true;
-    }
-    if (toks.size() != ncols)
-      throw FileError(path, "expected " + std::to_string(ncols) + " values, found " + std::to_string(toks.size()),
-                      atLine(ln.number, "point " + std::to_string(count)));
-    for (std::size_t k = 0; k < ncols; ++k)
-      if (!parseNumber(toks[k], delim == ';', vals[k]))
-        throw FileError(path, "'" + std::string(toks[k]) + "' is not a number (column " + std::to_string(k + 1) + ")",
-                        atLine(ln.number, "point " + std::to_string(count)));
-    const Eigen::Vector3d p = positionOf(cols, vals);
-    Eigen::Vector3f n = Eigen::Vector3f::Zero();
-    Rgb8 rgb{0, 0, 0};
-    for (std::size_t k = 0; k < ncols; ++k) {
-      const double v = vals[k];
-      switch (cols[k]) {
-        case Col::X:
-        case Col::Y:
-        case Col::Z: break;
-        case Col::R: rgb[0] = colorByte(v); break;
-        case Col::G: rgb[1] = colorByte(v); break;
-        case Col::B: rgb[2] = colorByte(v); break;
-        case Col::I: c.intensity.push_back(static_cast<float>(v)); break;
-        case Col::NX: n.x() = static_cast<float>(v); break;
-        case Col::NY: n.y() = static_cast<float>(v); break;
-        case Col::NZ: n.z() = static_cast<float>(v); break;
-        case Col::Scalar: scalar_of[k]->values.push_back(static_cast<float>(v)); break;
-      }
-    }
-    Eigen::Vector3f hi, lo;
-    PointCloud::splitLocal(p - c.offset, hi, lo);
-    c.positions.push_back(hi);
-    c.position_residuals.push_back(lo);
-    if (has(Col::R)) c.colors.push_back(rgb);
-    if (has(Col::NX)) c.normals.push_back(n);
+    if (!parseDataRow(line, ln, t, count, toks, vals, path)) return true;
+    appendPoint(c, cols, vals, scalar_of, has_rgb, has_normals);
     if ((++count & 0xFFFF) == 0) {
       checkCanceled(progress);
       reportProgress(progress, static_cast<double>(ln.offset) / total, "reading text");
     }
     return true;
   });
+}
+
+}  // namespace
+}  // namespace text
+
+Dataset readText(const std::filesystem::path& path, Progress* progress) {
+  using namespace text;
+  const std::string contents = readWhole(path);
+  checkIsText(contents, path);
+  const TextLayout layout = scanLayout(contents, path);
+  const std::vector<Col> cols = layout.names.empty()
+                                    ? guessColumns(layout.ncols, layout.sample)
+                                    : rolesFromHeader(layout.names, layout.ncols, layout.data_line, path);
+  Dataset d;
+  d.source = path;
+  d.format = "text";
+  Scan scan;
+  scan.name = path.stem().string();
+  PointCloud& c = scan.cloud;
+  const std::vector<ScalarField*> scalar_of = prepareCloud(c, cols, layout);
+  readRows(contents, layout, cols, scalar_of, c, path, progress);
   c.dropNegligibleResiduals();
-  d.metadata.emplace_back("delimiter", delim == ' ' ? "space/tab" : std::string(1, delim));
-  d.metadata.emplace_back("header", names.empty() ? "none (columns guessed from their count)" : "yes");
+  d.metadata.emplace_back("delimiter", layout.delim == ' ' ? "space/tab" : std::string(1, layout.delim));
+  d.metadata.emplace_back("header", layout.names.empty() ? "none (columns guessed from their count)" : "yes");
   d.scans.push_back(std::move(scan));
   reportProgress(progress, 1.0, "reading text");
   return d;

@@ -3,6 +3,7 @@
 
 #include "common/error.hpp"
 #include "io/text/text_io.hpp"
+#include "io/text/text_layout.hpp"
 #include "support/test_support.hpp"
 
 using namespace plumb;
@@ -119,4 +120,85 @@ TEST(Text, WriteThenReadBack) {
     EXPECT_EQ(r.findScalarField("deviation")->values, c.scalar_fields[0].values);
   }
   EXPECT_EQ(test::readAll(dir / "w.csv").substr(0, 32), "x,y,z,red,green,blue,intensity,d");
+}
+
+// The layout steps of readText alone.
+namespace {
+/// The FileError of f, or "no error".
+template <class F>
+FileError errorFrom(F&& f) {
+  try {
+    f();
+  } catch (const FileError& e) {
+    return e;
+  }
+  return FileError("none", "no error");
+}
+}  // namespace
+
+TEST(TextLayout, ACommentIsAHeaderOnlyWhenItNamesThreeCoordinates) {
+  using text::commentHeaderNames;
+  EXPECT_EQ(commentHeaderNames("# X Y Z intensity"), (std::vector<std::string>{"X", "Y", "Z", "intensity"}));
+  EXPECT_EQ(commentHeaderNames("//x,y,z,red"), (std::vector<std::string>{"x", "y", "z", "red"}));
+  EXPECT_EQ(commentHeaderNames("# scanner export"), std::nullopt);
+  EXPECT_EQ(commentHeaderNames("# x y time"), std::nullopt);
+  std::string wide = "# x y z";
+  for (int k = 0; k < 254; ++k) wide += " s";  // 257 names: more than the columns accepted
+  EXPECT_EQ(commentHeaderNames(wide), std::nullopt);
+}
+
+TEST(TextLayout, DelimiterAndColumnNames) {
+  EXPECT_EQ(text::detectDelimiter("1,5;2,5;3"), ';');  // then a comma is a decimal comma
+  EXPECT_EQ(text::detectDelimiter("1,2,3"), ',');
+  EXPECT_EQ(text::detectDelimiter("1\t2 3"), ' ');
+  EXPECT_EQ(text::columnFromName("\"Normal_X\""), text::Col::NX);
+  EXPECT_EQ(text::columnFromName("//X"), text::Col::X);
+  EXPECT_EQ(text::columnFromName("Reflectance"), text::Col::I);
+  EXPECT_EQ(text::columnFromName("xyz"), text::Col::Scalar);
+}
+
+TEST(TextLayout, HeaderRolesKeepOnlyCompleteTriplesAndOneIntensity) {
+  using text::Col;
+  const std::vector<std::string> names{"x", "y", "z", "red", "green", "i", "intensity", "nx", "ny", "nz"};
+  EXPECT_EQ(text::rolesFromHeader(names, 10, 2, "h.csv"),
+            (std::vector<Col>{Col::X, Col::Y, Col::Z, Col::Scalar, Col::Scalar, Col::I, Col::Scalar, Col::NX,
+                              Col::NY, Col::NZ}));
+  FileError e = errorFrom([&] { text::rolesFromHeader(names, 9, 4, "h.csv"); });
+  EXPECT_EQ(e.message(), "the header names 10 columns but data lines have 9 values");
+  EXPECT_EQ(e.where().line, 4u);
+  e = errorFrom([] { text::rolesFromHeader({"x", "y", "y"}, 3, 4, "h.csv"); });
+  EXPECT_EQ(e.message(), "the header must name exactly one x, one y and one z column");
+  EXPECT_EQ(e.where().line, 3u);  // the header line, before the first data line
+}
+
+TEST(TextLayout, GuessedRolesLookAtTheSampledValues) {
+  using text::Col;
+  EXPECT_EQ(text::guessColumns(6, {{0, 0, 0, 255, 3, 0}, {1, 1, 1, 7, 8, 9}}),
+            (std::vector<Col>{Col::X, Col::Y, Col::Z, Col::R, Col::G, Col::B}));
+  EXPECT_EQ(text::guessColumns(6, {{0, 0, 0, 255, 3, 0}, {1, 1, 1, 7, 8, 256}}),
+            (std::vector<Col>{Col::X, Col::Y, Col::Z, Col::NX, Col::NY, Col::NZ}));
+  EXPECT_EQ(text::guessColumns(7, {{0, 0, 0, -0.5, 1, 2, 3}}),  // PTS: x y z i r g b
+            (std::vector<Col>{Col::X, Col::Y, Col::Z, Col::I, Col::R, Col::G, Col::B}));
+  EXPECT_EQ(text::guessColumns(7, {{0, 0, 0, 1, 2, 3, 0.5}}),
+            (std::vector<Col>{Col::X, Col::Y, Col::Z, Col::R, Col::G, Col::B, Col::I}));
+  EXPECT_EQ(text::guessColumns(5, {}), (std::vector<Col>{Col::X, Col::Y, Col::Z, Col::Scalar, Col::Scalar}));
+}
+
+TEST(TextLayout, FirstPassFindsHeaderCountLineAndSample) {
+  const std::string t = "// x y z i\n\n5\n1 2 3 4\n# note\n4 5 6 7\n8 9\n";
+  const text::TextLayout l = text::scanLayout(t, "a.pts");
+  EXPECT_EQ(l.names, (std::vector<std::string>{"x", "y", "z", "i"}));
+  EXPECT_EQ(l.delim, ' ');
+  EXPECT_EQ(l.ncols, 4u);
+  EXPECT_EQ(l.data_pos, t.find("1 2 3 4"));
+  EXPECT_EQ(l.data_line, 4u);
+  EXPECT_EQ(l.sample, (std::vector<std::vector<double>>{{1, 2, 3, 4}, {4, 5, 6, 7}}));  // "8 9" is not sampled
+  const text::TextLayout csv = text::scanLayout("x;y;z\n1,5;2;3\n", "b.csv");
+  EXPECT_EQ(csv.delim, ';');
+  EXPECT_EQ(csv.sample, (std::vector<std::vector<double>>{{1.5, 2, 3}}));
+  FileError e = errorFrom([] { text::scanLayout("x,y,z\nu,v,w\n", "c.csv"); });
+  EXPECT_EQ(e.message(), "'u,v,w' is neither a header nor numbers");
+  EXPECT_EQ(e.where().line, 2u);
+  e = errorFrom([] { text::scanLayout("# x y z\n1 2\n", "d.xyz"); });
+  EXPECT_EQ(e.message(), "data lines have 2 value(s); at least x y z are needed");
 }
