@@ -26,7 +26,13 @@ const ParamSchema<CandidateParams>& CandidateParams::schema() {
           .real(&P::min_cost_gap, "cost-gap", "Clear fit cost gap", "", 0.0, 1.0,
                 "Or: its refined fit cost is higher by this ...", true)
           .real(&P::min_cost_ratio, "cost-ratio", "Clear fit cost ratio", "", 1.0, 100.0,
-                "... and this many times the other's", true);
+                "... and this many times the other's", true)
+          .integer(&P::max_alternatives, "alternatives", "Further hypotheses refined", "", 0, 4,
+                   "Distinct hypotheses beyond the runner-up refined and compared too (a "
+                   "repeated room's other copy may score low on features)", true)
+          .real(&P::alternative_min_score, "alternative-score", "Further hypothesis score", "",
+                0.0, 1.0, "... when their feature score is at least this fraction of the best's",
+                true);
   return s;
 }
 
@@ -123,7 +129,7 @@ CandidateSelection selectCandidate(const std::vector<RefinedHypothesis>& h, bool
     const std::string role = roleOf(rel);
     if (role == "competing") s.ambiguous = true;
     s.candidates.push_back(makeCandidate(h[i].hypothesis, &other, role));
-    msg << "; " << (i == 0 ? "global answer" : "runner-up") << " (" << h[i].hypothesis.label
+    msg << "; " << (i == 0 ? "global answer" : i == 1 ? "runner-up" : "alternative") << " (" << h[i].hypothesis.label
         << ") refined to " << RigidTransform::rotationErrorDeg(chosen.transform, other.transform)
         << " deg / " << (chosen.transform.apply(centroid) - other.transform.apply(centroid)).norm()
         << " m from it, overlap " << other.overlap << ", RMS " << other.rms << " m, fit cost "

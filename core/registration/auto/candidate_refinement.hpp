@@ -46,6 +46,10 @@ struct CandidateParams {
   double min_cost_gap = 0.02;
   /// ... and at least this many times the other's, [1, 100].
   double min_cost_ratio = 1.5;
+  /// Beyond the runner-up, refine up to this many further distinct hypotheses, [0, 4] ...
+  int max_alternatives = 2;
+  /// ... whose feature score is at least this fraction of the best's, [0, 1].
+  double alternative_min_score = 0.5;
   static const ParamSchema<CandidateParams>& schema();
 };
 

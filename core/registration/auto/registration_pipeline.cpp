@@ -185,6 +185,18 @@ void limitToWallThickness(const GlobalRegistrationResult& g, RefineParams& rp,
 /// and compared (candidate_refinement.hpp): the same placement, a clearly worse one, or a
 /// competing one (Ambiguous). The global step's own Ambiguous status is settled here too: a
 /// clearly better refined fit wins, otherwise it stays Ambiguous.
+/// The global step's further distinct hypotheses worth refining: at most max_alternatives,
+/// each scoring at least alternative_min_score of the best.
+std::vector<Hypothesis> furtherHypotheses(const GlobalRegistrationResult& g,
+                                          const CandidateParams& p) {
+  std::vector<Hypothesis> out;
+  for (const auto& a : g.alternatives) {
+    if (out.size() >= static_cast<std::size_t>(p.max_alternatives)) break;
+    if (g.score > 0 && a.score >= p.alternative_min_score * g.score) out.push_back(a);
+  }
+  return out;
+}
+
 void refineCandidates(const RegistrationSide& source, const RegistrationSide& target,
                       const PipelineParams& p, PipelineResult& out, Progress* progress) {
   PointCloud sampled;
@@ -201,8 +213,11 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
   const bool compare = g.runner_up && p.candidates.refine_runner_up;
   auto compared = rp;
   compared.slide_test = false;  // only compared; measured below if it becomes the answer
-  if (compare)
+  if (compare) {
     h.push_back({*g.runner_up, refineRegistration(*sc, prepared, g.runner_up->transform, compared, progress)});
+    for (const Hypothesis& a : furtherHypotheses(g, p.candidates))
+      h.push_back({a, refineRegistration(*sc, prepared, a.transform, compared, progress)});
+  }
   const bool global_chose = g.ok();
   const CandidateSelection sel = selectCandidate(h, global_chose, sc->bounds().center(), p.candidates);
   out.candidates = sel.candidates;
