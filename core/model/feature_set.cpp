@@ -37,4 +37,18 @@ void FeatureSet::transform(const RigidTransform& t) {
   for (auto& s : segments) s.transform(t);
 }
 
+Bounds featureBounds(const FeatureSet& f) {
+  Bounds b;
+  for (const auto& p : f.planes)
+    for (const auto& ring : p.rings)
+      for (const auto& uv : ring) b.extend(p.to3d(uv));
+  for (const auto& o : f.openings)
+    for (const auto& c : o.corners) b.extend(c);
+  for (const auto& s : f.segments) {
+    b.extend(s.a);
+    b.extend(s.b);
+  }
+  return b;
+}
+
 }  // namespace plumb

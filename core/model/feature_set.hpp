@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "model/point_cloud.hpp"
 #include "model/rigid_transform.hpp"
 
 namespace plumb {
@@ -79,5 +80,8 @@ struct FeatureSet {
 
   void transform(const RigidTransform& t);
 };
+
+/// Box of every feature: plane polygons (their rings), opening corners, segment end points.
+Bounds featureBounds(const FeatureSet& features);
 
 }  // namespace plumb

@@ -64,12 +64,19 @@ const Table& byPath() {
       {"candidates", "Every placement considered (the answer first)"},
       {"candidates[].feature_score", "Feature score of this placement"},
       {"candidates[].fit_cost", "Refined fit cost (lower is better)"},
+      {"candidates[].figures.free-space contradiction ratio",
+       "Share of visible points in the other side's seen-through space at this placement "
+       "(judged when placements fit about equally; negative: not conclusive)"},
+      {"candidates[].figures.unexplained structure",
+       "Share of the large planes' area unexplained at this placement (negative: not "
+       "conclusive)"},
       {"candidates[].inliers", "Source points matched after refining this placement"},
       {"candidates[].label", "How this placement was built"},
       {"candidates[].overlap_ratio", "Fraction of source points matched after refining it"},
       {"candidates[].refined", "Whether this placement was refined before being compared"},
       {"candidates[].rms_m", "Point RMS after refining this placement"},
-      {"candidates[].role", "chosen, competing (ambiguous), same placement or clearly worse"},
+      {"candidates[].role",
+       "chosen, competing (ambiguous), same placement, clearly worse, or ruled out by free space"},
       {"candidates[].transform", "Transform of this placement"},
   };
   return t;

@@ -26,9 +26,24 @@ const ParamSchema<CandidateParams>& CandidateParams::schema() {
           .real(&P::min_cost_gap, "cost-gap", "Clear fit cost gap", "", 0.0, 1.0,
                 "Or: its refined fit cost is higher by this ...", true)
           .real(&P::min_cost_ratio, "cost-ratio", "Clear fit cost ratio", "", 1.0, 100.0,
-                "... and this many times the other's", true);
+                "... and this many times the other's", true)
+          .integer(&P::max_alternatives, "alternatives", "Further hypotheses refined", "", 0, 4,
+                   "Distinct hypotheses beyond the runner-up refined and compared too (a "
+                   "repeated room's other copy may score low on features)", true)
+          .real(&P::alternative_min_score, "alternative-score", "Further hypothesis score", "",
+                0.0, 1.0, "... when their feature score is at least this fraction of the best's",
+                true)
+          .real(&P::elsewhere_volume_ratio, "elsewhere-volume-ratio", "Search elsewhere from",
+                "", 1.0, 1000.0,
+                "Search again away from the chosen placement when the target spans this many "
+                "times the source's volume (room for a repeated room or storey)", true)
+          .real(&P::elsewhere_margin, "elsewhere-margin", "Set-aside margin", "m", 0.0, 5.0,
+                "Target features this close to the placed source are set aside for that search",
+                true);
   return s;
 }
+
+const char* const kRuledOutRole = "ruled out by free space";
 
 const char* toString(CandidateRelation r) {
   switch (r) {
@@ -83,17 +98,27 @@ PlacementCandidate makeCandidate(const Hypothesis& h, const RefineResult* r, std
 }
 
 namespace {
+bool isRuledOut(const std::vector<bool>& ruled_out, std::size_t i) {
+  return i < ruled_out.size() && ruled_out[i];
+}
+
 /// The hypothesis to answer with: the first, unless the global step could not choose and
-/// another one fits clearly better (the best overlap among those).
+/// another one fits clearly better (the best overlap among those). A first hypothesis that
+/// other evidence ruled out gives way to the best-fitting one that fits about as well or
+/// better and was not ruled out (none: it stays, and the verdict will say why it fails).
 std::size_t answerIndex(const std::vector<RefinedHypothesis>& h, bool global_chose,
-                        const Eigen::Vector3d& centroid, const CandidateParams& p) {
+                        const Eigen::Vector3d& centroid, const CandidateParams& p,
+                        const std::vector<bool>& ruled_out) {
   std::size_t best = 0;
-  if (global_chose) return best;
-  for (std::size_t i = 1; i < h.size(); ++i)
-    if (compareRefined(h[0].refined, h[i].refined, centroid, p) ==
-            CandidateRelation::SecondClearlyBetter &&
-        (best == 0 || h[i].refined.overlap > h[best].refined.overlap))
-      best = i;
+  const bool first_out = isRuledOut(ruled_out, 0);
+  if (global_chose && !first_out) return best;
+  for (std::size_t i = 1; i < h.size(); ++i) {
+    if (isRuledOut(ruled_out, i)) continue;
+    const CandidateRelation rel = compareRefined(h[0].refined, h[i].refined, centroid, p);
+    const bool eligible = rel == CandidateRelation::SecondClearlyBetter ||
+                          (first_out && rel == CandidateRelation::Close);
+    if (eligible && (best == 0 || h[i].refined.overlap > h[best].refined.overlap)) best = i;
+  }
   return best;
 }
 
@@ -107,10 +132,11 @@ std::string roleOf(CandidateRelation r) {
 }  // namespace
 
 CandidateSelection selectCandidate(const std::vector<RefinedHypothesis>& h, bool global_chose,
-                                   const Eigen::Vector3d& centroid, const CandidateParams& p) {
+                                   const Eigen::Vector3d& centroid, const CandidateParams& p,
+                                   const std::vector<bool>& ruled_out) {
   CandidateSelection s;
   if (h.empty()) return s;
-  s.chosen = answerIndex(h, global_chose, centroid, p);
+  s.chosen = answerIndex(h, global_chose, centroid, p, ruled_out);
   const RefineResult& chosen = h[s.chosen].refined;
   s.candidates.push_back(makeCandidate(h[s.chosen].hypothesis, &chosen, "chosen"));
   std::ostringstream msg;
@@ -120,16 +146,18 @@ CandidateSelection selectCandidate(const std::vector<RefinedHypothesis>& h, bool
     if (i == s.chosen) continue;
     const RefineResult& other = h[i].refined;
     const CandidateRelation rel = compareRefined(chosen, other, centroid, p);
-    const std::string role = roleOf(rel);
+    const std::string role = isRuledOut(ruled_out, i) ? kRuledOutRole : roleOf(rel);
     if (role == "competing") s.ambiguous = true;
     s.candidates.push_back(makeCandidate(h[i].hypothesis, &other, role));
-    msg << "; " << (i == 0 ? "global answer" : "runner-up") << " (" << h[i].hypothesis.label
+    msg << "; " << (i == 0 ? "global answer" : i == 1 ? "runner-up" : "alternative") << " (" << h[i].hypothesis.label
         << ") refined to " << RigidTransform::rotationErrorDeg(chosen.transform, other.transform)
         << " deg / " << (chosen.transform.apply(centroid) - other.transform.apply(centroid)).norm()
         << " m from it, overlap " << other.overlap << ", RMS " << other.rms << " m, fit cost "
         << other.fit_cost << ": " << role;
   }
-  if (s.chosen != 0) msg << "; the refined points chose the runner-up";
+  if (s.chosen != 0)
+    msg << (isRuledOut(ruled_out, 0) ? "; the global answer was ruled out by the free space"
+                                     : "; the refined points chose the runner-up");
   s.message = msg.str();
   return s;
 }

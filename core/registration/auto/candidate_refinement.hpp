@@ -46,6 +46,18 @@ struct CandidateParams {
   double min_cost_gap = 0.02;
   /// ... and at least this many times the other's, [1, 100].
   double min_cost_ratio = 1.5;
+  /// Beyond the runner-up, refine up to this many further distinct hypotheses, [0, 4] ...
+  int max_alternatives = 2;
+  /// ... whose feature score is at least this fraction of the best's, [0, 1]; the best
+  /// placement elsewhere (below) too. Lower-scoring hypotheses lost on the features: a
+  /// building's half turn matches fewer of its openings, however well its walls fit.
+  double alternative_min_score = 0.9;
+  /// Search again away from the chosen placement (elsewhere_search.hpp) when the target's
+  /// features span at least this many times the source's volume, [1, 1000] ...
+  double elsewhere_volume_ratio = 2.0;
+  /// ... setting aside the target features within this distance of the placed source's box,
+  /// m, [0, 5].
+  double elsewhere_margin = 0.3;
   static const ParamSchema<CandidateParams>& schema();
 };
 
@@ -70,11 +82,18 @@ struct CandidateSelection {
   std::string message;      ///< plain language, for the log and the verdict
 };
 
+/// The role of a hypothesis that other evidence (the free space) ruled out.
+extern const char* const kRuledOutRole;
+
 /// Compares hypotheses[0] (the global step's answer, or its best when `global_chose` is false)
-/// with every other refined hypothesis.
+/// with every other refined hypothesis. `ruled_out[i]` marks hypotheses that other evidence
+/// contradicts (the free space: a repeated room placed in the copy whose walls its rays cross):
+/// they never make the answer ambiguous, and a ruled-out first hypothesis gives way to one
+/// fitting about as well that is not ruled out.
 CandidateSelection selectCandidate(const std::vector<RefinedHypothesis>& hypotheses,
                                    bool global_chose, const Eigen::Vector3d& centroid,
-                                   const CandidateParams& params);
+                                   const CandidateParams& params,
+                                   const std::vector<bool>& ruled_out = {});
 
 /// A candidate as the report lists it (refined figures when `refined` is non-null).
 PlacementCandidate makeCandidate(const Hypothesis& h, const RefineResult* refined,

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "registration/auto/elsewhere_search.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/visibility_check.hpp"
 #include "common/stopwatch.hpp"
@@ -185,6 +186,81 @@ void limitToWallThickness(const GlobalRegistrationResult& g, RefineParams& rp,
 /// and compared (candidate_refinement.hpp): the same placement, a clearly worse one, or a
 /// competing one (Ambiguous). The global step's own Ambiguous status is settled here too: a
 /// clearly better refined fit wins, otherwise it stays Ambiguous.
+/// The global step's further distinct hypotheses worth refining: at most max_alternatives,
+/// each scoring at least alternative_min_score of the best.
+std::vector<Hypothesis> furtherHypotheses(const GlobalRegistrationResult& g,
+                                          const CandidateParams& p) {
+  std::vector<Hypothesis> out;
+  for (const auto& a : g.alternatives) {
+    if (out.size() >= static_cast<std::size_t>(p.max_alternatives)) break;
+    if (g.score > 0 && a.score >= p.alternative_min_score * g.score) out.push_back(a);
+  }
+  return out;
+}
+
+/// Index into the hypotheses of the selection's candidate `c` (the chosen one first, then the
+/// hypotheses in order without it).
+std::size_t hypothesisIndex(const CandidateSelection& sel, std::size_t c) {
+  if (c == 0) return sel.chosen;
+  return c - 1 < sel.chosen ? c - 1 : c;
+}
+
+/// Each judged candidate's free-space figures, for the report's candidate list.
+void annotateCandidates(CandidateSelection& sel, const CandidateFreeSpace& fs) {
+  for (std::size_t c = 0; c < sel.candidates.size(); ++c) {
+    const VisibilitySummary& v = fs.summaries[hypothesisIndex(sel, c)];
+    if (!v.computed) continue;
+    sel.candidates[c].figures.push_back({"free-space contradiction ratio", v.contradiction_ratio});
+    sel.candidates[c].figures.push_back({"unexplained structure", v.unexplained_structure});
+  }
+}
+
+/// Placements that fit the points about equally (a repeated room, a half turn of a symmetric
+/// building) are judged by the free space, each on its own (issue 13, symmetry): one whose
+/// scanners would have seen through the other side's walls is ruled out, and the selection is
+/// made again without it. Ambiguous stays ambiguous only among placements the free space
+/// cannot separate.
+CandidateSelection separateByFreeSpace(const RegistrationSide& source,
+                                       const RegistrationSide& target, const PipelineParams& p,
+                                       PipelineResult& out, const std::vector<RefinedHypothesis>& h,
+                                       CandidateSelection sel, bool global_chose,
+                                       const Eigen::Vector3d& centroid) {
+  if (!sel.ambiguous || !p.visibility.enabled) return sel;
+  std::vector<bool> judge(h.size(), false);
+  for (std::size_t c = 0; c < sel.candidates.size(); ++c)
+    if (c == 0 || sel.candidates[c].role == "competing") judge[hypothesisIndex(sel, c)] = true;
+  const CandidateFreeSpace fs = judgeCandidatesByFreeSpace(
+      source, target, h, judge, p.visibility, out.source_features, out.target_features);
+  out.log.push_back("free space: " + std::to_string(fs.contradicted) + " of " +
+                    std::to_string(fs.judged) + " closely fitting placements contradicted");
+  if (fs.contradicted > 0) sel = selectCandidate(h, global_chose, centroid, p.candidates, fs.ruled_out);
+  annotateCandidates(sel, fs);
+  return sel;
+}
+
+/// The global answer refined, then (when `compare`) the runner-up, the further distinct
+/// hypotheses and the best placement elsewhere, refined without the slide test (only compared).
+std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const RefineTarget& prepared,
+                                                const RefineParams& rp, const PipelineResult& out,
+                                                bool target_is_model, const PipelineParams& p,
+                                                bool compare, Progress* progress) {
+  const GlobalRegistrationResult& g = out.global;
+  std::vector<RefinedHypothesis> h;
+  h.push_back({Hypothesis{g.transform, g.score, "global answer"},
+               refineRegistration(sc, prepared, g.transform, rp, progress)});
+  if (!compare) return h;
+  auto compared = rp;
+  compared.slide_test = false;  // measured again if it becomes the answer
+  std::vector<Hypothesis> others{*g.runner_up};
+  for (const Hypothesis& a : furtherHypotheses(g, p.candidates)) others.push_back(a);
+  if (auto e = searchElsewhere(out.source_features, out.target_features, h[0].refined.transform,
+                               g.score, target_is_model, p))
+    others.push_back(*e);
+  for (const Hypothesis& o : others)
+    h.push_back({o, refineRegistration(sc, prepared, o.transform, compared, progress)});
+  return h;
+}
+
 void refineCandidates(const RegistrationSide& source, const RegistrationSide& target,
                       const PipelineParams& p, PipelineResult& out, Progress* progress) {
   PointCloud sampled;
@@ -195,16 +271,14 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
   limitToWallThickness(out.global, rp, out.log);
   GlobalRegistrationResult& g = out.global;
   const RefineTarget prepared(*tc, rp);  // once for every candidate
-  std::vector<RefinedHypothesis> h;
-  h.push_back({Hypothesis{g.transform, g.score, "global answer"},
-               refineRegistration(*sc, prepared, g.transform, rp, progress)});
   const bool compare = g.runner_up && p.candidates.refine_runner_up;
-  auto compared = rp;
-  compared.slide_test = false;  // only compared; measured below if it becomes the answer
-  if (compare)
-    h.push_back({*g.runner_up, refineRegistration(*sc, prepared, g.runner_up->transform, compared, progress)});
+  std::vector<RefinedHypothesis> h =
+      refineHypotheses(*sc, prepared, rp, out, target.isModel(), p, compare, progress);
   const bool global_chose = g.ok();
-  const CandidateSelection sel = selectCandidate(h, global_chose, sc->bounds().center(), p.candidates);
+  const Eigen::Vector3d centroid = sc->bounds().center();
+  const CandidateSelection sel = separateByFreeSpace(
+      source, target, p, out, h, selectCandidate(h, global_chose, centroid, p.candidates),
+      global_chose, centroid);
   out.candidates = sel.candidates;
   if (compare) out.log.push_back(sel.message);
   if (sel.chosen != 0) {

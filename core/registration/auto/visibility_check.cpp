@@ -1,6 +1,7 @@
 #include "registration/auto/visibility_check.hpp"
 
 #include "quality/structure_evidence.hpp"
+#include "quality/visibility_verdict.hpp"
 
 namespace plumb {
 
@@ -48,6 +49,28 @@ VisibilitySummary checkVisibility(const RegistrationSide& source, const Registra
   }
   summarizeVisibility(s, p);
   return s;
+}
+
+CandidateFreeSpace judgeCandidatesByFreeSpace(const RegistrationSide& source,
+                                              const RegistrationSide& target,
+                                              const std::vector<RefinedHypothesis>& hypotheses,
+                                              const std::vector<bool>& judge,
+                                              const VisibilityParams& p,
+                                              const FeatureSet& source_features,
+                                              const FeatureSet& target_features) {
+  CandidateFreeSpace c;
+  c.summaries.resize(hypotheses.size());
+  c.ruled_out.assign(hypotheses.size(), false);
+  for (std::size_t i = 0; i < hypotheses.size(); ++i) {
+    if (i >= judge.size() || !judge[i]) continue;
+    const RefineResult& r = hypotheses[i].refined;
+    c.summaries[i] =
+        checkVisibility(source, target, r.transform, p, source_features, target_features);
+    c.ruled_out[i] = judgeFreeSpace(c.summaries[i], p, FitFigures{true, r.overlap, r.rms}).contradicted;
+    ++c.judged;
+    if (c.ruled_out[i]) ++c.contradicted;
+  }
+  return c;
 }
 
 std::optional<VerdictEvidence> measureVerdictEvidence(const RegistrationSide& source,

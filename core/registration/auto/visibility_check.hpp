@@ -4,9 +4,11 @@
 // evidence goes into assessRegistration, whose rule (quality/visibility_verdict.hpp) may fail
 // or flag the report.
 #include <optional>
+#include <vector>
 
 #include "quality/quality_report.hpp"
 #include "quality/visibility_evidence.hpp"
+#include "registration/auto/candidate_refinement.hpp"
 #include "registration/auto/registration_pipeline.hpp"
 
 namespace plumb {
@@ -20,6 +22,23 @@ VisibilitySummary checkVisibility(const RegistrationSide& source, const Registra
                                   const VisibilityParams& params,
                                   const FeatureSet& source_features = {},
                                   const FeatureSet& target_features = {});
+
+/// Free-space evidence of refined candidate placements (issue 13, symmetry): for each
+/// hypothesis marked in `judge`, its summary and whether the free-space rule
+/// (judgeFreeSpace) would fail it as contradicted. Hypotheses not judged stay not computed.
+struct CandidateFreeSpace {
+  std::vector<VisibilitySummary> summaries;  ///< one per hypothesis
+  std::vector<bool> ruled_out;               ///< contradicted by the free space
+  std::size_t judged = 0;
+  std::size_t contradicted = 0;
+};
+CandidateFreeSpace judgeCandidatesByFreeSpace(const RegistrationSide& source,
+                                              const RegistrationSide& target,
+                                              const std::vector<RefinedHypothesis>& hypotheses,
+                                              const std::vector<bool>& judge,
+                                              const VisibilityParams& params,
+                                              const FeatureSet& source_features,
+                                              const FeatureSet& target_features);
 
 /// The evidence of the result's final transform (refined when it was, else the global one)
 /// with its features' planes, when params.enabled and the global step succeeded.

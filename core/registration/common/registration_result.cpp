@@ -44,6 +44,22 @@ std::optional<Hypothesis> HypothesisRanking::runnerUp() const {
   return std::nullopt;
 }
 
+std::vector<Hypothesis> HypothesisRanking::alternatives() const {
+  std::vector<Hypothesis> out;
+  if (!best_) return out;
+  bool runner_up_seen = false;
+  for (const auto& k : top_) {
+    if (!distinct(k, *best_)) continue;
+    if (!runner_up_seen) {
+      runner_up_seen = true;
+      continue;
+    }
+    out.push_back(k);
+    if (out.size() == kAlternatives) break;
+  }
+  return out;
+}
+
 void finalizeFromRanking(const HypothesisRanking& ranking, double min_score,
                          double min_relative_gap, GlobalRegistrationResult& r) {
   r.hypotheses_evaluated = ranking.count();
@@ -56,6 +72,7 @@ void finalizeFromRanking(const HypothesisRanking& ranking, double min_score,
   r.transform = best->transform;
   r.score = best->score;
   r.runner_up = ranking.runnerUp();
+  r.alternatives = ranking.alternatives();
   r.relative_gap = r.runner_up && best->score > 0
                        ? (best->score - r.runner_up->score) / best->score
                        : 1.0;

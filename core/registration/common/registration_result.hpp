@@ -36,6 +36,10 @@ struct GlobalRegistrationResult {
   std::string score_unit;  ///< e.g. "m^2 of overlapping polygons", "matched segments"
   std::optional<Hypothesis> runner_up;  ///< best hypothesis clearly different from the chosen one
   double relative_gap = 1.0;  ///< (score - runner_up) / score, 1 when no runner-up
+  /// Further hypotheses, each clearly different from the chosen one, the runner-up and each
+  /// other, best first (at most HypothesisRanking::kAlternatives): a repeated room's other
+  /// copy can score below an unrelated runner-up on features and still fit the points as well.
+  std::vector<Hypothesis> alternatives;
   std::size_t hypotheses_evaluated = 0;
   std::size_t source_features = 0;
   std::size_t target_features = 0;
@@ -60,6 +64,10 @@ class HypothesisRanking {
   const std::optional<Hypothesis>& best() const { return best_; }
   /// Runner-up among all hypotheses seen (computed lazily from the kept list).
   std::optional<Hypothesis> runnerUp() const;
+  static constexpr std::size_t kAlternatives = 4;
+  /// The kept hypotheses after the runner-up that differ from the best, best first (at most
+  /// kAlternatives).
+  std::vector<Hypothesis> alternatives() const;
   std::size_t count() const { return count_; }
 
  private:

@@ -6,6 +6,7 @@
 
 #include "quality/verdict_level.hpp"
 #include "registration/auto/candidate_refinement.hpp"
+#include "registration/auto/elsewhere_search.hpp"
 
 using namespace plumb;
 
@@ -73,6 +74,58 @@ TEST(CandidateRefinement, SelectionListsEveryCandidateAndFlagsCompetitors) {
   s = selectCandidate(h, true, kCentroid, p);
   EXPECT_TRUE(s.ambiguous);
   EXPECT_EQ(s.chosen, 0u);
+}
+
+TEST(CandidateRefinement, PlacementsRuledOutByTheFreeSpaceNeverMakeItAmbiguous) {
+  const CandidateParams p;
+  const RigidTransform other = RigidTransform::fromYaw(0.0, {0.0, 12.0, 0.0});
+  const std::vector<RefinedHypothesis> h = {{{kA, 60.0, "a"}, fit(kA, 0.905, 0.101)},
+                                            {{kTurned, 58.0, "b"}, fit(kTurned, 0.903, 0.104)},
+                                            {{other, 57.0, "c"}, fit(other, 0.904, 0.102)}};
+  // Both competitors contradicted by the free space: the answer stands, not ambiguous.
+  CandidateSelection s = selectCandidate(h, true, kCentroid, p, {false, true, true});
+  EXPECT_FALSE(s.ambiguous);
+  EXPECT_EQ(s.chosen, 0u);
+  EXPECT_EQ(s.candidates[1].role, kRuledOutRole);
+  EXPECT_EQ(s.candidates[2].role, kRuledOutRole);
+  // One left: still ambiguous between the two the free space cannot separate.
+  s = selectCandidate(h, true, kCentroid, p, {false, true, false});
+  EXPECT_TRUE(s.ambiguous);
+  EXPECT_EQ(s.candidates[2].role, "competing");
+  // The global answer itself contradicted: the closely fitting one that is not takes its place.
+  s = selectCandidate(h, true, kCentroid, p, {true, false, true});
+  EXPECT_FALSE(s.ambiguous);
+  EXPECT_EQ(s.chosen, 1u);
+  EXPECT_EQ(s.candidates[0].label, "b");
+  EXPECT_EQ(s.candidates[1].role, kRuledOutRole);
+  // Every placement contradicted: nothing to fall back on; the verdict will fail it.
+  s = selectCandidate(h, true, kCentroid, p, {true, true, true});
+  EXPECT_EQ(s.chosen, 0u);
+}
+
+// The search elsewhere sets aside what the chosen placement covers: a room of 4 x 5 m placed
+// in the first of two identical units leaves the second unit's features, and only those.
+TEST(ElsewhereSearch, SetsAsideTheTargetFeaturesTheChosenPlacementCovers) {
+  FeatureSet room;
+  room.segments = {{{0, 0, 0}, {4, 0, 0}, 0}, {{0, 5, 2.5}, {4, 5, 2.5}, 0}};
+  FeatureSet building;
+  const RigidTransform first = RigidTransform::fromYaw(0.0, {10, 0, 0});
+  const RigidTransform second = RigidTransform::fromYaw(M_PI, {24, 5, 0});
+  for (const RigidTransform& unit : {first, second})
+    for (Segment3D s : room.segments) {
+      s.transform(unit);
+      building.segments.push_back(s);
+    }
+  PlanarPolygon slab;  // spans both units: its centroid lies between them, kept
+  slab.centroid = {17, 2.5, 0};
+  building.planes.push_back(slab);
+  const Bounds box = featureBounds(room);
+  const FeatureSet rest = featuresOutside(building, box, first, 0.3);
+  ASSERT_EQ(rest.segments.size(), 2u);
+  EXPECT_NEAR(rest.segments[0].midpoint().x(), 22.0, 1e-9);
+  EXPECT_EQ(rest.planes.size(), 1u);
+  EXPECT_TRUE(roomForAnotherCopy(box, featureBounds(building), 2.0));
+  EXPECT_FALSE(roomForAnotherCopy(box, featureBounds(room), 2.0));
 }
 
 TEST(VerdictLevel, LevelsAndExitCodes) {
