@@ -122,6 +122,7 @@ void MainWindow::createMenus() {
   file->addSeparator();
   new ExportCloudReaction(file->addAction(tr("Export registered &cloud...")), app);
   new ExportTransformReaction(file->addAction(tr("Export &transform...")), app);
+  new ExportReportReaction(file->addAction(tr("Export registration &report...")), app);
   new ScreenshotReaction(file->addAction(tr("Export &screenshot...")), app);
   file->addSeparator();
   connect(file->addAction(tr("&Quit"), QKeySequence::Quit), &QAction::triggered, this,

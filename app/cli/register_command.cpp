@@ -42,13 +42,10 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "io/io.hpp"
-#include "io/mesh/file_extension.hpp"
 #include "model/trajectory.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/registration_input.hpp"
-#include "registration/refine/icp_refinement.hpp"
-#include "report/html_report.hpp"
-#include "report/report_builder.hpp"
+#include "report/report_file.hpp"
 
 namespace plumb::cli {
 namespace {
@@ -114,46 +111,12 @@ void load(Side& s, const std::string& path, const std::string& trajectory, const
   }
 }
 
-bool isHtmlReport(const std::string& path) {
-  const std::string e = lowerExtension(path);
-  return e == ".html" || e == ".htm";
-}
-
-/// The JSON quality report, or the HTML report to hand over (a model source is shown by
-/// points sampled on its surface).
-void writeReport(const std::string& path, const RegisterOptions& o, const Side& src, const Side& tgt,
-                 const PipelineResult& r, std::uint64_t seed) {
-  if (!isHtmlReport(path)) {
-    writeFileAtomically(path, [&](std::ostream& out) { out << qualityReportToJson(r.report); });
-    return;
-  }
-  const PointCloud sampled = src.input.model ? sampleMeshSurface(src.input.model->mesh, 0.05, seed) : PointCloud();
-  report::ReportInputs in;
-  in.source_file = o.source;
-  in.target_file = o.target;
-  in.source = src.input.model ? &sampled : &src.input.cloud;
-  if (tgt.input.model) in.target_model = &*tgt.input.model;
-  else in.target_cloud = &tgt.input.cloud;
-  in.seed = seed;
-  const std::string html = report::reportHtml(report::buildRegistrationReport(in, r));
-  writeFileAtomically(path, [&](std::ostream& out) { out << html; });
-}
-
-/// Every output is checked before the registration runs, so a bad -o never comes after the
-/// transform was written.
-/// `model_source` unknown (a PLY holds either): the output extension decides.
-void checkReportExtension(const std::string& report) {
-  if (!isHtmlReport(report) && lowerExtension(report) != ".json")
-    throw InputError("register: --report '" + report + "' must end in .json (the quality report) or "
-                     ".html (the report to hand over)");
-}
-
 void checkOutputs(const RegisterOptions& o, std::optional<bool> model_source) {
   if (!o.output.empty())
     checkOutputPath(o.output, model_source.value_or(isModelFormat(formatFromExtension(o.output))));
   std::vector<const std::string*> all{&o.output, &o.transform};
   for (const auto& r : o.reports) {
-    checkReportExtension(r);
+    report::checkReportPath(r, "register: --report");
     all.push_back(&r);
   }
   for (const std::string* p : all)
@@ -195,7 +158,8 @@ int run(const RegisterOptions& o) {
   const PipelineResult r = registerData(src.input.side(), tgt.input.side(), p, &progress);
   if (tty) std::cerr << "\r\033[K";
   for (const auto& line : r.log) std::cerr << "  " << line << "\n";
-  for (const auto& path : o.reports) writeReport(path, o, src, tgt, r, p.seed);
+  for (const auto& path : o.reports)
+    report::writeReportFile(path, src.input, tgt.input, o.source, o.target, r, p.seed);
   std::cout << qualityReportToText(r.report);
   const int code = verdictExitCode(r.report.level);
   if (r.report.level == VerdictLevel::Failed) {

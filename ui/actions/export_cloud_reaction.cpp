@@ -9,6 +9,8 @@
 #include "ui/panels/layer_tree_panel.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/registration/registration_panel.hpp"
+#include "ui/registration/registration_runner.hpp"
+#include "ui/registration/report_export.hpp"
 #include "ui/tasks/export_tasks.hpp"
 
 namespace plumb::ui {
@@ -47,6 +49,24 @@ void ExportTransformReaction::onTriggered() {
                                                     "transform.json",
                                                     tr("JSON (*.json);;4x4 text (*.txt)"));
   if (!path.isEmpty()) exportTransform(app(), *layer, path);
+}
+
+void ExportReportReaction::onTriggered() {
+  if (!app().registration) return;
+  const RegistrationRecord record = app().registration->lastRecord();
+  if (!record.result) {
+    app().log.error(tr("Export report: register first (there is no registration result)"));
+    return;
+  }
+  const QString path = chooseFileToSave(&app().window, tr("Export registration report"),
+                                        "registration-report.html",
+                                        tr("Report to hand over (*.html);;Quality report (*.json)"));
+  if (path.isEmpty()) return;
+  try {
+    exportRegistrationReport(app(), record, path);
+  } catch (const std::exception& e) {
+    app().log.error(QString::fromUtf8(e.what()));
+  }
 }
 
 }  // namespace plumb::ui

@@ -24,6 +24,17 @@ class ExportTransformReaction : public Reaction {
   void onTriggered() override;
 };
 
+/// File > Export report: the last registration's report to hand over (HTML) or its quality
+/// report (JSON), as plumb-cli register --report writes them.
+class ExportReportReaction : public Reaction {
+  Q_OBJECT
+ public:
+  using Reaction::Reaction;
+
+ protected:
+  void onTriggered() override;
+};
+
 /// The layer File > Export acts on: the current root layer of the tree if it is a dataset or
 /// model, else the Registration dock's source.
 class Layer;

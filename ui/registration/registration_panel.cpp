@@ -121,6 +121,7 @@ void RegistrationPanel::connectSignals() {
 PipelineParams& RegistrationPanel::params() { return runner_->params(); }
 DistanceParams& RegistrationPanel::distanceParams() { return runner_->distanceParams(); }
 std::shared_ptr<const PipelineResult> RegistrationPanel::lastResult() const { return runner_->lastResult(); }
+RegistrationRecord RegistrationPanel::lastRecord() const { return runner_->lastRecord(); }
 bool RegistrationPanel::legendVisible() const { return check_->legendVisible(); }
 std::shared_ptr<const LayerDistances> RegistrationPanel::lastDistances() const { return check_->distances(); }
 

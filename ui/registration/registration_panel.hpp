@@ -29,6 +29,7 @@ class ParamPanel;
 class QualityReportView;
 class RegistrationResultBox;
 class RegistrationRunner;
+struct RegistrationRecord;
 struct LayerDistances;
 
 /// The widgets; the work is the RegistrationRunner's.
@@ -61,6 +62,8 @@ class RegistrationPanel : public QWidget {
   void showBefore(bool before);
 
   std::shared_ptr<const PipelineResult> lastResult() const;
+  /// The last result with the layers it ran on (File > Export report).
+  RegistrationRecord lastRecord() const;
   std::shared_ptr<const LayerDistances> lastDistances() const;
   const QualityReportView& report() const;
   const HistogramWidget& histogram() const { return *histogram_; }

@@ -4,6 +4,7 @@
 
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "ui/app_context.hpp"
+#include "ui/layers/layer_transform.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/registration/applied_registration.hpp"
@@ -104,6 +105,8 @@ bool RegistrationRunner::startRegistration(bool use_features) {
   setBusy(true);
   app_.log.info(tr("Registering %1 onto %2 (%3)")
                     .arg(s->name(), t->name(), QString::fromStdString(methodName(params_.method))));
+  pending_ = RegistrationRecord{nullptr, LayerRef(*s), LayerRef(*t), layerTransform(*s),
+                                layerTransform(*t), params_.seed};
   Task* task = ui::startRegistration(
       app_, *s, *t, params_, use_features,
       [this](std::shared_ptr<const PipelineResult> r, Layer& source, const RigidTransform& start) {
@@ -115,12 +118,19 @@ bool RegistrationRunner::startRegistration(bool use_features) {
   return true;
 }
 
+RegistrationRecord RegistrationRunner::lastRecord() const {
+  RegistrationRecord r = applied_inputs_;
+  r.result = result_;
+  return r;
+}
+
 void RegistrationRunner::applyResult(std::shared_ptr<const PipelineResult> result, Layer& source,
                                      const RigidTransform& start) {
   // A new result: the previous one (and the dock's distance check) no longer describe what is
   // shown.
   applied_->forget();
   result_ = std::move(result);
+  applied_inputs_ = pending_;
   emit newResult(*result_);
   for (const auto& line : result_->log) app_.log.info(QString::fromStdString(line));
   if (!result_->success()) {

@@ -7,6 +7,7 @@
 #include <QObject>
 #include <QString>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -22,6 +23,15 @@ class AppliedRegistration;
 class DatasetLayer;
 class Task;
 struct LayerDistances;
+
+/// The last registration with what its report needs: the layers it ran on and where they were
+/// when it started (File > Export report rebuilds the inputs from them).
+struct RegistrationRecord {
+  std::shared_ptr<const PipelineResult> result;  ///< nullptr: none, or withdrawn
+  LayerRef source, target;
+  RigidTransform source_start, target_start;  ///< data frame -> world when it started
+  std::uint64_t seed = 1;
+};
 
 class RegistrationRunner : public QObject {
   Q_OBJECT
@@ -53,6 +63,8 @@ class RegistrationRunner : public QObject {
 
   /// The last result (nullptr: none yet, or withdrawn with its layer).
   std::shared_ptr<const PipelineResult> lastResult() const { return result_; }
+  /// The last result with its inputs (result nullptr when there is none).
+  RegistrationRecord lastRecord() const;
   AppliedRegistration& applied() { return *applied_; }
 
  signals:
@@ -87,6 +99,8 @@ class RegistrationRunner : public QObject {
   LayerRef source_, target_;
   AppliedRegistration* applied_;  ///< the last result applied (child QObject)
   std::shared_ptr<const PipelineResult> result_;
+  RegistrationRecord pending_;  ///< inputs of the running registration
+  RegistrationRecord applied_inputs_;  ///< inputs of result_
   /// What the last feature detection ran on and with (extraction parameters as JSON text).
   struct DetectedFeatures {
     LayerRef source, target;

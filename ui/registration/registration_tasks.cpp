@@ -18,14 +18,15 @@ namespace plumb::ui {
 
 namespace {
 
-/// What a layer holds, shared with the worker (the layer itself stays on the UI thread).
-struct LayerData {
-  std::shared_ptr<const Dataset> dataset;
-  std::shared_ptr<const BimModel> model;
-  RigidTransform to_world;
-  std::shared_ptr<const FeatureSet> features;  ///< detected overlay, data frame
-  QString name;
-};
+/// The layer, or an error naming it when it was removed while `what` ran (the task then
+/// finishes with that error and shows nothing).
+Layer& stillThere(const LayerRef& layer, const QString& name, const char* what) {
+  if (Layer* l = layer.get()) return *l;
+  throw InputError("'" + name.toStdString() + "' was removed during " + what +
+                   "; the result was dropped");
+}
+
+}  // namespace
 
 LayerData dataOf(const Layer& layer) {
   LayerData d;
@@ -46,16 +47,6 @@ RegistrationInput inputOf(const LayerData& d, const RigidTransform& to_world) {
   return d.dataset ? makeRegistrationInput(*d.dataset, to_world)
                    : makeRegistrationInput(*d.model, to_world);
 }
-
-/// The layer, or an error naming it when it was removed while `what` ran (the task then
-/// finishes with that error and shows nothing).
-Layer& stillThere(const LayerRef& layer, const QString& name, const char* what) {
-  if (Layer* l = layer.get()) return *l;
-  throw InputError("'" + name.toStdString() + "' was removed during " + what +
-                   "; the result was dropped");
-}
-
-}  // namespace
 
 Layer* featureOverlay(const Layer& layer) {
   for (const auto& c : layer.children())

@@ -5,11 +5,14 @@
 // its result back on the UI thread. The task holds its layers (TaskManager::holds) and checks
 // they still exist before touching them: when one was destroyed meanwhile, the result is
 // dropped and the task finishes with an error saying so.
+#include <QString>
+
 #include <functional>
 #include <memory>
 
 #include "quality/cloud_distance.hpp"
 #include "model/rigid_transform.hpp"
+#include "registration/auto/registration_input.hpp"
 #include "registration/auto/registration_pipeline.hpp"
 
 namespace plumb::ui {
@@ -18,6 +21,19 @@ struct AppContext;
 class DatasetLayer;
 class Layer;
 class Task;
+
+/// What a layer holds, shared with a worker (the layer itself stays on the UI thread).
+struct LayerData {
+  std::shared_ptr<const Dataset> dataset;
+  std::shared_ptr<const BimModel> model;
+  RigidTransform to_world;
+  std::shared_ptr<const FeatureSet> features;  ///< detected overlay, data frame
+  QString name;
+};
+/// InputError when the layer is neither a dataset nor a model.
+LayerData dataOf(const Layer& layer);
+/// The registration input of the layer's data placed by `to_world` (on a worker thread).
+RegistrationInput inputOf(const LayerData& data, const RigidTransform& to_world);
 
 /// Features of each layer in its own data frame (a scan: planes, openings, segments; a model:
 /// sharp edges), shown as overlays under the layers (replacing earlier ones).

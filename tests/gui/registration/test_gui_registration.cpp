@@ -13,6 +13,9 @@
 #include <QUndoStack>
 
 #include <fstream>
+#include <iterator>
+
+#include <nlohmann/json.hpp>
 #include <random>
 
 #include "common/error.hpp"
@@ -21,6 +24,7 @@
 #include "simulation/presets.hpp"
 #include "simulation/survey.hpp"
 #include "gui/image_checks.hpp"
+#include "gui/menu_actions.hpp"
 #include "gui/open_window.hpp"
 #include "support/test_support.hpp"
 #include "ui/layers/dataset_layer.hpp"
@@ -35,7 +39,9 @@
 #include "ui/registration/manual_align_panel.hpp"
 #include "ui/registration/quality_report_view.hpp"
 #include "ui/registration/registration_panel.hpp"
+#include "ui/registration/registration_runner.hpp"
 #include "ui/registration/registration_tasks.hpp"
+#include "ui/registration/report_export.hpp"
 #include "ui/tasks/export_tasks.hpp"
 #include "ui/tasks/task.hpp"
 #include "ui/tasks/task_manager.hpp"
@@ -236,6 +242,49 @@ class GuiRegistrationTest : public QObject {
     QVERIFY(RigidTransform::translationError(layerTransform(*indoor_), coarse) < 1e-12);
     app.undo.undo();
     QVERIFY(layerTransform(*indoor_).isIdentity());
+  }
+
+  // File > Export report (issue 17): the report to hand over of the registration just run,
+  // the same file plumb-cli register --report writes, and its quality report as JSON.
+  void exportRegistrationReportAfterRegistering() {
+    AppContext& app = window_->context();
+    RegistrationPanel& panel = *app.registration;
+    QVERIFY(test::menuAction(*window_, "File", "Export registration report..."));
+    QVERIFY_THROWS_EXCEPTION(InputError,
+                             exportRegistrationReport(app, panel.lastRecord(), artefact("none.html")));
+    QSignalSpy finished(&panel, &RegistrationPanel::registrationFinished);
+    QVERIFY(panel.startRegistration());
+    QVERIFY(finished.wait(kTaskTimeoutMs));
+    QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(panel.report().verdict()));
+    const auto result = panel.lastResult();
+    QVERIFY(result);
+    QVERIFY_THROWS_EXCEPTION(InputError,
+                             exportRegistrationReport(app, panel.lastRecord(), artefact("r.pdf")));
+    const QString html = artefact("registration-report.html"), json = artefact("quality.json");
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    exportRegistrationReport(app, panel.lastRecord(), html);
+    exportRegistrationReport(app, panel.lastRecord(), json);
+    QVERIFY(idle.wait(kTaskTimeoutMs));
+    QCOMPARE(app.log.errorCount(), 0);
+    std::ifstream j(json.toStdString());
+    const std::string json_text((std::istreambuf_iterator<char>(j)), std::istreambuf_iterator<char>());
+    QCOMPARE(json_text, qualityReportToJson(result->report));
+    std::ifstream h(html.toStdString());
+    const std::string page((std::istreambuf_iterator<char>(h)), std::istreambuf_iterator<char>());
+    // The verdict, both inputs by name, every figure (here the RMS, as in the JSON) and the
+    // four pictures (plan, section, histogram, residuals) drawn from the layers' data.
+    QVERIFY(page.find(result->report.verdict.substr(0, 40)) != std::string::npos);
+    QVERIFY(page.find(indoor_->name().toStdString()) != std::string::npos);
+    QVERIFY(page.find(model_->name().toStdString()) != std::string::npos);
+    const auto rms = nlohmann::json::parse(json_text)["points"]["rms_m"].dump();
+    QVERIFY(page.find("data-json=\"points.rms_m\" data-value=\"" + rms + "\"") != std::string::npos);
+    std::size_t svgs = 0;
+    for (std::size_t at = page.find("<svg"); at != std::string::npos; at = page.find("<svg", at + 1)) ++svgs;
+    QVERIFY2(svgs >= 4, qPrintable(QString::number(svgs)));
+    // A layer the registration ran on is gone: nothing to build the report from.
+    app.scene.removeLayer(model_);
+    QVERIFY_THROWS_EXCEPTION(InputError,
+                             exportRegistrationReport(app, panel.lastRecord(), artefact("gone.html")));
   }
 
   void projectRoundTripAndExports() {

@@ -1,0 +1,44 @@
+#include "report/report_file.hpp"
+
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "io/mesh/file_extension.hpp"
+#include "registration/refine/icp_refinement.hpp"
+#include "report/html_report.hpp"
+#include "report/report_builder.hpp"
+
+namespace plumb::report {
+
+bool isHtmlReportPath(const std::string& path) {
+  const std::string e = lowerExtension(path);
+  return e == ".html" || e == ".htm";
+}
+
+void checkReportPath(const std::string& path, const std::string& what) {
+  if (!isHtmlReportPath(path) && lowerExtension(path) != ".json")
+    throw InputError(what + " '" + path + "' must end in .json (the quality report) or .html "
+                     "(the report to hand over)");
+}
+
+void writeReportFile(const std::string& path, const RegistrationInput& source,
+                     const RegistrationInput& target, const std::string& source_name,
+                     const std::string& target_name, const PipelineResult& result,
+                     std::uint64_t seed, Progress* progress) {
+  if (!isHtmlReportPath(path)) {
+    writeFileAtomically(path, [&](std::ostream& out) { out << qualityReportToJson(result.report); });
+    return;
+  }
+  const PointCloud sampled =
+      source.model ? sampleMeshSurface(source.model->mesh, 0.05, seed) : PointCloud();
+  ReportInputs in;
+  in.source_file = source_name;
+  in.target_file = target_name;
+  in.source = source.model ? &sampled : &source.cloud;
+  if (target.model) in.target_model = &*target.model;
+  else in.target_cloud = &target.cloud;
+  in.seed = seed;
+  const std::string html = reportHtml(buildRegistrationReport(in, result, {}, progress));
+  writeFileAtomically(path, [&](std::ostream& out) { out << html; });
+}
+
+}  // namespace plumb::report
