@@ -1,5 +1,6 @@
 # Steps shared by the CTest tests that build and run tests in a second, instrumented tree
-# (unit/io/sanitize_io.cmake: ASan + UBSan; unit/tsan/tsan_parallel.cmake: ThreadSanitizer).
+# (unit/io/sanitize_io.cmake and sanitize/sanitize_suite.cmake: ASan + UBSan;
+# unit/tsan/tsan_parallel.cmake: ThreadSanitizer).
 # Included by those scripts (cmake -P), which get SRC, BIN and DATA from the test command.
 
 # Configures ${tree} from SRC: no UI, no benchmarks, Debug at -O1 -g1, plus the given options.

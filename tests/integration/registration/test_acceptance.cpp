@@ -12,13 +12,14 @@
 #include <iostream>
 
 #include "acceptance_scenarios.hpp"
+#include "support/sanitized_build.hpp"
 
 using namespace plumb;
 using namespace plumb::test;
 
 namespace {
 
-constexpr int kPoses = 20;
+constexpr int kPoses = repetitions(20, 2);  // 2 in the sanitizer tree (tests/sanitize)
 
 void runScenario(const std::string& name, std::uint64_t seed) {
   const PipelineParams params = acceptanceParams();

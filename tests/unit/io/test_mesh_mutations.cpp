@@ -18,6 +18,7 @@
 
 #include "common/error.hpp"
 #include "io/mesh/mesh_io.hpp"
+#include "support/sanitized_build.hpp"
 #include "support/test_support.hpp"
 
 using namespace plumb;
@@ -65,7 +66,7 @@ std::string outcomeOf(const std::string& message) {
 
 TEST(MeshMutations, DamagedDuplexNeverTakesPlumbDown) {
   const char* env = std::getenv("PLUMB_MUTATIONS");
-  const int count = env ? std::atoi(env) : 100;
+  const int count = env ? std::atoi(env) : test::repetitions(100, 10);  // assimp under ASan: slow
   const auto lines = duplexLines();
   const auto dir = test::scratchDir("mesh_mutations");
   std::mt19937 rng(20261124);
