@@ -139,6 +139,7 @@ CandidateSelection selectCandidate(const std::vector<RefinedHypothesis>& h, bool
   s.chosen = answerIndex(h, global_chose, centroid, p, ruled_out);
   const RefineResult& chosen = h[s.chosen].refined;
   s.candidates.push_back(makeCandidate(h[s.chosen].hypothesis, &chosen, "chosen"));
+  s.hypothesis.push_back(s.chosen);
   std::ostringstream msg;
   msg << "candidates: chosen (" << h[s.chosen].hypothesis.label << ") overlap " << chosen.overlap
       << ", RMS " << chosen.rms << " m, fit cost " << chosen.fit_cost;
@@ -149,6 +150,7 @@ CandidateSelection selectCandidate(const std::vector<RefinedHypothesis>& h, bool
     const std::string role = isRuledOut(ruled_out, i) ? kRuledOutRole : roleOf(rel);
     if (role == "competing") s.ambiguous = true;
     s.candidates.push_back(makeCandidate(h[i].hypothesis, &other, role));
+    s.hypothesis.push_back(i);
     msg << "; " << (i == 0 ? "global answer" : i == 1 ? "runner-up" : "alternative") << " (" << h[i].hypothesis.label
         << ") refined to " << RigidTransform::rotationErrorDeg(chosen.transform, other.transform)
         << " deg / " << (chosen.transform.apply(centroid) - other.transform.apply(centroid)).norm()

@@ -79,6 +79,7 @@ struct CandidateSelection {
   std::size_t chosen = 0;   ///< index of the answer among the hypotheses
   bool ambiguous = false;   ///< two different placements fit about equally (or contradict)
   std::vector<PlacementCandidate> candidates;  ///< every hypothesis, the chosen first
+  std::vector<std::size_t> hypothesis;  ///< index among the hypotheses of each candidate
   std::string message;      ///< plain language, for the log and the verdict
 };
 

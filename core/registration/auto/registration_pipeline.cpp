@@ -182,10 +182,6 @@ void limitToWallThickness(const GlobalRegistrationResult& g, RefineParams& rp,
   }
 }
 
-/// The global answer (and its runner-up, when there is one and CandidateParams allows) refined
-/// and compared (candidate_refinement.hpp): the same placement, a clearly worse one, or a
-/// competing one (Ambiguous). The global step's own Ambiguous status is settled here too: a
-/// clearly better refined fit wins, otherwise it stays Ambiguous.
 /// The global step's further distinct hypotheses worth refining: at most max_alternatives,
 /// each scoring at least alternative_min_score of the best.
 std::vector<Hypothesis> furtherHypotheses(const GlobalRegistrationResult& g,
@@ -198,17 +194,10 @@ std::vector<Hypothesis> furtherHypotheses(const GlobalRegistrationResult& g,
   return out;
 }
 
-/// Index into the hypotheses of the selection's candidate `c` (the chosen one first, then the
-/// hypotheses in order without it).
-std::size_t hypothesisIndex(const CandidateSelection& sel, std::size_t c) {
-  if (c == 0) return sel.chosen;
-  return c - 1 < sel.chosen ? c - 1 : c;
-}
-
 /// Each judged candidate's free-space figures, for the report's candidate list.
 void annotateCandidates(CandidateSelection& sel, const CandidateFreeSpace& fs) {
   for (std::size_t c = 0; c < sel.candidates.size(); ++c) {
-    const VisibilitySummary& v = fs.summaries[hypothesisIndex(sel, c)];
+    const VisibilitySummary& v = fs.summaries[sel.hypothesis[c]];
     if (!v.computed) continue;
     sel.candidates[c].figures.push_back({"free-space contradiction ratio", v.contradiction_ratio});
     sel.candidates[c].figures.push_back({"unexplained structure", v.unexplained_structure});
@@ -228,7 +217,7 @@ CandidateSelection separateByFreeSpace(const RegistrationSide& source,
   if (!sel.ambiguous || !p.visibility.enabled) return sel;
   std::vector<bool> judge(h.size(), false);
   for (std::size_t c = 0; c < sel.candidates.size(); ++c)
-    if (c == 0 || sel.candidates[c].role == "competing") judge[hypothesisIndex(sel, c)] = true;
+    if (c == 0 || sel.candidates[c].role == "competing") judge[sel.hypothesis[c]] = true;
   const CandidateFreeSpace fs = judgeCandidatesByFreeSpace(
       source, target, h, judge, p.visibility, out.source_features, out.target_features);
   out.log.push_back("free space: " + std::to_string(fs.contradicted) + " of " +
@@ -261,6 +250,11 @@ std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const Refi
   return h;
 }
 
+/// The global answer and, when CandidateParams allows, the runner-up, further hypotheses and
+/// the best placement elsewhere, refined and compared (candidate_refinement.hpp): the same
+/// placement, a clearly worse one, or a competing one (Ambiguous), competing ones judged by the
+/// free space. The global step's own Ambiguous status is settled here too: a clearly better
+/// refined fit wins, otherwise it stays Ambiguous.
 void refineCandidates(const RegistrationSide& source, const RegistrationSide& target,
                       const PipelineParams& p, PipelineResult& out, Progress* progress) {
   PointCloud sampled;

@@ -98,6 +98,8 @@ TEST(CandidateRefinement, PlacementsRuledOutByTheFreeSpaceNeverMakeItAmbiguous) 
   EXPECT_EQ(s.chosen, 1u);
   EXPECT_EQ(s.candidates[0].label, "b");
   EXPECT_EQ(s.candidates[1].role, kRuledOutRole);
+  // Each candidate names its hypothesis: the chosen one first, then the others in order.
+  EXPECT_EQ(s.hypothesis, (std::vector<std::size_t>{1, 0, 2}));
   // Every placement contradicted: nothing to fall back on; the verdict will fail it.
   s = selectCandidate(h, true, kCentroid, p, {true, true, true});
   EXPECT_EQ(s.chosen, 0u);
