@@ -39,7 +39,11 @@ const ParamSchema<CandidateParams>& CandidateParams::schema() {
                 "times the source's volume (room for a repeated room or storey)", true)
           .real(&P::elsewhere_margin, "elsewhere-margin", "Set-aside margin", "m", 0.0, 5.0,
                 "Target features this close to the placed source are set aside for that search",
-                true);
+                true)
+          .integer(&P::elsewhere_peak_factor, "elsewhere-peak-factor", "Elsewhere peak factor",
+                   "", 1, 10,
+                   "That search examines this many times the translation peaks per rotation "
+                   "(segments)", true);
   return s;
 }
 

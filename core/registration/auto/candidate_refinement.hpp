@@ -58,6 +58,10 @@ struct CandidateParams {
   /// ... setting aside the target features within this distance of the placed source's box,
   /// m, [0, 5].
   double elsewhere_margin = 0.3;
+  /// ... and examining this many times the translation peaks per rotation of the segments
+  /// search, [1, 10]: the global search keeps the peaks with the most votes, and a copy whose
+  /// model edges are split into short pieces (modelled differently from its twin) draws few.
+  int elsewhere_peak_factor = 4;
   static const ParamSchema<CandidateParams>& schema();
 };
 

@@ -1,5 +1,7 @@
 #include "registration/auto/elsewhere_search.hpp"
 
+#include <algorithm>
+
 #include "registration/auto/registration_pipeline.hpp"
 
 namespace plumb {
@@ -58,7 +60,10 @@ std::optional<Hypothesis> searchElsewhere(const FeatureSet& source, const Featur
   if (!roomForAnotherCopy(source_box, featureBounds(target), p.candidates.elsewhere_volume_ratio))
     return std::nullopt;
   const FeatureSet rest = featuresOutside(target, source_box, chosen, p.candidates.elsewhere_margin);
-  GlobalRegistrationResult g = registerFeatureSets(source, rest, target_is_model, p);
+  PipelineParams wider = p;
+  wider.segments.peaks_per_rotation =
+      std::min(100, p.segments.peaks_per_rotation * p.candidates.elsewhere_peak_factor);
+  GlobalRegistrationResult g = registerFeatureSets(source, rest, target_is_model, wider);
   if (g.hypotheses_evaluated == 0 || !(g.score > 0.0)) return std::nullopt;
   if (g.score < p.candidates.alternative_min_score * chosen_score) return std::nullopt;
   return Hypothesis{g.transform, g.score, "best elsewhere (" + g.method + ")"};

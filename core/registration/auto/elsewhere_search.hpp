@@ -5,7 +5,8 @@
 // modelling difference) and so never be refined and compared. Here the target features that
 // the chosen placement covers are set aside and the global search runs again on the rest: its
 // answer is the best competitor elsewhere, refined and compared like the runner-up
-// (candidate_refinement.hpp), and judged by the free space when it fits about as well.
+// (candidate_refinement.hpp), and judged by the free space when it fits about as well. It
+// examines more translation peaks than the first search (CandidateParams::elsewhere_peak_factor).
 #include <optional>
 
 #include "model/feature_set.hpp"

@@ -37,7 +37,10 @@ const ParamSchema<RefineParams>& RefineParams::schema() {
           .integer(&P::iterations, "icp-iterations", "Iterations per stage", "", 1, 200,
                    "Max iterations per stage", true)
           .real(&P::trim_fraction, "trim", "Trim fraction", "", 0.05, 1.0,
-                "Fraction of correspondences kept (trimmed ICP)", true);
+                "Fraction of correspondences kept (trimmed ICP)", true)
+          .boolean(&P::trim_per_direction, "trim-per-direction", "Trim per direction",
+                   "Keep the trim fraction within each wall / floor direction, so that the "
+                   "points constraining one direction are never trimmed away together", true);
   return s;
 }
 
@@ -311,7 +314,7 @@ void pointToPlaneStage(const LocalClouds& s, const RefineParams& p, double max_d
   for (int it = 0; it < p.iterations; ++it) {
     checkCanceled(progress);
     auto c = findCorrespondences(s, out.pose, step, max_d);
-    trimCorrespondences(c, p.trim_fraction);
+    trimCorrespondences(c, p.trim_fraction, p.trim_per_direction);
     if (c.size() < 6) break;
     const IcpStep d = solveIcpStep(accumulateNormalEquations(c));
     if (!d.finite) break;

@@ -39,6 +39,9 @@ struct RefineParams {
   int iterations = 10;
   /// Fraction of correspondences kept (smallest residuals), (0, 1]. Trimmed ICP.
   double trim_fraction = 0.9;
+  /// Apply trim_fraction within each normal-direction class (floors/ceilings, walls by
+  /// azimuth) rather than over all correspondences (point_to_plane.hpp). Default on.
+  bool trim_per_direction = true;
   /// Measure RefineResult::direction_resistance (the slide test: 12 more passes over the
   /// source points). Not a user setting (not in the schema: a report without it would find
   /// every direction unconstrained): the pipeline turns it off for the runner-up candidates

@@ -9,14 +9,44 @@
 
 namespace plumb::refine_detail {
 
-void trimCorrespondences(std::vector<PlaneCorrespondence>& c, double trim_fraction) {
-  if (trim_fraction >= 1.0 || c.size() < 10) return;
+namespace {
+
+/// Direction class of a correspondence's normal: near-vertical normals (floors, ceilings) form
+/// one class; the others (walls) are binned by azimuth modulo 180 degrees in kAzimuthBins bins.
+constexpr int kAzimuthBins = 6;
+int normalClass(const Eigen::Vector3d& n) {
+  if (std::abs(n.z()) > 0.7) return kAzimuthBins;
+  double a = std::atan2(n.y(), n.x());
+  if (a < 0) a += M_PI;
+  return std::min(kAzimuthBins - 1, int(a / M_PI * kAzimuthBins));
+}
+
+void trimSmallestResiduals(std::vector<PlaneCorrespondence>& c, double trim_fraction) {
   const std::size_t keep = std::max<std::size_t>(6, std::size_t(trim_fraction * c.size()));
+  if (keep >= c.size()) return;
   std::nth_element(c.begin(), c.begin() + (keep - 1), c.end(),
                    [](const PlaneCorrespondence& a, const PlaneCorrespondence& b) {
                      return std::abs(a.r) < std::abs(b.r);
                    });
   c.resize(keep);
+}
+
+}  // namespace
+
+void trimCorrespondences(std::vector<PlaneCorrespondence>& c, double trim_fraction,
+                         bool per_direction) {
+  if (trim_fraction >= 1.0 || c.size() < 10) return;
+  if (!per_direction) {
+    trimSmallestResiduals(c, trim_fraction);
+    return;
+  }
+  std::vector<std::vector<PlaneCorrespondence>> classes(kAzimuthBins + 1);
+  for (const auto& k : c) classes[normalClass(k.n)].push_back(k);
+  c.clear();
+  for (auto& g : classes) {
+    if (g.size() >= 10) trimSmallestResiduals(g, trim_fraction);
+    c.insert(c.end(), g.begin(), g.end());
+  }
 }
 
 Vector6d pointToPlaneJacobian(const PlaneCorrespondence& c) {

@@ -23,7 +23,13 @@ struct PlaneCorrespondence {
 
 /// Trimmed ICP: keeps the max(6, trim_fraction x size) correspondences of smallest |r| (in no
 /// particular order); nothing is dropped when trim_fraction >= 1 or there are fewer than 10.
-void trimCorrespondences(std::vector<PlaneCorrespondence>& c, double trim_fraction);
+/// With `per_direction`, the fraction is kept within each normal-direction class (floors and
+/// ceilings; walls by azimuth in 30-degree bins) of at least 10 correspondences: a start a few
+/// centimetres off along one wall direction gives that direction's points the largest residuals,
+/// and a global trim would drop exactly the points that constrain it (the refinement then
+/// settles beside the truth).
+void trimCorrespondences(std::vector<PlaneCorrespondence>& c, double trim_fraction,
+                         bool per_direction);
 
 /// Jacobian of r with respect to (w, dt) for x -> x + w x x + dt: J = [p x n; n] (Low 2004,
 /// small-angle rotation).

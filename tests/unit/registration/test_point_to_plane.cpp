@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -78,13 +79,36 @@ TEST(PointToPlane, ZeroResidualsGiveAConvergedZeroStepAndANonFiniteSystemNone) {
 TEST(PointToPlane, TrimmingKeepsTheSmallestResiduals) {
   std::vector<PlaneCorrespondence> c;
   for (int k = 0; k < 20; ++k) c.push_back({Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), (k % 2 ? -1.0 : 1.0) * k});
-  trimCorrespondences(c, 0.5);
+  trimCorrespondences(c, 0.5, false);
   ASSERT_EQ(c.size(), 10u);
   for (const auto& k : c) EXPECT_LT(std::abs(k.r), 10.0);
-  trimCorrespondences(c, 0.5);  // 10 left: trimmed to max(6, 5)
+  trimCorrespondences(c, 0.5, false);  // 10 left: trimmed to max(6, 5)
   EXPECT_EQ(c.size(), 6u);
-  trimCorrespondences(c, 0.5);  // fewer than 10: untouched
+  trimCorrespondences(c, 0.5, false);  // fewer than 10: untouched
   EXPECT_EQ(c.size(), 6u);
+}
+
+TEST(PointToPlane, TrimmingPerDirectionKeepsEveryWallDirection) {
+  // 80 floor correspondences fitting well and 20 on one wall 5 cm off (a start displaced
+  // along the wall's normal): a global 90% trim drops half the wall, a per-direction trim
+  // keeps 90% of each.
+  std::vector<PlaneCorrespondence> c;
+  for (int k = 0; k < 80; ++k)
+    c.push_back({Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.001 * (k % 5)});
+  for (int k = 0; k < 20; ++k)
+    c.push_back({Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 0.05 + 0.001 * k});
+  const auto walls = [](const std::vector<PlaneCorrespondence>& v) {
+    return std::count_if(v.begin(), v.end(), [](const PlaneCorrespondence& k) { return k.n.y() > 0.5; });
+  };
+  auto global = c;
+  trimCorrespondences(global, 0.9, false);
+  EXPECT_EQ(global.size(), 90u);
+  EXPECT_EQ(walls(global), 10);
+  trimCorrespondences(c, 0.9, true);
+  EXPECT_EQ(c.size(), 90u);
+  EXPECT_EQ(walls(c), 18);
+  for (const auto& k : c)
+    if (k.n.y() > 0.5) EXPECT_LT(k.r, 0.068);  // the wall's own largest two are the ones dropped
 }
 
 TEST(PointToPlane, StageDistancesShrinkGeometricallyFromStartToFinal) {
