@@ -10,6 +10,7 @@
 //   bench_verdict [--ci] [--csv PATH] [--suites wrong,right,symmetric,degenerate]
 //                 [--poses N] [--right-poses N] [--symmetric-rooms N] [--symmetric-poses N]
 //                 [--max-stations N] [--tls-step DEG] [--wrong-budget S] [--pairs SOURCE:TARGET:KIND,...]
+//                 [--seed-offset N]
 // KIND is model, mms or indoor (e.g. --pairs house:duplex.ifc:model,l-shaped:house:mms).
 // --ci runs the CTest subset (a few pairs per suite, one pose each).
 #include <chrono>
@@ -40,6 +41,7 @@ struct Options {
   double tls_step = 0.5;      ///< deg, the acceptance scenarios' TLS step
   double wrong_budget = 0.0;  ///< s; 0 = no limit
   int poses = 1, right_poses = 10, symmetric_rooms = 8, symmetric_poses = 1, max_stations = 3;
+  std::uint64_t seed_offset = 0;  ///< --seed-offset: fresh poses (0: the tuning runs' seeds)
 };
 
 Options parse(int argc, char** argv) {
@@ -70,6 +72,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--right-poses") o.right_poses = std::stoi(next());
     else if (a == "--symmetric-rooms") o.symmetric_rooms = std::stoi(next());
     else if (a == "--symmetric-poses") o.symmetric_poses = std::stoi(next());
+    else if (a == "--seed-offset") o.seed_offset = std::stoull(next());
     else if (a == "--max-stations") o.max_stations = std::stoi(next());
     else if (a == "--tls-step") o.tls_step = std::stod(next());
     else if (a == "--wrong-budget") o.wrong_budget = std::stod(next());
@@ -77,7 +80,8 @@ Options parse(int argc, char** argv) {
       throw std::runtime_error(
           "usage: bench_verdict [--ci] [--csv PATH] [--suites wrong,right,symmetric,degenerate] "
           "[--poses N] [--right-poses N] [--symmetric-rooms N] [--symmetric-poses N] "
-          "[--max-stations N] [--tls-step DEG] [--wrong-budget S] [--pairs SOURCE:TARGET:KIND,...]");
+          "[--max-stations N] [--tls-step DEG] [--wrong-budget S] [--pairs SOURCE:TARGET:KIND,...] "
+          "[--seed-offset N]");
   }
   return o;
 }
@@ -165,13 +169,13 @@ int main(int argc, char** argv) try {
   if (o.suites.count("right")) {
     const auto t0 = std::chrono::steady_clock::now();
     std::printf("\n== right-pair suite: acceptance scenarios x %d poses, real pair\n", o.right_poses);
-    append(runRightPairSuite(test::scenarioNames(), o.right_poses, true), "right-pair", t0);
+    append(runRightPairSuite(test::scenarioNames(), o.right_poses, true, o.seed_offset), "right-pair", t0);
   }
   if (o.suites.count("symmetric")) {
     const auto t0 = std::chrono::steady_clock::now();
     std::printf("\n== symmetric suite: up to %d rooms per building x %d poses\n",
                 o.symmetric_rooms, o.symmetric_poses);
-    append(runSymmetricSuite(data, o.symmetric_rooms, o.symmetric_poses), "symmetric", t0);
+    append(runSymmetricSuite(data, o.symmetric_rooms, o.symmetric_poses, o.seed_offset), "symmetric", t0);
   }
   if (o.suites.count("degenerate")) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -188,7 +192,7 @@ int main(int argc, char** argv) try {
                                       : allWrongPairs(data, allBuildings(), {"house"});
     std::printf("\n== wrong-pair suite: %zu pairs x %d poses\n", pairs.size(), o.poses);
     wrong_pairs = pairs.size();
-    append(runWrongPairSuite(data, pairs, o.poses, o.wrong_budget, skipped), "wrong-pair", t0);
+    append(runWrongPairSuite(data, pairs, o.poses, o.wrong_budget, skipped, o.seed_offset), "wrong-pair", t0);
   }
   printTables(all);
   if (!o.csv.empty()) {

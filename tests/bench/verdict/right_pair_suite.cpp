@@ -81,7 +81,7 @@ void printRecord(const PairRecord& r) {
 }  // namespace
 
 std::vector<PairRecord> runRightPairSuite(const std::vector<std::string>& scenarios, int poses,
-                                          bool real_pair) {
+                                          bool real_pair, std::uint64_t seed_offset) {
   const PipelineParams params = test::acceptanceParams();
   std::vector<PairRecord> out;
   for (std::size_t k = 0; k < scenarios.size(); ++k) {
@@ -91,7 +91,7 @@ std::vector<PairRecord> runRightPairSuite(const std::vector<std::string>& scenar
     // The acceptance test's seeds (11, 12, 13, 14 in scenarioNames() order).
     const auto names = test::scenarioNames();
     const auto index = std::find(names.begin(), names.end(), scenarios[k]) - names.begin();
-    const auto cases = test::randomPoses(poses, 11 + index);
+    const auto cases = test::randomPoses(poses, 11 + index + seed_offset);
     for (int i = 0; i < poses; ++i) {
       out.push_back(scenarioRecord(s, cases[i], i, params));
       printRecord(out.back());

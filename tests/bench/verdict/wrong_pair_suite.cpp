@@ -73,7 +73,8 @@ std::string stageSeconds(const QualityReport& q) {
 }  // namespace
 
 std::vector<PairRecord> runWrongPairSuite(SurveyCatalogue& data, const std::vector<WrongPair>& pairs,
-                                          int poses, double budget_seconds, int& skipped) {
+                                          int poses, double budget_seconds, int& skipped,
+                                          std::uint64_t seed_offset) {
   const auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -87,7 +88,7 @@ std::vector<PairRecord> runWrongPairSuite(SurveyCatalogue& data, const std::vect
     }
     const SideData& source = data.indoor(p.source);
     const SideData& target = targetOf(data, p);
-    const auto cases = test::randomPoses(poses, 7000 + std::hash<std::string>{}(p.name()) % 1000);
+    const auto cases = test::randomPoses(poses, 7000 + std::hash<std::string>{}(p.name()) % 1000 + seed_offset);
     for (int i = 0; i < poses; ++i) {
       const PairOutcome o = registerMoved(source, cases[i], target, data.params());
       PairRecord r = recordOf("wrong-pair", p.name(), i, o);
