@@ -92,7 +92,8 @@ std::vector<Eigen::Vector3d> houseRooms(int max_rooms) {
 
 }  // namespace
 
-std::vector<PairRecord> runSymmetricSuite(SurveyCatalogue& data, int max_rooms, int poses) {
+std::vector<PairRecord> runSymmetricSuite(SurveyCatalogue& data, int max_rooms, int poses,
+                                          std::uint64_t seed_offset) {
   std::vector<PairRecord> out;
   struct Case {
     std::string building;
@@ -111,8 +112,8 @@ std::vector<PairRecord> runSymmetricSuite(SurveyCatalogue& data, int max_rooms, 
   for (const auto& k : cases) {
     const Building& b = data.building(k.building);
     for (std::size_t room = 0; room < k.rooms.size(); ++room) {
-      const SideData scan = stationScan(b, k.rooms[room], 900 + room, data.params());
-      const auto poses_of = test::randomPoses(poses, 3000 + room);
+      const SideData scan = stationScan(b, k.rooms[room], 900 + room + seed_offset, data.params());
+      const auto poses_of = test::randomPoses(poses, 3000 + room + seed_offset);
       char name[160];
       std::snprintf(name, sizeof name, "%s room (%.1f, %.1f, %.1f)", k.building.c_str(),
                     k.rooms[room].x(), k.rooms[room].y(), k.rooms[room].z());
