@@ -17,7 +17,8 @@ const ParamSchema<PipelineParams>& PipelineParams::schema() {
                   {methodName(RegistrationMethod::Auto), methodName(RegistrationMethod::Planes),
                    methodName(RegistrationMethod::Openings), methodName(RegistrationMethod::Segments),
                    methodName(RegistrationMethod::Icp)},
-                  "auto picks from the inputs: segments for a model, planes for two scans")
+                  "auto picks from the inputs: segments for a model (then its planes and openings), "
+                  "planes for two scans")
           .boolean(&P::refine, "refine", "Refine (ICP)", "Refine the global answer with ICP")
           .integer(&P::seed, "seed", "Random seed", "", 0, kMaxSeed,
                    "Seed of every random step (plane detection, openings hypotheses, model "
@@ -42,10 +43,11 @@ bool paramGroupUsedBy(const std::string& key, RegistrationMethod method) {
   switch (method) {
     case RegistrationMethod::Auto: return true;
     case RegistrationMethod::Planes:
-      return in({"plane-extraction", "planes", "refinement", "candidates", "quality", "visibility"});
+      return in({"plane-extraction", "bim-features", "planes", "refinement", "candidates", "quality",
+                 "visibility"});
     case RegistrationMethod::Openings:
-      return in({"plane-extraction", "opening-detection", "openings", "refinement", "candidates",
-                 "quality", "visibility"});
+      return in({"plane-extraction", "opening-detection", "bim-features", "openings", "refinement",
+                 "candidates", "quality", "visibility"});
     case RegistrationMethod::Segments:
       return in({"segment-detection", "mesh-edges", "segments", "refinement", "candidates",
                  "quality", "visibility"});

@@ -18,6 +18,7 @@ void forEachParamGroup(P& p, F&& f) {
   f("opening-detection", "Opening detection", OpeningDetectionParams::schema(), p.opening_detection);
   f("segment-detection", "Segment detection", SegmentDetectionParams::schema(), p.segment_detection);
   f("mesh-edges", "Model sharp edges", MeshEdgeParams::schema(), p.mesh_edges);
+  f("bim-features", "Model planes and openings", BimFeatureParams::schema(), p.bim_features);
   f("planes", "Planes registration", PlaneRegistrationParams::schema(), p.planes);
   f("openings", "Openings registration", OpeningRegistrationParams::schema(), p.openings);
   f("segments", "Segments registration", SegmentRegistrationParams::schema(), p.segments);

@@ -3,6 +3,9 @@
 // report. `auto` picks the method from what the inputs carry and says which it used (the same
 // whether the caller passes features or not: segments are detected when needed):
 //   - a model (BIM/mesh) on either side: segments (scan segments vs the model's sharp edges);
+//     when they find no placement (a corridor with few edges), the BIM's own planes (and
+//     openings, from its IfcWindow/IfcDoor elements) as for two scans below. Segments that
+//     find two placements stay ambiguous (settled on refined points);
 //   - two scans: planes; when both sides carry openings on façades, openings too: alone when
 //     planes fail (indoor/outdoor: the planes score is ambiguous there, the indoor floor fitting
 //     the street ground about as well as the few interior surfaces the outdoor scan sees through
@@ -19,6 +22,7 @@
 #include "common/params.hpp"
 #include "common/progress.hpp"
 #include "common/seed.hpp"
+#include "features/bim/bim_features.hpp"
 #include "features/facades/opening_detection.hpp"
 #include "features/mesh_edges/mesh_edges.hpp"
 #include "features/planes/plane_extraction.hpp"
@@ -62,6 +66,8 @@ struct PipelineParams {
   OpeningDetectionParams opening_detection;
   SegmentDetectionParams segment_detection;
   MeshEdgeParams mesh_edges;
+  /// The model's own planes, façades and openings (a model side).
+  BimFeatureParams bim_features;
   PlaneRegistrationParams planes;
   OpeningRegistrationParams openings;
   SegmentRegistrationParams segments;
@@ -126,8 +132,8 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
 PipelineResult registerData(const RegistrationSide& source, const RegistrationSide& target,
                             const PipelineParams& params, Progress* progress = nullptr);
 
-/// Features of one side: planes + openings (+ segments when `with_segments`) for a scan; the
-/// sharp edges for a model.
+/// Features of one side: planes + openings (+ segments when `with_segments`) for a scan; for a
+/// model its own planes, façades and openings (features/bim) and its sharp edges.
 FeatureSet extractFeatures(const RegistrationSide& side, const PipelineParams& params,
                            bool with_segments, std::vector<std::string>* log = nullptr,
                            Progress* progress = nullptr);

@@ -122,6 +122,9 @@ class GuiRegistrationTest : public QObject {
     QVERIFY(scan_features->features().planes.size() >= 10);
     QVERIFY(scan_features->features().segments.size() >= 10);
     QVERIFY(model_features->features().segments.size() >= 50);  // sharp edges of the model
+    // The model's own planes and (PLY: untyped) window holes, drawn like the scan's (issue 14).
+    QVERIFY(model_features->features().planes.size() >= 10);
+    QVERIFY(!model_features->features().openings.empty());
     const QImage features = grabView(app.view);
     saveScreenshot(app.view, artefact("features.png"));
     QVERIFY(countNonBackground(features) > features.width() * features.height() / 50);

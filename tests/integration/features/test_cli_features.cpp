@@ -49,6 +49,32 @@ TEST(CliFeatures, SharpEdgesOfAnIfcModel) {
   for (const auto& s : j.at("segments")) EXPECT_EQ(s.at("support").get<double>(), 0.0);  // exact model edges
 }
 
+TEST(CliFeatures, ExactPlanesAndOpeningsOfAnIfcModel) {
+  const auto dir = plumb::test::scratchDir("cli_features_ifc_planes");
+  const auto out = dir / "duplex_planes.json";
+  const CliResult r =
+      plumbCli(dir, "features " + shellQuote(plumb::test::sharedData("ifc/duplex.ifc").string()) +
+                        " --planes --openings -o " + shellQuote(out.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(plumb::test::readAll(out));
+  ASSERT_GT(j.at("planes").size(), 100u) << r.out;
+  EXPECT_FALSE(j.at("facades").empty()) << r.out;
+  // Each IfcWindow/IfcDoor element with a wall face gives one opening per face (one or two).
+  const auto at = r.out.find(" IfcWindow/IfcDoor elements, ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::size_t from = r.out.rfind("from ", at) + 5;
+  const std::size_t elements = std::stoul(r.out.substr(from, at - from));
+  const std::size_t without = std::stoul(r.out.substr(at + 29));
+  EXPECT_GE(j.at("openings").size(), elements - without) << r.out;
+  EXPECT_LE(j.at("openings").size(), 2 * (elements - without)) << r.out;
+  for (const auto& o : j.at("openings")) {
+    const int f = o.at("facade").get<int>();
+    ASSERT_GE(f, 0);
+    ASSERT_LT(f, int(j.at("planes").size()));
+  }
+  for (const auto& p : j.at("planes")) EXPECT_GE(p.at("area").get<double>(), 0.1);
+}
+
 TEST(CliFeatures, ErrorsAreOneLineAndNonZero) {
   const auto dir = plumb::test::scratchDir("cli_features_err");
   const std::string scan = shellQuote(plumb::test::sharedData("pcd/room_scan1.pcd").string());
