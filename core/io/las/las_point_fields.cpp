@@ -44,7 +44,10 @@ std::string num(double v) {
 }  // namespace
 
 std::uint16_t IntensityMap::operator()(float v) const {
-  return clampRound<std::uint16_t>(scaled ? (v - lo) * factor : v);
+  const double x = scaled ? (v - lo) * factor : v;
+  if (!(x > 0)) return 0;  // also NaN
+  if (x >= 65535) return 65535;
+  return static_cast<std::uint16_t>(x + 0.5);  // round half away from zero, as std::round
 }
 
 std::optional<IntensityRange> intensityRange(const PointCloud& cloud,

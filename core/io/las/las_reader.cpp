@@ -244,8 +244,8 @@ bool sixteenBitColor(const ByteSource& src, const LasHeader& h, const PointLayou
   return false;
 }
 
-/// The final columns of the streamed scan: LAS fields 0 in every point have none (as in
-/// readLas); `nonzero` says which were not.
+/// The final columns of the streamed scan: the declared ones but the LAS fields in `zero` (0
+/// in every point: readLas gives them no column).
 std::vector<std::string> streamedFields(const std::vector<std::string>& declared, const std::vector<std::string>& zero) {
   std::vector<std::string> out;
   for (const auto& f : declared)
@@ -264,64 +264,103 @@ void markNonzero(const PointCloud& c, std::vector<std::string>& nonzero) {
   mark("scan_flags", c.scan_flags);
 }
 
-void streamFromSource(const ByteSource& src, const std::filesystem::path& file, const StreamOptions& options,
-                      ChunkSink& sink, Progress* progress) {
-  LasPrologue p = readPrologue(src, file);
-  const LasHeader& h = p.header;
-  const PointLayout layout = pointLayout(h.format());
-  const std::size_t extra_bytes = h.record_length - layout.min_size;
-  const std::vector<ExtraField> extras = extraFields(p.vlrs, extra_bytes, LasReadOptions{}, file, p.warnings);
-  const bool rgb16 = sixteenBitColor(src, h, layout, progress);
-  const std::size_t capacity = chunkCapacity(options);
+/// What streaming needs from the header and VLRs, decided before the first point.
+struct StreamSetup {
+  LasPrologue p;
+  PointLayout layout;
+  std::size_t extra_bytes = 0;
+  std::vector<ExtraField> extras;
+  bool rgb16 = false;
+  Eigen::Vector3d offset;
+};
 
+StreamSetup streamSetup(const ByteSource& src, const std::filesystem::path& file, Progress* progress) {
+  StreamSetup s{readPrologue(src, file), {}, 0, {}, false, {}};
+  const LasHeader& h = s.p.header;
+  s.layout = pointLayout(h.format());
+  s.extra_bytes = h.record_length - s.layout.min_size;
+  s.extras = extraFields(s.p.vlrs, s.extra_bytes, LasReadOptions{}, file, s.p.warnings);
+  s.rgb16 = sixteenBitColor(src, h, s.layout, progress);
+  s.offset = chooseOffset(h, src);
+  return s;
+}
+
+/// The one scan's outline; `fields` of a chunk (every LAS field column of the format).
+StreamOutline streamOutline(StreamSetup& s, const std::filesystem::path& file) {
   StreamOutline outline;
   outline.dataset.source = file;
   outline.dataset.format = "las";
-  outline.dataset.coordinate_system = coordinateSystem(p.vlrs, h, p.warnings);
+  outline.dataset.coordinate_system = coordinateSystem(s.p.vlrs, s.p.header, s.p.warnings);
   StreamScan scan;
   scan.scan.name = file.stem().string();
-  scan.record_count = h.point_count;
+  scan.record_count = s.p.header.point_count;
   scan.intensity_integral = true;  // uint16
-  PointCloud chunk;
-  chunk.offset = chooseOffset(h, src);
-  PointDecoder(h, extras, chunk, 1, rgb16);
-  scan.fields = chunk.fieldNames();
+  PointCloud sample;
+  PointDecoder(s.p.header, s.extras, sample, 1, s.rgb16);
+  scan.fields = sample.fieldNames();
   outline.scans.push_back(scan);
   outline.dataset.scans.push_back(scan.scan);
-  sink.begin(outline);
-  sink.beginScan(outline.scans[0]);
+  return outline;
+}
 
+/// What the records told beyond the points: readLas's checks and which LAS fields are not 0.
+struct StreamedRecords {
   Bounds world;
   std::uint64_t bad_returns = 0;
   std::vector<std::string> nonzero;
+};
+
+StreamedRecords streamRecords(const ByteSource& src, const StreamSetup& s, std::size_t capacity,
+                              ChunkSink& sink, Progress* progress) {
+  const LasHeader& h = s.p.header;
+  StreamedRecords r;
+  PointCloud chunk;
+  chunk.offset = s.offset;
   std::vector<std::uint8_t> buffer;
   for (std::uint64_t first = 0; first < h.point_count; first += capacity) {
     checkCanceled(progress);
     const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(capacity, h.point_count - first));
     chunk.scalar_fields.clear();
-    PointDecoder decoder(h, extras, chunk, n, rgb16);
+    PointDecoder decoder(h, s.extras, chunk, n, s.rgb16);
     for (std::size_t done = 0; done < n; done += kChunkRecords) {
       const std::size_t m = std::min(kChunkRecords, n - done);
       decoder.decode(recordsAt(src, h, first + done, m, buffer), m, done);
     }
-    bad_returns += decoder.badReturns();
-    world.extend(decoder.worldBounds());
-    markNonzero(chunk, nonzero);
+    r.bad_returns += decoder.badReturns();
+    r.world.extend(decoder.worldBounds());
+    markNonzero(chunk, r.nonzero);
     sink.chunk(chunk);
     reportProgress(progress, static_cast<double>(first + n) / static_cast<double>(h.point_count), "reading LAS points");
   }
+  return r;
+}
+
+/// The end of the scan as readLas would show it.
+StreamScanEnd streamEnd(const StreamSetup& s, const StreamScan& scan, const StreamedRecords& r) {
   StreamScanEnd end;
-  end.points = h.point_count;
+  end.points = s.p.header.point_count;
   std::vector<std::string> zero;
   for (const char* f : {"scan_angle", "user_data", "point_source_id", "classification_flags", "scanner_channel", "scan_flags"})
-    if (std::find(nonzero.begin(), nonzero.end(), f) == nonzero.end()) zero.push_back(f);
-  end.fields = streamedFields(h.point_count > 0 ? scan.fields : std::vector<std::string>{"x", "y", "z"}, zero);
-  sink.endScan(end);
-  if (bad_returns > 0)
-    p.warnings.push_back(std::to_string(bad_returns) +
-                         " points have a return number outside 1..number of returns (kept as stored)");
-  checkHeaderBounds(h, world, p.warnings);
-  addMetadata(outline.dataset.metadata, h, layout, extra_bytes, rgb16, p.vlrs, p.warnings);
+    if (std::find(r.nonzero.begin(), r.nonzero.end(), f) == r.nonzero.end()) zero.push_back(f);
+  PointCloud none;  // the columns of an empty file
+  PointDecoder(s.p.header, s.extras, none, 0, s.rgb16);
+  end.fields = streamedFields(end.points > 0 ? scan.fields : none.fieldNames(), zero);
+  return end;
+}
+
+void streamFromSource(const ByteSource& src, const std::filesystem::path& file, const StreamOptions& options,
+                      ChunkSink& sink, Progress* progress) {
+  StreamSetup s = streamSetup(src, file, progress);
+  StreamOutline outline = streamOutline(s, file);
+  sink.begin(outline);
+  sink.beginScan(outline.scans[0]);
+  const StreamedRecords r = streamRecords(src, s, chunkCapacity(options), sink, progress);
+  sink.endScan(streamEnd(s, outline.scans[0], r));
+  if (r.bad_returns > 0)
+    s.p.warnings.push_back(std::to_string(r.bad_returns) +
+                           " points have a return number outside 1..number of returns (kept as stored)");
+  checkHeaderBounds(s.p.header, r.world, s.p.warnings);
+  addMetadata(outline.dataset.metadata, s.p.header, s.layout, s.extra_bytes, s.rgb16, s.p.vlrs, s.p.warnings);
   sink.end(outline);
 }
 

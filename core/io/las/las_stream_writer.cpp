@@ -93,30 +93,32 @@ struct IntegerBounds {
   }
 };
 
-// Points with a finite position, and their world bounds.
-struct KeptPoints {
-  std::vector<std::uint8_t> keep;
-  Bounds bounds;
+// Which points have a finite position (kept), and how many.
+std::uint64_t markKept(const PointCloud& cloud, std::vector<std::uint8_t>& keep) {
+  keep.resize(cloud.size());
   std::uint64_t count = 0;
-};
-KeptPoints keptPoints(const PointCloud& cloud) {
-  KeptPoints k;
-  k.keep.resize(cloud.size());
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    k.keep[i] = cloud.positions[i].allFinite();
-    if (k.keep[i]) {
-      k.bounds.extend(cloud.world(i));
-      ++k.count;
-    }
-  }
-  return k;
+  for (std::size_t i = 0; i < cloud.size(); ++i) count += keep[i] = cloud.positions[i].allFinite();
+  return count;
+}
+
+// round(v) half away from zero, as std::llround, for |v| < 2^31 (adding 0.5 is exact there).
+inline std::int32_t roundRecord(double v) {
+  return static_cast<std::int32_t>(v >= 0 ? v + 0.5 : v - 0.5);
+}
+
+[[noreturn]] void extentError(const std::filesystem::path& path, int axis, double scale) {
+  const double limit = 2147483647.0 * scale;
+  throw FileError(path, std::string("the points span too far from the offset along ") + "XYZ"[axis] +
+                            " for LAS integers at scale " + std::to_string(scale) + " m (limit +-" +
+                            std::to_string(limit) + " m); use a coarser scale");
 }
 
 // Writes the kept points' records in chunks: coordinates here, the other fields by `fields`.
-void writeRecords(std::ostream& out, const PointCloud& cloud, const KeptPoints& kept,
-                  RecordFields& fields, std::size_t record_length, const Eigen::Vector3d& offset,
-                  double scale, IntegerBounds& ib, Progress* progress) {
-  std::vector<std::uint8_t> buf;
+// Throws FileError for a point beyond int32 records of the offset (nothing is committed).
+void writeRecords(std::ostream& out, const std::filesystem::path& path, const PointCloud& cloud,
+                  const std::vector<std::uint8_t>& keep, RecordFields& fields, std::size_t record_length,
+                  const Eigen::Vector3d& offset, double scale, IntegerBounds& ib,
+                  std::vector<std::uint8_t>& buf, Progress* progress) {
   const Eigen::Vector3d shift = cloud.offset - offset;
   const double inv = 1.0 / scale;
   for (std::size_t begin = 0; begin < cloud.size(); begin += kChunk) {
@@ -125,18 +127,20 @@ void writeRecords(std::ostream& out, const PointCloud& cloud, const KeptPoints& 
     buf.assign((end - begin) * record_length, 0);
     std::uint8_t* r = buf.data();
     for (std::size_t i = begin; i < end; ++i) {
-      if (!kept.keep[i]) continue;
+      if (!keep[i]) continue;
       const Eigen::Vector3d p = cloud.local(i);  // exact (residual included)
       std::int32_t xyz[3];
       for (int a = 0; a < 3; ++a) {
-        xyz[a] = static_cast<std::int32_t>(std::llround((p[a] + shift[a]) * inv));
+        const double v = (p[a] + shift[a]) * inv;
+        if (!(std::abs(v) < 2147483647.0)) extentError(path, a, scale);
+        xyz[a] = roundRecord(v);
         ib.lo[a] = std::min(ib.lo[a], xyz[a]);
         ib.hi[a] = std::max(ib.hi[a], xyz[a]);
         store<std::int32_t>(r + 4 * a, xyz[a]);
       }
       r += record_length;
     }
-    fields.write(buf.data(), record_length, begin, end, kept.keep.data());
+    fields.write(buf.data(), record_length, begin, end, keep.data());
     out.write(reinterpret_cast<const char*>(buf.data()), r - buf.data());
     reportProgress(progress, static_cast<double>(end) / static_cast<double>(cloud.size()),
                    "writing LAS points");
@@ -161,18 +165,6 @@ void finishHeader(LasHeader& h, std::uint64_t count, const std::array<std::uint6
   }
 }
 
-// Every kept point must be within int32 scaled integers of the header offset.
-void checkExtent(const std::filesystem::path& path, const Bounds& bounds, const Eigen::Vector3d& offset,
-                 double scale) {
-  if (bounds.empty()) return;
-  const double limit = 2147483647.0 * scale;
-  for (int a = 0; a < 3; ++a)
-    if (std::abs(bounds.min[a] - offset[a]) >= limit || std::abs(bounds.max[a] - offset[a]) >= limit)
-      throw FileError(path, std::string("the points span too far from the offset along ") + "XYZ"[a] +
-                                " for LAS integers at scale " + std::to_string(scale) + " m (limit +-" +
-                                std::to_string(limit) + " m); use a coarser scale");
-}
-
 }  // namespace
 
 struct LasStreamWriter::State {
@@ -188,6 +180,7 @@ struct LasStreamWriter::State {
   IntegerBounds ib;
   std::array<std::uint64_t, 15> by_return{};
   std::uint64_t zero_returns = 0, invalid_colors = 0;
+  std::vector<std::uint8_t> keep, records;  // reused from chunk to chunk
   State(const std::filesystem::path& p) : path(p), writer(p) {}
 };
 
@@ -234,9 +227,8 @@ LasStreamWriter::~LasStreamWriter() = default;
 
 void LasStreamWriter::write(const PointCloud& points, Progress* progress) {
   State& s = *s_;
-  const KeptPoints kept = keptPoints(points);
-  checkExtent(s.path, kept.bounds, s.format.offset, s.options.scale);
-  if (s.options.version_minor != 4 && s.report.points.value_or(0) + kept.count > std::numeric_limits<std::uint32_t>::max())
+  const std::uint64_t kept = markKept(points, s.keep);
+  if (s.options.version_minor != 4 && s.report.points.value_or(0) + kept > std::numeric_limits<std::uint32_t>::max())
     throw InputError("LAS 1.2 holds at most 4294967295 points; write LAS 1.4");
   // Extra fields a chunk lacks are written as 0.
   std::vector<ScalarField> zeros;
@@ -252,14 +244,14 @@ void LasStreamWriter::write(const PointCloud& points, Progress* progress) {
     extras.push_back(f);
   }
   RecordFields fields(points, s.layout, s.intensity, extras);
-  writeRecords(s.writer.stream(), points, kept, fields, s.record_length, s.format.offset, s.options.scale,
-               s.ib, progress);
+  writeRecords(s.writer.stream(), s.path, points, s.keep, fields, s.record_length, s.format.offset,
+               s.options.scale, s.ib, s.records, progress);
   for (std::size_t k = 0; k < s.by_return.size(); ++k) s.by_return[k] += fields.byReturn()[k];
   s.zero_returns += fields.zeroReturns();
   if (s.layout.rgb_at >= 0 && points.color_invalid.size() == points.size())
     s.invalid_colors += static_cast<std::uint64_t>(std::count(points.color_invalid.begin(), points.color_invalid.end(), 1));
-  s.report.points = s.report.points.value_or(0) + kept.count;
-  s.report.dropped += points.size() - kept.count;
+  s.report.points = s.report.points.value_or(0) + kept;
+  s.report.dropped += points.size() - kept;
 }
 
 WriteReport LasStreamWriter::finish() {

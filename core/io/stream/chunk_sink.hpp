@@ -1,5 +1,5 @@
 #pragma once
-// The streaming read interface (docs/IO.md "Streaming"): a reader hands a file to a ChunkSink
+// The streaming read interface (docs/IO.md): a reader hands a file to a ChunkSink
 // scan by scan, in chunks of at most StreamOptions::chunk_points points, so a consumer
 // (statistics, conversion, splitting, subsampling) never holds a whole scan. Header-only so
 // every format module can implement it without depending on the dispatcher.

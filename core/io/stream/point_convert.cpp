@@ -1,5 +1,6 @@
 #include "io/stream/point_convert.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -116,11 +117,15 @@ class ConvertSink final : public ChunkSink {
     }
   }
   void chunk(const PointCloud& points) override {
-    PointCloud c = points;
-    if (!pose_.isIdentity()) c.transform(pose_);
-    if (!params_.split && outline_->scans.size() > 1 && !to_las_)
-      c.scan_id.assign(c.size(), static_cast<std::uint16_t>(scan_index_));
-    write(c);
+    const bool scan_ids = !params_.split && outline_->scans.size() > 1 && !to_las_;
+    if (pose_.isIdentity() && !scan_ids) {
+      write(points);
+      return;
+    }
+    work_ = points;  // reuses the previous chunk's memory
+    if (!pose_.isIdentity()) work_.transform(pose_);
+    if (scan_ids) work_.scan_id.assign(work_.size(), static_cast<std::uint16_t>(scan_index_));
+    write(work_);
   }
   void endScan(const StreamScanEnd& end) override {
     if (params_.split) finish(end.grid_rows, end.grid_columns);
@@ -153,9 +158,10 @@ class ConvertSink final : public ChunkSink {
         if (k == "GPS time" && v == "adjusted standard GPS time") f.adjusted_gps_time = true;
       output_.las = std::make_unique<LasStreamWriter>(output_.file.path, f, lasOptions(params_.write));
     } else {
-      // Float x y z only for plain float coordinates (what writePly then keeps as they are);
-      // anything with an offset or residuals is written in double, exact without a pass.
-      output_.ply_double = !(first.offset.isZero() && !first.hasPositionResiduals());
+      // writePly's rule, decided on the first chunk: float x y z when every point is within
+      // 0.1 mm of its float32 value, else double; a later chunk that needs double sends the
+      // file to the whole route (write()).
+      output_.ply_double = !first.worldFitsFloat(kCoordinatePrecision);
       output_.ply = std::make_unique<PlyStreamWriter>(output_.file.path, first, output_.ply_double,
                                                       plyOptions(params_.write));
     }
@@ -167,7 +173,7 @@ class ConvertSink final : public ChunkSink {
       output_.intensity.see(c);
       output_.las->write(c, progress_);
     } else {
-      if (!output_.ply_double && !(c.offset.isZero() && !c.hasPositionResiduals())) throw NeedsWholeData{};
+      if (!output_.ply_double && !c.worldFitsFloat(kCoordinatePrecision)) throw NeedsWholeData{};
       output_.ply->write(c, progress_);
     }
   }
@@ -197,6 +203,7 @@ class ConvertSink final : public ChunkSink {
   std::size_t scan_index_ = 0;
   RigidTransform pose_;
   std::pair<std::int32_t, std::int32_t> grid_{0, 0};
+  PointCloud work_;  // a chunk moved into the output frame
   ConvertResult result_;
 };
 

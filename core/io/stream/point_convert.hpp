@@ -1,7 +1,7 @@
 #pragma once
 // Point file conversion (plumb-cli convert): to one file, or one file per scan (split), with
 // an optional rigid transform applied in world coordinates (scan poses become T * pose).
-// E57 and LAS inputs written to LAS or PLY are streamed (docs/IO.md "Streaming"): each chunk
+// E57 and LAS inputs written to LAS or PLY are streamed (docs/IO.md): each chunk
 // is moved into the output frame in double and written as it comes, so memory is bounded by
 // the chunk size, never a scan or the campaign. Everything else (other formats, or a stream
 // whose output needs a fact only the whole data gives, see convertPointFile) is read whole
@@ -46,8 +46,8 @@ std::filesystem::path splitPath(const std::filesystem::path& out, std::size_t k,
 /// Converts a point file. Streams when the input is E57 or LAS and the output LAS or PLY,
 /// unless the output needs what only the whole data tells, then reads it whole: LAS
 /// intensity that is neither whole numbers by type nor scalable from the E57 intensity
-/// limits, scans with different fields merged into one file, PLY float coordinates that a
-/// later chunk cannot keep. Writes are atomic; on an error no output of the failing file is
+/// limits, scans with different fields merged into one file, PLY float coordinates (chosen
+/// on the first chunk, writePly's 0.1 mm rule) that a later chunk cannot keep. Writes are atomic; on an error no output of the failing file is
 /// left (outputs of earlier scans of a split stay).
 ConvertResult convertPointFile(const std::filesystem::path& in, const std::filesystem::path& out,
                                const ConvertParams& params, Progress* progress = nullptr);

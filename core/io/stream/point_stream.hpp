@@ -1,5 +1,5 @@
 #pragma once
-// Streaming reads of point files (docs/IO.md "Streaming"): streamDataset hands a file to a
+// Streaming reads of point files (docs/IO.md): streamDataset hands a file to a
 // ChunkSink (chunk_sink.hpp) scan by scan, in chunks, so the memory a consumer needs is
 // bounded by the chunk size, not the file:
 // - E57: one compressed-vector packet, one decoded block (<= 4 MiB) and one chunk at a time.
