@@ -5,34 +5,22 @@
 // Writes are atomic: on any failure an existing OUT is left untouched. OUT must not be IN
 // (also through a symlink, a hard link or another spelling): converting in place is refused.
 // The writer's notes (points dropped, intensity rescaled...) are printed after "wrote".
+// E57 and LAS inputs written to LAS or PLY are streamed (io/stream/point_convert.hpp): memory
+// stays bounded by the chunk size, each scan moved into the output frame as it is written.
 #include <iostream>
 
 #include "cli/command.hpp"
 #include "cli/written_output.hpp"
 #include "common/error.hpp"
 #include "io/io.hpp"
+#include "io/stream/point_convert.hpp"
+#include "io/stream/point_stream.hpp"
 
 namespace plumb::cli {
 namespace {
 
-std::string safeName(std::string s) {
-  for (auto& c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
-  return s;
-}
-
-void refuseSameFile(const std::filesystem::path& in, const std::filesystem::path& out) {
-  std::error_code ec;
-  if (std::filesystem::equivalent(in, out, ec))
-    throw FileError(out, "is the input file itself; converting in place would rewrite it with "
-                         "whatever the output format cannot hold: write to another file");
-}
-
-void applyTransform(Dataset& d, const RigidTransform& t) {
-  for (auto& s : d.scans) {
-    s.pose = t * s.pose;
-    s.has_pose = s.has_pose || !t.isIdentity();
-  }
+void printConverted(const ConvertResult& r) {
+  for (const auto& f : r.files) printWritten(f.path, f.points, f.scans, f.report);
 }
 
 }  // namespace
@@ -51,43 +39,26 @@ void addConvertCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--ascii", a->ascii, "PLY: write ASCII instead of binary");
   cmd->callback([&action, a] {
     action = [a]() {
-      RigidTransform t;
-      if (!a->transform.empty()) t = readTransformFile(a->transform);
-      WriteOptions wo;
-      wo.binary = !a->ascii;
+      ConvertParams params;
+      if (!a->transform.empty()) params.transform = readTransformFile(a->transform);
+      params.split = a->split;
+      params.write.binary = !a->ascii;
       const std::filesystem::path out(a->out);
-      refuseSameFile(a->in, out);
+      refuseSameFile(a->in, out);  // split outputs: checked as they are named
+      if (streamsInChunks(a->in) && !isModelFormat(formatFromExtension(a->in))) {
+        printConverted(convertPointFile(a->in, out, params));
+        return 0;
+      }
       LoadedData data = readFile(a->in);
       if (auto* m = std::get_if<BimModel>(&data)) {
         if (a->split) throw InputError("--split applies to point datasets with several scans, not to models");
-        if (!t.isIdentity()) m->transform(t);
-        writeModel(out, *m, wo);
+        if (!params.transform.isIdentity()) m->transform(params.transform);
+        writeModel(out, *m, params.write);
         std::cout << "wrote " << out.string() << " (" << m->mesh.triangleCount() << " triangles)\n";
         return 0;
       }
       auto& d = std::get<Dataset>(data);
-      applyTransform(d, t);
-      if (!a->split) {
-        WriteReport report;
-        wo.report = &report;
-        writeDataset(out, d, wo);
-        printWritten(out, d, report);
-        return 0;
-      }
-      for (std::size_t k = 0; k < d.scans.size(); ++k) {
-        Dataset one;
-        one.source = d.source;
-        one.format = d.format;
-        one.coordinate_system = d.coordinate_system;
-        one.scans.push_back(std::move(d.scans[k]));
-        const auto path = out.parent_path() / (out.stem().string() + "_" + std::to_string(k) + "_" +
-                                               safeName(one.scans[0].name) + out.extension().string());
-        refuseSameFile(a->in, path);
-        WriteReport report;
-        wo.report = &report;
-        writeDataset(path, one, wo);
-        printWritten(path, one, report);
-      }
+      printConverted(convertDataset(d, out, params));
       return 0;
     };
   });

@@ -1,6 +1,9 @@
 // plumb-cli info FILE... [--json]: what each file holds (format, scans, points, fields, bounds;
 // triangles and element types for models). One block per file; a file that cannot be read
 // gets a one-line error on stderr, the others are still reported, and the exit code is 1.
+// E57 and LAS files are streamed (io/stream/stream_statistics.hpp): memory stays bounded by
+// the chunk size however large the file; other formats are read whole, then counted the same
+// way.
 #include <nlohmann/json.hpp>
 
 #include <iomanip>
@@ -9,6 +12,8 @@
 
 #include "cli/command.hpp"
 #include "io/io.hpp"
+#include "io/stream/point_stream.hpp"
+#include "io/stream/stream_statistics.hpp"
 
 namespace plumb::cli {
 namespace {
@@ -24,50 +29,54 @@ std::string vec(const Eigen::Vector3d& v) {
   return s.str();
 }
 
-std::size_t finiteCount(const PointCloud& c) {
-  std::size_t n = 0;
-  for (const auto& p : c.positions) n += p.allFinite();
-  return n;
-}
-
-nlohmann::json describe(const std::filesystem::path& path, const LoadedData& data) {
+nlohmann::json describePoints(const std::filesystem::path& path, const DatasetStatistics& d) {
   nlohmann::json j;
   j["file"] = path.string();
-  if (const auto* d = std::get_if<Dataset>(&data)) {
-    j["kind"] = "points";
-    j["format"] = d->format;
-    j["points"] = d->pointCount();
-    j["bounds"] = boundsJson(d->bounds());
-    if (!d->coordinate_system.empty()) j["coordinate_system"] = d->coordinate_system;
-    nlohmann::json scans = nlohmann::json::array();
-    for (const auto& s : d->scans) {
-      nlohmann::json sj{{"name", s.name}, {"points", s.cloud.size()}, {"fields", s.cloud.fieldNames()}};
-      const std::size_t finite = finiteCount(s.cloud);
-      if (finite != s.cloud.size()) sj["finite_points"] = finite;
-      if (s.cloud.grid_rows > 0) sj["grid"] = {s.cloud.grid_rows, s.cloud.grid_columns};
-      if (s.has_pose) {
-        const auto& t = s.pose.translation();
-        sj["pose_translation"] = {t.x(), t.y(), t.z()};
-      }
-      scans.push_back(sj);
+  j["kind"] = "points";
+  j["format"] = d.format;
+  j["points"] = d.points;
+  j["bounds"] = boundsJson(d.bounds);
+  if (!d.coordinate_system.empty()) j["coordinate_system"] = d.coordinate_system;
+  nlohmann::json scans = nlohmann::json::array();
+  for (const auto& s : d.scans) {
+    nlohmann::json sj{{"name", s.name}, {"points", s.points}, {"fields", s.fields}};
+    if (s.finite_points != s.points) sj["finite_points"] = s.finite_points;
+    if (s.grid_rows > 0) sj["grid"] = {s.grid_rows, s.grid_columns};
+    if (s.has_pose) {
+      const auto& t = s.pose.translation();
+      sj["pose_translation"] = {t.x(), t.y(), t.z()};
     }
-    j["scans"] = scans;
-    nlohmann::json meta = nlohmann::json::object();
-    for (const auto& [k, v] : d->metadata) meta[k] = v;
-    j["metadata"] = meta;
-  } else {
-    const auto& m = std::get<BimModel>(data);
-    j["kind"] = "model";
-    j["format"] = m.format;
-    j["vertices"] = m.mesh.vertices.size();
-    j["triangles"] = m.mesh.triangleCount();
-    j["elements"] = m.elements.size();
-    j["bounds"] = boundsJson(m.mesh.bounds());
-    nlohmann::json types = nlohmann::json::object();
-    for (const auto& [type, count] : m.elementTypeCounts()) types[type.empty() ? "(untyped)" : type] = count;
-    j["element_types"] = types;
+    scans.push_back(sj);
   }
+  j["scans"] = scans;
+  nlohmann::json meta = nlohmann::json::object();
+  for (const auto& [k, v] : d.metadata) meta[k] = v;
+  j["metadata"] = meta;
   return j;
+}
+
+nlohmann::json describeModel(const std::filesystem::path& path, const BimModel& m) {
+  nlohmann::json j;
+  j["file"] = path.string();
+  j["kind"] = "model";
+  j["format"] = m.format;
+  j["vertices"] = m.mesh.vertices.size();
+  j["triangles"] = m.mesh.triangleCount();
+  j["elements"] = m.elements.size();
+  j["bounds"] = boundsJson(m.mesh.bounds());
+  nlohmann::json types = nlohmann::json::object();
+  for (const auto& [type, count] : m.elementTypeCounts()) types[type.empty() ? "(untyped)" : type] = count;
+  j["element_types"] = types;
+  return j;
+}
+
+// E57 and LAS are streamed; other files are read whole.
+nlohmann::json describe(const std::filesystem::path& path) {
+  if (streamsInChunks(path) && !isModelFormat(formatFromExtension(path)))
+    return describePoints(path, datasetStatistics(path));
+  LoadedData data = readFile(path);
+  if (auto* d = std::get_if<Dataset>(&data)) return describePoints(path, datasetStatistics(std::move(*d)));
+  return describeModel(path, std::get<BimModel>(data));
 }
 
 void printText(const nlohmann::json& j) {
@@ -120,7 +129,7 @@ void addInfoCommand(CLI::App& app, Action& action) {
       nlohmann::json all = nlohmann::json::array();
       for (const auto& f : *files) {
         try {
-          const auto j = describe(f, readFile(f));
+          const auto j = describe(f);
           if (*json) all.push_back(j);
           else printText(j);
         } catch (const std::exception& e) {

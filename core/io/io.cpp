@@ -26,8 +26,15 @@ bool sameFamily(FileFormat a, FileFormat b) {
                   "then open the .las file");
 }
 
-/// Decides which reader to use: checks existence, emptiness, extension vs content.
-FileFormat resolveFormat(const std::filesystem::path& path) {
+const PointCloud& singleCloud(const Dataset& data, PointCloud& storage) {
+  if (data.scans.size() == 1 && data.scans[0].pose.isIdentity()) return data.scans[0].cloud;
+  storage = data.merged();
+  return storage;
+}
+
+}  // namespace
+
+FileFormat detectFileFormat(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw FileError(path, "no such file");
   if (std::filesystem::is_directory(path, ec)) throw FileError(path, "is a directory, not a file");
@@ -51,16 +58,8 @@ FileFormat resolveFormat(const std::filesystem::path& path) {
   return ext;
 }
 
-const PointCloud& singleCloud(const Dataset& data, PointCloud& storage) {
-  if (data.scans.size() == 1 && data.scans[0].pose.isIdentity()) return data.scans[0].cloud;
-  storage = data.merged();
-  return storage;
-}
-
-}  // namespace
-
 LoadedData readFile(const std::filesystem::path& path, const ReadOptions& options, Progress* progress) {
-  const FileFormat f = resolveFormat(path);
+  const FileFormat f = detectFileFormat(path);
   if (f == FileFormat::Ply) {
     PlyData ply = readPly(path, progress);
     if (ply.has_faces && !ply.triangles.empty()) return plyToModel(std::move(ply), path);
@@ -71,7 +70,7 @@ LoadedData readFile(const std::filesystem::path& path, const ReadOptions& option
 }
 
 Dataset readDataset(const std::filesystem::path& path, const ReadOptions& options, Progress* progress) {
-  const FileFormat f = resolveFormat(path);
+  const FileFormat f = detectFileFormat(path);
   switch (f) {
     case FileFormat::Ply: return plyToDataset(readPly(path, progress), path);
     case FileFormat::Pcd: return readPcd(path, progress);
@@ -85,7 +84,7 @@ Dataset readDataset(const std::filesystem::path& path, const ReadOptions& option
 }
 
 BimModel readModel(const std::filesystem::path& path, Progress* progress) {
-  const FileFormat f = resolveFormat(path);
+  const FileFormat f = detectFileFormat(path);
   if (f == FileFormat::Ply) {
     PlyData ply = readPly(path, progress);
     if (!ply.has_faces || ply.triangles.empty())

@@ -38,6 +38,11 @@ struct WriteOptions {
 /// What a file holds: a point dataset or a model.
 using LoadedData = std::variant<Dataset, BimModel>;
 
+/// The format of an existing file: its extension checked against its first bytes (the content
+/// decides when the extension is unknown). Throws FileError for a missing, empty or
+/// directory path, LAZ, an unknown type, or an extension the content contradicts.
+FileFormat detectFileFormat(const std::filesystem::path& path);
+
 /// Reads any supported file. A PLY with faces is a model; without faces, a dataset.
 LoadedData readFile(const std::filesystem::path& path, const ReadOptions& options = {},
                     Progress* progress = nullptr);

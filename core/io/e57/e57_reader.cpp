@@ -12,18 +12,16 @@
 namespace plumb {
 namespace {
 
-Dataset readFromSource(const e57::ByteSource& source, const std::filesystem::path& name,
-                       const E57ReadOptions& options, Progress* progress) {
-  e57::PagedReader file(source, name);
+// Reads the header and the XML section, describes the file in `data` (no scans yet) and
+// checks the scans' record counts against the file size.
+e57::FileInfo readOutline(const e57::ByteSource& source, e57::PagedReader& file,
+                          const std::filesystem::path& name, Dataset& data) {
   const e57::FileHeader header = e57::readHeader(source, file);
   const std::uint64_t xml_logical = e57::physicalToLogical(header.xml_physical_offset);
   std::string xml(static_cast<std::size_t>(header.xml_logical_length), '\0');
   file.readLogical(xml_logical, xml.size(), reinterpret_cast<std::uint8_t*>(xml.data()), "XML section");
-  const e57::FileInfo info = e57::parseXml(xml.data(), xml.size(), name, xml_logical);
-  xml.clear();
-  xml.shrink_to_fit();
+  e57::FileInfo info = e57::parseXml(xml.data(), xml.size(), name, xml_logical);
 
-  Dataset data;
   data.source = name;
   data.format = "e57";
   data.coordinate_system = info.coordinate_metadata;
@@ -46,7 +44,16 @@ Dataset readFromSource(const e57::ByteSource& source, const std::filesystem::pat
                     std::to_string(total) + " records, more than the file can hold",
                 FileLocation{std::nullopt, std::nullopt, s.points_path});
   }
-  std::uint64_t done = 0;
+  return info;
+}
+
+// Calls read(k, scan info, progress) for every scan with coordinates, in order; the others
+// get a "warning" in the metadata (the file fails when no scan has coordinates).
+template <class Read>
+void forEachReadableScan(e57::PagedReader& file, const e57::FileInfo& info, Dataset& data,
+                         Progress* progress, Read&& read) {
+  std::uint64_t total = 0, done = 0;
+  for (const auto& s : info.scans) total += s.record_count;
   std::size_t skipped = 0;
   for (std::size_t k = 0; k < info.scans.size(); ++k) {
     checkCanceled(progress);
@@ -61,17 +68,62 @@ Dataset readFromSource(const e57::ByteSource& source, const std::filesystem::pat
     if (progress && total > 0) {
       Progress sub = progress->sub(static_cast<double>(done) / total,
                                    static_cast<double>(done + s.record_count) / total);
-      data.scans.push_back(e57::readScan(file, s, k, options, &sub, data.metadata));
+      read(k, s, &sub);
     } else {
-      data.scans.push_back(e57::readScan(file, s, k, options, nullptr, data.metadata));
+      read(k, s, nullptr);
     }
     done += s.record_count;
   }
   if (skipped > 0 && skipped == info.scans.size())
     file.fail("no scan has coordinates (cartesianX/Y/Z or sphericalRange/Azimuth/Elevation)",
               FileLocation{std::nullopt, std::nullopt, info.scans[0].points_path + "/prototype"});
+}
+
+Dataset readFromSource(const e57::ByteSource& source, const std::filesystem::path& name,
+                       const E57ReadOptions& options, Progress* progress) {
+  e57::PagedReader file(source, name);
+  Dataset data;
+  const e57::FileInfo info = readOutline(source, file, name, data);
+  forEachReadableScan(file, info, data, progress, [&](std::size_t k, const e57::ScanInfo& s, Progress* p) {
+    data.scans.push_back(e57::readScan(file, s, k, options, p, data.metadata));
+  });
   reportProgress(progress, 1.0, "reading E57");
   return data;
+}
+
+// The outline a sink gets first: every scan with coordinates, without points.
+StreamOutline streamOutline(e57::PagedReader& file, const e57::FileInfo& info, const Dataset& data,
+                            const E57ReadOptions& options) {
+  StreamOutline outline;
+  outline.dataset = data;
+  for (std::size_t k = 0; k < info.scans.size(); ++k) {
+    if (!e57::hasCoordinates(info.scans[k])) continue;
+    outline.scans.push_back(e57::streamScanHeader(file, info.scans[k], k, outline.scans.size(), options,
+                                                  outline.dataset.metadata));
+    outline.dataset.scans.push_back(outline.scans.back().scan);
+  }
+  return outline;
+}
+
+void streamFromSource(const e57::ByteSource& source, const std::filesystem::path& name,
+                      const StreamOptions& options, ChunkSink& sink, Progress* progress) {
+  e57::PagedReader file(source, name);
+  Dataset data;
+  const e57::FileInfo info = readOutline(source, file, name, data);
+  E57ReadOptions o;
+  o.keep_direction_only = options.keep_direction_only;
+  StreamOutline outline = streamOutline(file, info, data, o);
+  sink.begin(outline);
+  std::size_t position = 0;
+  forEachReadableScan(file, info, outline.dataset, progress,
+                      [&](std::size_t k, const e57::ScanInfo& s, Progress* p) {
+    sink.beginScan(outline.scans[position]);
+    sink.endScan(e57::streamScan(file, s, k, position, o, chunkCapacity(options), sink, p,
+                                 outline.dataset.metadata));
+    ++position;
+  });
+  reportProgress(progress, 1.0, "reading E57");
+  sink.end(outline);
 }
 
 }  // namespace
@@ -79,6 +131,12 @@ Dataset readFromSource(const e57::ByteSource& source, const std::filesystem::pat
 Dataset readE57(const std::filesystem::path& path, const E57ReadOptions& options, Progress* progress) {
   const auto source = e57::openFileSource(path);
   return readFromSource(*source, path, options, progress);
+}
+
+void streamE57(const std::filesystem::path& path, const StreamOptions& options, ChunkSink& sink,
+               Progress* progress) {
+  const auto source = e57::openFileSource(path);
+  streamFromSource(*source, path, options, sink, progress);
 }
 
 Dataset readE57FromMemory(const void* data, std::size_t size, const std::filesystem::path& name,

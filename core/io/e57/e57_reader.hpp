@@ -29,6 +29,7 @@
 #include <filesystem>
 
 #include "common/progress.hpp"
+#include "io/stream/chunk_sink.hpp"
 #include "model/dataset.hpp"
 
 namespace plumb {
@@ -40,6 +41,12 @@ struct E57ReadOptions {
 
 Dataset readE57(const std::filesystem::path& path, const E57ReadOptions& options = {},
                 Progress* progress = nullptr);
+
+/// Streams the file to `sink` (io/stream/chunk_sink.hpp): scan by scan, in chunks decoded
+/// exactly as readE57 decodes them (same offset and values), one compressed-vector packet and
+/// one chunk in memory at a time. The metadata, skipped scans and errors are readE57's.
+void streamE57(const std::filesystem::path& path, const StreamOptions& options, ChunkSink& sink,
+               Progress* progress = nullptr);
 
 /// Reads an E57 image held in memory (fuzzing, embedded data). `name` is used in messages.
 Dataset readE57FromMemory(const void* data, std::size_t size, const std::filesystem::path& name,

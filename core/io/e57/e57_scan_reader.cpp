@@ -18,18 +18,23 @@ using namespace detail;  // NOLINT: the roles read as names here
 constexpr std::size_t kBlock = 4096;  // records per block: the double columns stay in L2 cache
 
 // isColorInvalid: invalid colours are 0 and flagged in color_invalid; a scan without a single
-// valid colour has no colour at all, one with all colours valid no flags.
-void settleColorValidity(PointCloud& cloud, const std::string& prefix,
+// valid colour has no colour at all, one with all colours valid no flags. Returns whether the
+// colour column stays; `invalid` of `points` colours were invalid.
+bool settledColors(std::size_t invalid, std::size_t points, const std::string& prefix,
+                   std::vector<std::pair<std::string, std::string>>& metadata) {
+  const bool keep = invalid < points || points == 0;
+  if (invalid > 0)
+    metadata.emplace_back(prefix + "invalid colours", std::to_string(invalid) + " of " +
+                                                          std::to_string(points) +
+                                                          (keep ? "" : " (colour dropped)"));
+  return keep;
+}
+
+void settleColorValidity(PointCloud& cloud, std::size_t invalid, const std::string& prefix,
                          std::vector<std::pair<std::string, std::string>>& metadata) {
   if (cloud.color_invalid.empty()) return;
-  const auto invalid = static_cast<std::size_t>(
-      std::count(cloud.color_invalid.begin(), cloud.color_invalid.end(), std::uint8_t{1}));
   if (invalid == 0 || invalid == cloud.size()) cloud.color_invalid = {};
-  if (invalid == 0) return;
-  if (invalid == cloud.size()) cloud.colors = {};
-  metadata.emplace_back(prefix + "invalid colours", std::to_string(invalid) + " of " +
-                                                        std::to_string(cloud.size()) +
-                                                        (cloud.colors.empty() ? " (colour dropped)" : ""));
+  if (!settledColors(invalid, cloud.size(), prefix, metadata)) cloud.colors = {};
 }
 
 // What the prototype of a scan holds, and so which attributes its points get.
@@ -148,7 +153,9 @@ struct Block {
 struct ScanProgress {
   bool offset_chosen = false;
   std::int64_t max_row = -1, max_column = -1;
-  std::size_t out = 0;  // points kept so far
+  std::size_t out = 0;  // points kept so far in the target cloud
+  std::size_t invalid_colors = 0;  // isColorInvalid records kept
+  std::uint64_t points = 0;  // points kept in the scan
 };
 
 // Keeps the valid records of the first `n`, and the direction-only ones when asked.
@@ -224,7 +231,7 @@ void writeIntensity(PointCloud& cloud, const Block& b, const ScanLayout& l, std:
   }
 }
 
-void writeColors(PointCloud& cloud, const Block& b, const ScanLayout& l, std::size_t out) {
+std::size_t writeColors(PointCloud& cloud, const Block& b, const ScanLayout& l, std::size_t out) {
   const double *r = l.field(b.cols, Red), *g = l.field(b.cols, Green), *bl = l.field(b.cols, Blue);
   const std::size_t m = b.sel.size();
   Rgb8* d = cloud.colors.data() + out;
@@ -243,13 +250,16 @@ void writeColors(PointCloud& cloud, const Block& b, const ScanLayout& l, std::si
       d[j] = {scale[0](r[i]), scale[1](g[i]), scale[2](bl[i])};
     }
   }
+  std::size_t invalid = 0;
   if (const double* bad = l.field(b.cols, ColorInvalid)) {
     std::uint8_t* flag = cloud.color_invalid.data() + out;
     for (std::size_t j = 0; j < m; ++j) {
       flag[j] = bad[b.sel[j]] != 0;
+      invalid += flag[j];
       if (flag[j]) d[j] = {0, 0, 0};
     }
   }
+  return invalid;
 }
 
 void writeGrid(PointCloud& cloud, const Block& b, const ScanLayout& l, ScanProgress& s) {
@@ -340,7 +350,7 @@ void appendBlock(PointCloud& cloud, Block& b, std::size_t n, const ScanLayout& l
   chooseOffset(cloud, b, p, s);
   writePositions(cloud, b, p, l.exact_locals, s.out);
   if (l.has_intensity) writeIntensity(cloud, b, l, s.out);
-  if (l.colors) writeColors(cloud, b, l, s.out);
+  if (l.colors) s.invalid_colors += writeColors(cloud, b, l, s.out);
   if (l.has_grid) writeGrid(cloud, b, l, s);
   if (l.has_returns) writeReturns(cloud, b, l, s.out);
   if (l.has_time) writeTimes(cloud, b, l, s.out);
@@ -350,14 +360,16 @@ void appendBlock(PointCloud& cloud, Block& b, std::size_t n, const ScanLayout& l
   if (l.has_las_fields) writeLasFields(cloud, b, l, s.out);
   writeScalarFields(cloud, b, l, s.out);
   s.out += b.sel.size();
+  s.points += b.sel.size();
 }
 
-// Shrinks every column sized by sizeColumns to the `out` points kept.
-void trimColumns(PointCloud& cloud, std::size_t out) {
-  auto trim = [out](auto& v) {
+// Shrinks every column sized by sizeColumns to the `out` points kept (and its memory, when
+// `release`).
+void trimColumns(PointCloud& cloud, std::size_t out, bool release = true) {
+  auto trim = [out, release](auto& v) {
     if (v.size() > out) {
       v.resize(out);
-      v.shrink_to_fit();
+      if (release) v.shrink_to_fit();
     }
   };
   trim(cloud.positions), trim(cloud.position_residuals), trim(cloud.intensity), trim(cloud.colors), trim(cloud.normals);
@@ -397,6 +409,63 @@ bool hasCoordinates(const ScanInfo& info) {
   return r.hasAll(X, Y, Z) || r.hasAll(Range, Azimuth, Elevation);
 }
 
+namespace {
+
+// Records per decoded block: its columns (8 bytes per field and record) stay under 4 MiB
+// however many fields the prototype declares.
+std::size_t blockSize(const ScanInfo& info) {
+  return std::clamp<std::size_t>((std::size_t{4} << 20) / (8 * info.fields.size() + 8), 1, kBlock);
+}
+
+// Decodes every record of the scan into `cloud`, sized for `capacity` points (at least one
+// block); `full(out)` is called when the next block might not fit, and must leave the cloud
+// ready for `capacity` points again (the whole-file reader's capacity is the record count, so
+// it is never called there).
+template <class Full>
+void decodeRecords(PagedReader& file, const ScanInfo& info, const ScanLayout& layout,
+                   const E57ReadOptions& options, PointCloud& cloud, std::size_t capacity,
+                   ScanProgress& state, Progress* progress, Full&& full) {
+  CompressedVectorReader reader(file, info);
+  const auto n_records = static_cast<std::size_t>(reader.recordCount());
+  sizeColumns(cloud, info, layout, capacity);
+  Block block;
+  const std::size_t block_size = std::min(blockSize(info), std::max<std::size_t>(capacity, 1));
+  while (const std::size_t n = reader.read(block.cols, block_size)) {
+    checkCanceled(progress);
+    if (state.out + n > capacity) full(state.out);
+    appendBlock(cloud, block, n, layout, options, state);
+    if (n_records) reportProgress(progress, static_cast<double>(reader.recordsRead()) / n_records, "reading E57 points");
+  }
+}
+
+// Fields of the scan's points (those of an empty scan: x y z and the scalar fields).
+std::vector<std::string> declaredFields(const ScanInfo& info, const ScanLayout& layout, std::size_t points) {
+  PointCloud sample;
+  sizeColumns(sample, info, layout, points > 0 ? 1 : 0);
+  return sample.fieldNames();
+}
+
+StreamScanEnd scanEnd(std::size_t index, const ScanInfo& info,
+                      const ScanLayout& layout, const ScanProgress& state, const std::string& prefix,
+                      std::vector<std::pair<std::string, std::string>>& metadata) {
+  StreamScanEnd end;
+  end.index = index;
+  end.points = state.points;
+  end.fields = declaredFields(info, layout, state.points);
+  if (layout.colors && layout.roles.has(ColorInvalid) &&
+      !settledColors(state.invalid_colors, state.points, prefix, metadata))
+    end.fields.erase(std::find(end.fields.begin(), end.fields.end(), "red"), std::find(end.fields.begin(), end.fields.end(), "blue") + 1);
+  if (layout.has_grid && state.points > 0) {
+    PointCloud grid;
+    setGridExtent(grid, info, state);
+    end.grid_rows = grid.grid_rows;
+    end.grid_columns = grid.grid_columns;
+  }
+  return end;
+}
+
+}  // namespace
+
 Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
               const E57ReadOptions& options, Progress* progress,
               std::vector<std::pair<std::string, std::string>>& metadata) {
@@ -405,27 +474,60 @@ Scan readScan(PagedReader& file, const ScanInfo& info, std::size_t index,
   const std::string prefix = "scan " + std::to_string(index) + " ";
   describeScan(info, layout, prefix, metadata);
 
-  CompressedVectorReader reader(file, info);
   PointCloud& cloud = scan.cloud;
-  const auto n_records = static_cast<std::size_t>(reader.recordCount());
-  sizeColumns(cloud, info, layout, n_records);
-  Block block;
   ScanProgress state;
-  // Decoded columns of one block (8 bytes per field and record) stay under 4 MiB however many
-  // fields the prototype declares.
-  const std::size_t block_size =
-      std::clamp<std::size_t>((std::size_t{4} << 20) / (8 * info.fields.size() + 8), 1, kBlock);
-  while (const std::size_t n = reader.read(block.cols, block_size)) {
-    checkCanceled(progress);
-    appendBlock(cloud, block, n, layout, options, state);
-    if (n_records) reportProgress(progress, static_cast<double>(reader.recordsRead()) / n_records, "reading E57 points");
-  }
+  decodeRecords(file, info, layout, options, cloud, static_cast<std::size_t>(info.record_count), state,
+                progress, [](std::size_t) {});
   trimColumns(cloud, state.out);
-  settleColorValidity(cloud, prefix, metadata);
+  settleColorValidity(cloud, state.invalid_colors, prefix, metadata);
   if (layout.has_grid && !cloud.empty()) setGridExtent(cloud, info, state);
   cloud.dropNegligibleResiduals();
   cloud.validate(true);
   return scan;
+}
+
+StreamScan streamScanHeader(PagedReader& file, const ScanInfo& info, std::size_t index,
+                            std::size_t position, const E57ReadOptions& options,
+                            std::vector<std::pair<std::string, std::string>>& metadata) {
+  StreamScan s;
+  s.index = position;
+  s.scan = scanHeader(info, index);
+  s.record_count = info.record_count;
+  const ScanLayout layout = layoutOf(file, info, options);
+  describeScan(info, layout, "scan " + std::to_string(index) + " ", metadata);
+  s.fields = declaredFields(info, layout, 1);
+  if (layout.has_intensity) {
+    const FieldSpec& f = info.fields[layout.roles.column[Intensity]];
+    const Limits limits = info.intensity_limits.value_or(fieldRange(f));
+    if (info.intensity_limits || f.type != FieldType::Float || f.has_float_limits)
+      s.intensity_limits = std::pair{limits.minimum, limits.maximum};
+    s.intensity_integral = f.type == FieldType::Integer && f.minimum >= 0 && f.maximum <= 65535;
+  }
+  return s;
+}
+
+StreamScanEnd streamScan(PagedReader& file, const ScanInfo& info, std::size_t index,
+                         std::size_t position, const E57ReadOptions& options, std::size_t chunk_points,
+                         ChunkSink& sink, Progress* progress,
+                         std::vector<std::pair<std::string, std::string>>& metadata) {
+  const ScanLayout layout = layoutOf(file, info, options);
+  const std::string prefix = "scan " + std::to_string(index) + " ";
+  PointCloud chunk;
+  ScanProgress state;
+  const std::size_t capacity = std::max(chunk_points, blockSize(info));
+  auto emit = [&](std::size_t out) {
+    trimColumns(chunk, out, false);
+    chunk.validate(true);
+    if (out > 0) sink.chunk(chunk);
+    chunk.scalar_fields.clear();
+    sizeColumns(chunk, info, layout, capacity);
+    state.out = 0;
+  };
+  decodeRecords(file, info, layout, options, chunk, capacity, state, progress, emit);
+  trimColumns(chunk, state.out, false);
+  chunk.validate(true);
+  if (state.out > 0) sink.chunk(chunk);
+  return scanEnd(position, info, layout, state, prefix, metadata);
 }
 
 }  // namespace plumb::e57

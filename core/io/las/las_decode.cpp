@@ -33,6 +33,14 @@ double extraValue(const std::uint8_t* p, int type) {
 }  // namespace
 
 PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, PointCloud& cloud)
+    : PointDecoder(h, std::move(extras), cloud, h.point_count, false, false) {}
+
+PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, PointCloud& cloud,
+                           std::size_t capacity, bool rgb16)
+    : PointDecoder(h, std::move(extras), cloud, capacity, rgb16, true) {}
+
+PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, PointCloud& cloud,
+                           std::size_t n, bool rgb16, bool dense)
     : layout_(pointLayout(h.format())),
       stride_(h.record_length),
       scale_(h.scale),
@@ -44,7 +52,7 @@ PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, P
   }
   raw_min_.fill(std::numeric_limits<std::int32_t>::max());
   raw_max_.fill(std::numeric_limits<std::int32_t>::min());
-  const std::size_t n = h.point_count;
+  if (rgb16) color_max_ = 0xFFFF;
   // Every record writes every one of these columns (decode), so they are not zeroed first.
   resizeForOverwrite(cloud.positions, n);
   resizeForOverwrite(cloud.position_residuals, n);  // scaled integers: exact locals
@@ -54,7 +62,12 @@ PointDecoder::PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, P
   resizeForOverwrite(cloud.classification, n);
   if (layout_.gps_at >= 0) resizeForOverwrite(cloud.timestamps, n);
   if (layout_.rgb_at >= 0) resizeForOverwrite(cloud.colors, n);
-  total_ = n;  // the LAS field columns are allocated by decodeAuxiliary when needed
+  total_ = n;  // the LAS field columns are allocated by decodeAuxiliary when needed, or now
+  if (dense) {
+    cloud.user_data.assign(n, 0), cloud.scan_flags.assign(n, 0), cloud.point_source_id.assign(n, 0);
+    cloud.scan_angle.assign(n, 0.0f), cloud.classification_flags.assign(n, 0);
+    if (layout_.extended) cloud.scanner_channel.assign(n, 0);
+  }
   auto add = [&](const std::string& name) {
     cloud.scalar_fields.push_back({name, Column<float>(n, 0.0f)});
   };

@@ -16,6 +16,12 @@ class PointDecoder {
   /// every LAS field goes to its column (scan_angle, user_data, ... ; NIR to the scalar
   /// field "nir").
   PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, PointCloud& cloud);
+  /// Same for a chunk of `capacity` points of a streamed file: every LAS field column of the
+  /// format is allocated (zeros), so every chunk has the same columns, and colours are decoded
+  /// as 16-bit (high byte) when `rgb16`, else as they are (the caller decided the RGB rule
+  /// for the whole file first).
+  PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, PointCloud& cloud,
+               std::size_t capacity, bool rgb16);
 
   /// Decodes `n` records starting at `records` (h.record_length apart) as points
   /// [first, first+n).
@@ -30,6 +36,8 @@ class PointDecoder {
   std::uint64_t badReturns() const { return bad_returns_; }
 
  private:
+  PointDecoder(const LasHeader& h, std::vector<ExtraField> extras, PointCloud& cloud, std::size_t n,
+               bool rgb16, bool dense);
   void decodeAuxiliary(const std::uint8_t* records, std::size_t n, std::size_t first);
 
   PointLayout layout_;

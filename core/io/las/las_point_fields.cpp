@@ -44,13 +44,15 @@ std::string num(double v) {
 }  // namespace
 
 std::uint16_t IntensityMap::operator()(float v) const {
-  return clampRound<std::uint16_t>(scaled ? (v - lo) * factor : v);
+  const double x = scaled ? (v - lo) * factor : v;
+  if (!(x > 0)) return 0;  // also NaN
+  if (x >= 65535) return 65535;
+  return static_cast<std::uint16_t>(x + 0.5);  // round half away from zero, as std::round
 }
 
-IntensityMap intensityMap(const PointCloud& cloud, std::optional<std::pair<double, double>> limits,
-                          std::vector<std::string>& notes) {
-  IntensityMap m;
-  if (!cloud.hasIntensity()) return m;
+std::optional<IntensityRange> intensityRange(const PointCloud& cloud,
+                                             std::optional<std::pair<double, double>> limits) {
+  if (!cloud.hasIntensity()) return std::nullopt;
   bool integral = true;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (float v : cloud.intensity) {
@@ -58,14 +60,24 @@ IntensityMap intensityMap(const PointCloud& cloud, std::optional<std::pair<doubl
     integral = integral && v >= 0 && v <= 65535 && std::floor(v) == v;
     lo = std::min<double>(lo, v), hi = std::max<double>(hi, v);
   }
-  if (integral) return m;
+  if (integral) return std::nullopt;
   const bool from_limits = limits && limits->first < limits->second;
   if (from_limits) lo = limits->first, hi = limits->second;
+  return IntensityRange{lo, hi, from_limits ? "the E57 intensity limits" : "the data's min/max"};
+}
+
+IntensityMap intensityMap(const PointCloud& cloud, std::optional<std::pair<double, double>> limits,
+                          std::vector<std::string>& notes) {
+  const auto range = intensityRange(cloud, limits);
+  return range ? scaledIntensity(range->lo, range->hi, range->source, notes) : IntensityMap{};
+}
+
+IntensityMap scaledIntensity(double lo, double hi, const std::string& source, std::vector<std::string>& notes) {
+  IntensityMap m;
   m.scaled = true;
   m.lo = lo;
   m.factor = hi > lo ? 65535.0 / (hi - lo) : 0.0;
-  notes.push_back("intensity scaled linearly from [" + num(lo) + ", " + num(hi) + "] (" +
-                  (from_limits ? "the E57 intensity limits" : "the data's min/max") +
+  notes.push_back("intensity scaled linearly from [" + num(lo) + ", " + num(hi) + "] (" + source +
                   ") to LAS 0..65535");
   return m;
 }

@@ -23,10 +23,23 @@ struct IntensityMap {
   std::uint16_t operator()(float v) const;
 };
 
+/// The range intensityMap scales from, and where it came from; empty when the intensity is
+/// written as stored (none, or whole numbers within 0..65535).
+struct IntensityRange {
+  double lo = 0, hi = 0;
+  std::string source;  ///< "the E57 intensity limits" or "the data's min/max"
+};
+std::optional<IntensityRange> intensityRange(const PointCloud& cloud,
+                                             std::optional<std::pair<double, double>> limits);
+
 /// The map for `cloud`. `limits` (the E57 intensityLimits) replace the data's min/max when
 /// known. A scaling is described in `notes`.
 IntensityMap intensityMap(const PointCloud& cloud, std::optional<std::pair<double, double>> limits,
                           std::vector<std::string>& notes);
+
+/// The map scaling [lo, hi] to 0..65535, described in `notes` with where the range came from
+/// (`source`, e.g. "the E57 intensity limits").
+IntensityMap scaledIntensity(double lo, double hi, const std::string& source, std::vector<std::string>& notes);
 
 /// The union of the intensity limits the E57 reader left in the metadata ("scan K intensity
 /// limits"), when every scan has them.

@@ -219,6 +219,151 @@ Dataset readFromSource(const ByteSource& src, const std::filesystem::path& file,
   return d;
 }
 
+/// Reads `n` records from `first` (in place for memory input, else into `chunk`).
+const std::uint8_t* recordsAt(const ByteSource& src, const LasHeader& h, std::uint64_t first,
+                              std::size_t n, std::vector<std::uint8_t>& chunk) {
+  const std::uint64_t at = h.offset_to_points + first * h.record_length;
+  if (src.data()) return src.data() + at;
+  chunk.resize(n * h.record_length);
+  src.read(at, chunk.data(), chunk.size());
+  return chunk.data();
+}
+
+/// The RGB rule decided before streaming: true when some channel of some record exceeds 255
+/// (the scan stops at the first; only files of 8-bit values are read to the end).
+bool sixteenBitColor(const ByteSource& src, const LasHeader& h, const PointLayout& layout, Progress* progress) {
+  if (layout.rgb_at < 0) return false;
+  std::vector<std::uint8_t> chunk;
+  for (std::uint64_t first = 0; first < h.point_count; first += kChunkRecords) {
+    checkCanceled(progress);
+    const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(kChunkRecords, h.point_count - first));
+    const std::uint8_t* r = recordsAt(src, h, first, n, chunk) + layout.rgb_at;
+    for (std::size_t i = 0; i < n; ++i, r += h.record_length)
+      if (r[1] | r[3] | r[5]) return true;  // a high byte: a value above 255
+  }
+  return false;
+}
+
+/// The final columns of the streamed scan: the declared ones but the LAS fields in `zero` (0
+/// in every point: readLas gives them no column).
+std::vector<std::string> streamedFields(const std::vector<std::string>& declared, const std::vector<std::string>& zero) {
+  std::vector<std::string> out;
+  for (const auto& f : declared)
+    if (std::find(zero.begin(), zero.end(), f) == zero.end()) out.push_back(f);
+  return out;
+}
+
+/// Names of the LAS field columns of `c` that hold a value other than 0.
+void markNonzero(const PointCloud& c, std::vector<std::string>& nonzero) {
+  auto mark = [&](const char* name, const auto& v) {
+    if (std::find(nonzero.begin(), nonzero.end(), name) != nonzero.end()) return;
+    if (std::any_of(v.begin(), v.end(), [](auto x) { return x != 0; })) nonzero.push_back(name);
+  };
+  mark("scan_angle", c.scan_angle), mark("user_data", c.user_data), mark("point_source_id", c.point_source_id);
+  mark("classification_flags", c.classification_flags), mark("scanner_channel", c.scanner_channel);
+  mark("scan_flags", c.scan_flags);
+}
+
+/// What streaming needs from the header and VLRs, decided before the first point.
+struct StreamSetup {
+  LasPrologue p;
+  PointLayout layout;
+  std::size_t extra_bytes = 0;
+  std::vector<ExtraField> extras;
+  bool rgb16 = false;
+  Eigen::Vector3d offset;
+};
+
+StreamSetup streamSetup(const ByteSource& src, const std::filesystem::path& file, Progress* progress) {
+  StreamSetup s{readPrologue(src, file), {}, 0, {}, false, {}};
+  const LasHeader& h = s.p.header;
+  s.layout = pointLayout(h.format());
+  s.extra_bytes = h.record_length - s.layout.min_size;
+  s.extras = extraFields(s.p.vlrs, s.extra_bytes, LasReadOptions{}, file, s.p.warnings);
+  s.rgb16 = sixteenBitColor(src, h, s.layout, progress);
+  s.offset = chooseOffset(h, src);
+  return s;
+}
+
+/// The one scan's outline; `fields` of a chunk (every LAS field column of the format).
+StreamOutline streamOutline(StreamSetup& s, const std::filesystem::path& file) {
+  StreamOutline outline;
+  outline.dataset.source = file;
+  outline.dataset.format = "las";
+  outline.dataset.coordinate_system = coordinateSystem(s.p.vlrs, s.p.header, s.p.warnings);
+  StreamScan scan;
+  scan.scan.name = file.stem().string();
+  scan.record_count = s.p.header.point_count;
+  scan.intensity_integral = true;  // uint16
+  PointCloud sample;
+  PointDecoder(s.p.header, s.extras, sample, 1, s.rgb16);
+  scan.fields = sample.fieldNames();
+  outline.scans.push_back(scan);
+  outline.dataset.scans.push_back(scan.scan);
+  return outline;
+}
+
+/// What the records told beyond the points: readLas's checks and which LAS fields are not 0.
+struct StreamedRecords {
+  Bounds world;
+  std::uint64_t bad_returns = 0;
+  std::vector<std::string> nonzero;
+};
+
+StreamedRecords streamRecords(const ByteSource& src, const StreamSetup& s, std::size_t capacity,
+                              ChunkSink& sink, Progress* progress) {
+  const LasHeader& h = s.p.header;
+  StreamedRecords r;
+  PointCloud chunk;
+  chunk.offset = s.offset;
+  std::vector<std::uint8_t> buffer;
+  for (std::uint64_t first = 0; first < h.point_count; first += capacity) {
+    checkCanceled(progress);
+    const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(capacity, h.point_count - first));
+    chunk.scalar_fields.clear();
+    PointDecoder decoder(h, s.extras, chunk, n, s.rgb16);
+    for (std::size_t done = 0; done < n; done += kChunkRecords) {
+      const std::size_t m = std::min(kChunkRecords, n - done);
+      decoder.decode(recordsAt(src, h, first + done, m, buffer), m, done);
+    }
+    r.bad_returns += decoder.badReturns();
+    r.world.extend(decoder.worldBounds());
+    markNonzero(chunk, r.nonzero);
+    sink.chunk(chunk);
+    reportProgress(progress, static_cast<double>(first + n) / static_cast<double>(h.point_count), "reading LAS points");
+  }
+  return r;
+}
+
+/// The end of the scan as readLas would show it.
+StreamScanEnd streamEnd(const StreamSetup& s, const StreamScan& scan, const StreamedRecords& r) {
+  StreamScanEnd end;
+  end.points = s.p.header.point_count;
+  std::vector<std::string> zero;
+  for (const char* f : {"scan_angle", "user_data", "point_source_id", "classification_flags", "scanner_channel", "scan_flags"})
+    if (std::find(r.nonzero.begin(), r.nonzero.end(), f) == r.nonzero.end()) zero.push_back(f);
+  PointCloud none;  // the columns of an empty file
+  PointDecoder(s.p.header, s.extras, none, 0, s.rgb16);
+  end.fields = streamedFields(end.points > 0 ? scan.fields : none.fieldNames(), zero);
+  return end;
+}
+
+void streamFromSource(const ByteSource& src, const std::filesystem::path& file, const StreamOptions& options,
+                      ChunkSink& sink, Progress* progress) {
+  StreamSetup s = streamSetup(src, file, progress);
+  StreamOutline outline = streamOutline(s, file);
+  sink.begin(outline);
+  sink.beginScan(outline.scans[0]);
+  const StreamedRecords r = streamRecords(src, s, chunkCapacity(options), sink, progress);
+  sink.endScan(streamEnd(s, outline.scans[0], r));
+  if (r.bad_returns > 0)
+    s.p.warnings.push_back(std::to_string(r.bad_returns) +
+                           " points have a return number outside 1..number of returns (kept as stored)");
+  checkHeaderBounds(s.p.header, r.world, s.p.warnings);
+  addMetadata(outline.dataset.metadata, s.p.header, s.layout, s.extra_bytes, s.rgb16, s.p.vlrs, s.p.warnings);
+  sink.end(outline);
+}
+
 bool hasLazExtension(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -232,6 +377,13 @@ Dataset readLas(const std::filesystem::path& path, const LasReadOptions& options
   if (hasLazExtension(path)) throw FileError(path, lazMessage(".laz file name"));
   FileSource src(path);
   return readFromSource(src, path, options, progress);
+}
+
+void streamLas(const std::filesystem::path& path, const StreamOptions& options, ChunkSink& sink,
+               Progress* progress) {
+  if (hasLazExtension(path)) throw FileError(path, lazMessage(".laz file name"));
+  FileSource src(path);
+  streamFromSource(src, path, options, sink, progress);
 }
 
 Dataset readLasBuffer(std::span<const std::uint8_t> bytes, const std::filesystem::path& name,

@@ -33,6 +33,7 @@
 #include <span>
 
 #include "common/progress.hpp"
+#include "io/stream/chunk_sink.hpp"
 #include "model/dataset.hpp"
 
 namespace plumb {
@@ -49,6 +50,14 @@ struct LasReadOptions {
 /// Reads an uncompressed LAS file into a one-scan Dataset (format "las").
 Dataset readLas(const std::filesystem::path& path, const LasReadOptions& options = {},
                 Progress* progress = nullptr);
+
+/// Streams the file to `sink` (io/stream/chunk_sink.hpp) in chunks decoded as readLas decodes
+/// them (same offset and values; every chunk has every LAS field column of the format, those
+/// readLas drops for being 0 everywhere are left out of StreamScanEnd::fields). A coloured
+/// file is first scanned for a channel above 255 to apply readLas's RGB rule (the scan stops
+/// at the first such value). Metadata and warnings are readLas's, complete at ChunkSink::end.
+void streamLas(const std::filesystem::path& path, const StreamOptions& options, ChunkSink& sink,
+               Progress* progress = nullptr);
 
 /// Same, from bytes in memory (fuzzing, tests, embedded data). `name` is used in errors.
 Dataset readLasBuffer(std::span<const std::uint8_t> bytes,

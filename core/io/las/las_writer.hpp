@@ -26,6 +26,7 @@
 // - Written atomically through a temporary file.
 #include <filesystem>
 #include <optional>
+#include <utility>
 #include <string>
 
 #include <Eigen/Core>
@@ -44,6 +45,14 @@ struct LasWriteOptions {
   std::string software = "Plumb";          ///< Generating Software field
   WriteReport* report = nullptr;           ///< filled when given: counts and conversions
 };
+
+/// The E57 intensity limits of every scan of `data` (the "scan K intensity limits" metadata
+/// the E57 reader leaves), joined; empty unless every scan has them. writeLas scales
+/// intensity that is not whole numbers within 0..65535 from these when known.
+std::optional<std::pair<double, double>> lasIntensityLimits(const Dataset& data);
+
+/// Throws InputError for a version other than 1.2/1.4 or a scale that is not a positive number.
+void checkLasWriteOptions(const LasWriteOptions& options);
 
 void writeLas(const std::filesystem::path& path, const Dataset& data,
               const LasWriteOptions& options = {}, Progress* progress = nullptr);

@@ -1,0 +1,99 @@
+#include "io/stream/point_stream.hpp"
+
+#include <cmath>
+#include <numeric>
+
+#include "common/error.hpp"
+#include "io/e57/e57_reader.hpp"
+#include "io/las/las_reader.hpp"
+
+namespace plumb {
+namespace {
+
+bool wholeNumbers(const Column<float>& v) {
+  for (float x : v)
+    if (std::isfinite(x) && !(x >= 0 && x <= 65535 && std::floor(x) == x)) return false;
+  return true;
+}
+
+StreamScan headerOf(const Scan& scan, std::size_t index) {
+  StreamScan s;
+  s.index = index;
+  s.scan.name = scan.name;
+  s.scan.guid = scan.guid;
+  s.scan.description = scan.description;
+  s.scan.pose = scan.pose;
+  s.scan.has_pose = scan.has_pose;
+  s.record_count = scan.cloud.size();
+  s.fields = scan.cloud.fieldNames();
+  s.intensity_integral = scan.cloud.hasIntensity() && wholeNumbers(scan.cloud.intensity);
+  return s;
+}
+
+// Points [begin, end) of `cloud`, every attribute.
+PointCloud range(const PointCloud& cloud, std::size_t begin, std::size_t end) {
+  std::vector<std::size_t> indices(end - begin);
+  std::iota(indices.begin(), indices.end(), begin);
+  return cloud.subset(indices);
+}
+
+void emitScan(Scan& scan, std::size_t index, std::size_t capacity, ChunkSink& sink) {
+  const PointCloud& cloud = scan.cloud;
+  if (cloud.size() <= capacity) {
+    if (!cloud.empty()) sink.chunk(cloud);
+  } else {
+    for (std::size_t begin = 0; begin < cloud.size(); begin += capacity)
+      sink.chunk(range(cloud, begin, std::min(cloud.size(), begin + capacity)));
+  }
+  StreamScanEnd end;
+  end.index = index;
+  end.points = cloud.size();
+  end.fields = cloud.fieldNames();
+  end.grid_rows = cloud.grid_rows;
+  end.grid_columns = cloud.grid_columns;
+  scan.cloud = PointCloud();  // released as soon as it is handed over
+  sink.endScan(end);
+}
+
+}  // namespace
+
+bool streamsInChunks(const std::filesystem::path& path) {
+  const FileFormat f = formatFromExtension(path);
+  return f == FileFormat::E57 || f == FileFormat::Las;
+}
+
+void streamInMemory(Dataset data, const StreamOptions& options, ChunkSink& sink) {
+  StreamOutline outline;
+  outline.dataset.source = data.source;
+  outline.dataset.format = data.format;
+  outline.dataset.coordinate_system = data.coordinate_system;
+  outline.dataset.metadata = data.metadata;
+  for (std::size_t k = 0; k < data.scans.size(); ++k) {
+    outline.scans.push_back(headerOf(data.scans[k], k));
+    outline.dataset.scans.push_back(outline.scans.back().scan);
+  }
+  sink.begin(outline);
+  for (std::size_t k = 0; k < data.scans.size(); ++k) {
+    sink.beginScan(outline.scans[k]);
+    emitScan(data.scans[k], k, chunkCapacity(options), sink);
+  }
+  sink.end(outline);
+}
+
+void streamDataset(const std::filesystem::path& path, const StreamOptions& options, ChunkSink& sink,
+                   Progress* progress) {
+  const FileFormat f = detectFileFormat(path);
+  if (f == FileFormat::E57) {
+    streamE57(path, options, sink, progress);
+    return;
+  }
+  if (f == FileFormat::Las) {
+    streamLas(path, options, sink, progress);
+    return;
+  }
+  ReadOptions read;
+  read.keep_direction_only = options.keep_direction_only;
+  streamInMemory(readDataset(path, read, progress), options, sink);
+}
+
+}  // namespace plumb

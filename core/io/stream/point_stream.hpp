@@ -1,0 +1,31 @@
+#pragma once
+// Streaming reads of point files (docs/IO.md): streamDataset hands a file to a
+// ChunkSink (chunk_sink.hpp) scan by scan, in chunks, so the memory a consumer needs is
+// bounded by the chunk size, not the file:
+// - E57: one compressed-vector packet, one decoded block (<= 4 MiB) and one chunk at a time.
+// - LAS: one block of records and one chunk at a time.
+// - PLY (ASCII and binary), PCD (ASCII, binary, binary_compressed) and text: read whole, then
+//   handed over in chunks (their memory is that of readDataset; see the doc).
+// Chunks hold the values readDataset gives (same offsets, same columns, same numbers), so a
+// consumer's result does not depend on the route.
+#include <filesystem>
+
+#include "common/progress.hpp"
+#include "io/io.hpp"
+#include "io/stream/chunk_sink.hpp"
+
+namespace plumb {
+
+/// True when `path`'s format is streamed without reading it whole (E57, LAS).
+bool streamsInChunks(const std::filesystem::path& path);
+
+/// Streams a point file to `sink`; format and errors as readDataset (FileError naming the
+/// file, the problem and where; model files are refused). Throws what the sink throws.
+void streamDataset(const std::filesystem::path& path, const StreamOptions& options, ChunkSink& sink,
+                   Progress* progress = nullptr);
+
+/// Hands a dataset already in memory to `sink` in chunks (the route for formats read whole;
+/// also lets a consumer take a Dataset and a file alike).
+void streamInMemory(Dataset data, const StreamOptions& options, ChunkSink& sink);
+
+}  // namespace plumb
