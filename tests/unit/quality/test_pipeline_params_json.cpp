@@ -23,7 +23,7 @@ TEST(PipelineParamsJson, RoundTripsEveryGroup) {
     EXPECT_FALSE(j[key].contains("seed")) << key;
     ++groups;
   });
-  EXPECT_EQ(groups, 11);  // with "candidates" (runner-up comparison) and "visibility" (issue 13)
+  EXPECT_EQ(groups, 12);  // with "candidates", "visibility" (issue 13) and "orientation" (issue 14)
   PipelineParams q;
   pipelineParamsFromJson(j, q);
   EXPECT_DOUBLE_EQ(q.candidates.min_overlap_gap, 0.012);

@@ -1,0 +1,28 @@
+#include "registration/orientation/levelling.hpp"
+
+#include <Eigen/Geometry>
+
+namespace plumb {
+
+namespace {
+RigidTransform aboutCentre(const Eigen::Matrix3d& r, const Eigen::Vector3d& centre) {
+  return RigidTransform(r, centre - r * centre);  // x' = r (x - c) + c
+}
+}  // namespace
+
+RigidTransform levellingTransform(const Eigen::Vector3d& up, const Eigen::Vector3d& centre) {
+  const Eigen::Vector3d u = up.normalized();
+  Eigen::Matrix3d r;
+  if (u.dot(Eigen::Vector3d::UnitZ()) < -1.0 + 1e-12)
+    r = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  else
+    r = Eigen::Quaterniond::FromTwoVectors(u, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  return aboutCentre(r, centre);
+}
+
+RigidTransform yUpLevelling(const Eigen::Vector3d& centre) {
+  return aboutCentre(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix(),
+                     centre);
+}
+
+}  // namespace plumb
