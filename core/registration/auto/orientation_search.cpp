@@ -48,7 +48,7 @@ FeatureSet levelledFeatures(const RegistrationSide& source, const FeatureSet& f,
                             Progress* progress) {
   FeatureSet out;
   out.planes = f.planes;
-  for (auto& pl : out.planes) pl.transform(L);
+  for (auto& pl : out.planes) levelPolygon(pl, L);
   out.segments = f.segments;
   for (auto& s : out.segments) s.transform(L);
   if (!openings || !source.cloud) return out;
@@ -96,19 +96,43 @@ double minGapOf(const std::string& method, const PipelineParams& p) {
   return p.planes.min_relative_gap;
 }
 
-/// Indices of the results, best first: an answer before none, planes/openings before segments
-/// (the last resort; scores of different methods do not compare), then by score; ties keep
-/// the up candidates' order of plausibility.
+/// Preference of a global result: a success, then an ambiguous one (the refinement may settle
+/// it), then a failure.
+int statusRank(const GlobalRegistrationResult& g) {
+  return g.ok() ? 2 : g.status == RegistrationStatus::Ambiguous ? 1 : 0;
+}
+
+/// auto's preference among methods (scores of different methods do not compare): openings
+/// (confirmed by or settling the planes), planes, segments (the last resort).
+int methodRank(const std::string& method) {
+  return method == "openings" ? 2 : method == "planes" ? 1 : 0;
+}
+
+/// Indices of the results, best first: by status, method, then score; ties keep the up
+/// candidates' order of plausibility.
 std::vector<std::size_t> rankResults(const std::vector<OrientedResult>& r) {
   std::vector<std::size_t> order(r.size());
   std::iota(order.begin(), order.end(), 0);
   auto key = [&r](std::size_t i) {
     const auto& g = r[i].global;
-    return std::make_tuple(hasAnswer(g), g.method != "segments", g.score);
+    return std::make_tuple(statusRank(g), methodRank(g.method), g.score);
   };
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return key(a) > key(b); });
   return order;
+}
+
+/// Hypotheses of the answer's method first (their scores compare), then by score.
+void sortForMethod(std::vector<Hypothesis>& pool, const std::vector<bool>& same_method) {
+  std::vector<std::size_t> order(pool.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::make_pair(bool(same_method[a]), pool[a].score) >
+           std::make_pair(bool(same_method[b]), pool[b].score);
+  });
+  std::vector<Hypothesis> sorted;
+  for (std::size_t i : order) sorted.push_back(pool[i]);
+  pool = std::move(sorted);
 }
 
 /// The best up direction's result with every other up direction's answer as a runner-up or
@@ -127,17 +151,18 @@ GlobalRegistrationResult mergeOrientations(std::vector<OrientedResult> results,
   }
   std::vector<Hypothesis> pool = best.alternatives;
   if (best.runner_up) pool.push_back(*best.runner_up);
+  std::vector<bool> same_method(pool.size(), true);
   bool close = false;
   for (std::size_t k = 1; k < order.size(); ++k) {
     const OrientedResult& o = results[order[k]];
     if (!hasAnswer(o.global)) continue;
     pool.push_back({o.global.transform, o.global.score, "up " + vec(o.up) + ": " + o.global.method});
-    if (o.global.method == best.method && best.score > 0 &&
+    same_method.push_back(o.global.method == best.method);
+    if (same_method.back() && statusRank(o.global) == statusRank(best) && best.score > 0 &&
         (best.score - o.global.score) / best.score < minGapOf(best.method, p))
       close = true;
   }
-  std::stable_sort(pool.begin(), pool.end(),
-                   [](const Hypothesis& a, const Hypothesis& b) { return a.score > b.score; });
+  sortForMethod(pool, same_method);
   best.runner_up.reset();
   best.alternatives.clear();
   for (const Hypothesis& h : pool) {

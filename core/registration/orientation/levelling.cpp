@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 
+#include "features/planes/plane_fit.hpp"
+
 namespace plumb {
 
 namespace {
@@ -23,6 +25,16 @@ RigidTransform levellingTransform(const Eigen::Vector3d& up, const Eigen::Vector
 RigidTransform yUpLevelling(const Eigen::Vector3d& centre) {
   return aboutCentre(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix(),
                      centre);
+}
+
+void levelPolygon(PlanarPolygon& polygon, const RigidTransform& l) {
+  polygon.transform(l);
+  const PlanarPolygon moved = polygon;  // the old frame, moved rigidly
+  setPlaneFrame(polygon);
+  // Both frames are right-handed about the same normal: an in-plane rotation, ring
+  // orientations (outer counter-clockwise, holes clockwise) are kept.
+  for (auto& ring : polygon.rings)
+    for (auto& q : ring) q = polygon.to2d(moved.to3d(q));
 }
 
 }  // namespace plumb

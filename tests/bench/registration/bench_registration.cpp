@@ -109,7 +109,7 @@ void printTable(const std::string& scenario, const std::string& info, const std:
 /// Plumb on the scenario's source moved by poses of any 3D rotation (issue 14: orientation
 /// auto levels the source first), next to its row on levelled poses.
 Row runTilted(const Scenario& s, int poses, std::uint64_t seed) {
-  Row row{"Plumb auto, 3D rotation"};
+  Row row{"Plumb auto, any 3D rot"};
   for (const RigidTransform& pose : randomPoses3d(poses, seed)) {
     const CaseOutcome o = runPlumbCase(s, pose, acceptanceParams());
     row.add(o.reported_success, o.error, o.seconds_total);

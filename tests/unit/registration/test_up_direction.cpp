@@ -101,3 +101,25 @@ TEST(Levelling, TurnsTheUpOntoZAboutTheCentre) {
   EXPECT_LT(angleDeg(y.applyToDirection(Eigen::Vector3d::UnitY()), Eigen::Vector3d::UnitZ()), 1e-9);
   EXPECT_LT(angleDeg(y.applyToDirection(Eigen::Vector3d::UnitZ()), -Eigen::Vector3d::UnitY()), 1e-9);
 }
+
+TEST(Levelling, PolygonsGetTheFrameOfLevelledDataWithTheSameOutline) {
+  // A wall with a window hole, tilted 40 degrees: its (u, v) frame is not upright.
+  const Eigen::Matrix3d tilt = Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  PlanarPolygon wall = test::makeRectPolygon(Eigen::Vector3d(0, 2, 0), Eigen::Vector3d::UnitX(),
+                                             Eigen::Vector3d::UnitZ(), 4.0, 2.5, {{1.0, 0.8, 2.0, 2.0}});
+  wall.transform(RigidTransform(tilt, Eigen::Vector3d::Zero()));
+  const RigidTransform l = levellingTransform(tilt * Eigen::Vector3d::UnitZ(), Eigen::Vector3d(1, 1, 1));
+  PlanarPolygon levelled = wall;
+  levelPolygon(levelled, l);
+  EXPECT_LT(angleDeg(levelled.v_axis, Eigen::Vector3d::UnitZ()), 1e-6);  // upright again
+  ASSERT_EQ(levelled.rings.size(), wall.rings.size());
+  for (std::size_t r = 0; r < wall.rings.size(); ++r)
+    for (std::size_t i = 0; i < wall.rings[r].size(); ++i)
+      EXPECT_LT((levelled.to3d(levelled.rings[r][i]) - l.apply(wall.to3d(wall.rings[r][i]))).norm(), 1e-9);
+  // The window's sides are vertical and horizontal in the new frame.
+  const auto& hole = levelled.rings[1];
+  for (std::size_t i = 0; i < hole.size(); ++i) {
+    const Eigen::Vector2d e = hole[(i + 1) % hole.size()] - hole[i];
+    EXPECT_LT(std::min(std::abs(e.x()), std::abs(e.y())), 1e-9);
+  }
+}
