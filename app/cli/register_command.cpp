@@ -1,4 +1,5 @@
 // plumb-cli register SOURCE TARGET [--method auto|planes|openings|segments|icp] [--no-refine]
+//   [--orientation auto|levelled|y-up|any]
 //   [-o REGISTERED.{e57,ply,las}] [--transform T.json] [--report REPORT.{json,html}]... [--seed N]
 //   [--params PARAMS.json] [--set GROUP.KEY=VALUE]... [--print-params] [--source-trajectory FILE]
 //   [--target-trajectory FILE]
@@ -9,7 +10,7 @@
 // that dataset's frame) interpolated at each point's timestamp; the openings method needs them.
 // Parameters: the defaults, then --params (the JSON of pipelineParamsToJson, any subset of
 // its keys), then each --set GROUP.KEY=VALUE (KEY=VALUE for the top level), then the flags
-// given on the command line (--method, --no-refine, --seed), in that order; `--print-params` writes the resulting set as JSON to stdout and exits, so
+// given on the command line (--method, --no-refine, --seed, --orientation), in that order; `--print-params` writes the resulting set as JSON to stdout and exits, so
 // `plumb-cli register --print-params > p.json` gives a file to edit.
 // The seed is taken from that one place (PipelineParams::seed, top-level "seed") for every
 // random step; a group "seed" in an older file must equal it (pipelineParamsFromJson).
@@ -57,6 +58,7 @@ struct RegisterOptions {
   bool no_refine = false;
   bool print_params = false;
   std::string seed;  ///< empty: not given; range-checked in loadParams
+  std::string orientation;  ///< empty: not given; else orientation.source (issue 14)
   std::vector<std::string> settings;  ///< --set GROUP.KEY=VALUE or KEY=VALUE
 };
 
@@ -90,6 +92,7 @@ PipelineParams loadParams(const RegisterOptions& o) {
   if (!o.method.empty()) p.method = methodFromName(o.method);
   if (o.no_refine) p.refine = false;
   if (!o.seed.empty()) p.seed = static_cast<std::uint64_t>(parseOption(seedSpec(), o.seed));
+  if (!o.orientation.empty()) setPipelineParam(p, "orientation.source", o.orientation);
   return p;
 }
 
@@ -208,6 +211,10 @@ void addRegisterCommand(CLI::App& app, Action& action) {
   cmd->add_option("--method", opts->method, "auto, planes, openings, segments or icp")
       ->check(CLI::IsMember({"auto", "planes", "openings", "segments", "icp"}));
   cmd->add_flag("--no-refine", opts->no_refine, "Skip the local ICP refinement");
+  cmd->add_option("--orientation", opts->orientation,
+                  "The source's orientation: auto (default), levelled (Z up), y-up (glTF, "
+                  "handheld, SLAM) or any; same as --set orientation.source=...")
+      ->check(CLI::IsMember({"auto", "levelled", "y-up", "any"}));
   cmd->add_option("-o,--output", opts->output, "Write the registered SOURCE (e57, ply, las...)");
   cmd->add_option("--transform", opts->transform, "Write the transform (JSON or 4x4 text)");
   cmd->add_option("--report", opts->reports,

@@ -43,13 +43,13 @@ bool paramGroupUsedBy(const std::string& key, RegistrationMethod method) {
   switch (method) {
     case RegistrationMethod::Auto: return true;
     case RegistrationMethod::Planes:
-      return in({"plane-extraction", "bim-features", "planes", "refinement", "candidates", "quality",
-                 "visibility"});
-    case RegistrationMethod::Openings:
-      return in({"plane-extraction", "opening-detection", "bim-features", "openings", "refinement",
+      return in({"orientation", "plane-extraction", "bim-features", "planes", "refinement",
                  "candidates", "quality", "visibility"});
+    case RegistrationMethod::Openings:
+      return in({"orientation", "plane-extraction", "opening-detection", "bim-features", "openings",
+                 "refinement", "candidates", "quality", "visibility"});
     case RegistrationMethod::Segments:
-      return in({"segment-detection", "mesh-edges", "segments", "refinement", "candidates",
+      return in({"orientation", "segment-detection", "mesh-edges", "segments", "refinement", "candidates",
                  "quality", "visibility"});
     case RegistrationMethod::Icp: return in({"refinement", "quality", "visibility"});
   }

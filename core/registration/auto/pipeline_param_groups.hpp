@@ -14,6 +14,7 @@ namespace plumb {
 /// PipelineParams or const PipelineParams.
 template <class P, class F>
 void forEachParamGroup(P& p, F&& f) {
+  f("orientation", "Source orientation", OrientationParams::schema(), p.orientation);
   f("plane-extraction", "Plane extraction", PlaneExtractionParams::schema(), p.plane_extraction);
   f("opening-detection", "Opening detection", OpeningDetectionParams::schema(), p.opening_detection);
   f("segment-detection", "Segment detection", SegmentDetectionParams::schema(), p.segment_detection);

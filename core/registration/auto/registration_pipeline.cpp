@@ -6,6 +6,7 @@
 
 #include "common/error.hpp"
 #include "registration/auto/elsewhere_search.hpp"
+#include "registration/auto/orientation_search.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/visibility_check.hpp"
 #include "common/stopwatch.hpp"
@@ -346,9 +347,11 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
     out.global.message = "icp: local refinement from the identity (no global search)";
     out.log.push_back(out.global.message);
   } else {
-    // auto on two scans: segments only if planes (and openings) fail, detected then.
+    // auto on two scans: segments only if planes (and openings) fail, detected then (once,
+    // however many up directions of the source are tried).
     std::optional<SegmentSets> detected;
     const SegmentsOnDemand segments = [&]() {
+      if (detected) return *detected;
       detected = SegmentSets{out.source_features.segments, out.target_features.segments};
       for (auto [side, set] : {std::pair{&source, &detected->source}, std::pair{&target, &detected->target}})
         if (set->empty() && side->cloud)
@@ -358,8 +361,9 @@ PipelineResult registerData(const RegistrationSide& source_in, const Registratio
                         std::to_string(detected->target.size()) + " target)");
       return *detected;
     };
-    out.global = registerFeatureSets(out.source_features, out.target_features, target.isModel(), p,
-                                     &out.log, progress, need_segments ? SegmentsOnDemand() : segments);
+    out.global = registerInAnyOrientation(source, out.source_features, out.target_features,
+                                          target.isModel(), p, &out.log, progress,
+                                          need_segments ? SegmentsOnDemand() : segments);
     if (detected) {
       out.source_features.segments = std::move(detected->source);
       out.target_features.segments = std::move(detected->target);

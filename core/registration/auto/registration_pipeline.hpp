@@ -34,6 +34,7 @@
 #include "quality/visibility_evidence.hpp"
 #include "registration/auto/candidate_refinement.hpp"
 #include "registration/openings/opening_registration.hpp"
+#include "registration/orientation/orientation_params.hpp"
 #include "registration/planes/plane_registration.hpp"
 #include "registration/refine/icp_refinement.hpp"
 #include "registration/segments/segment_registration.hpp"
@@ -62,6 +63,8 @@ struct RegistrationSide {
 struct PipelineParams {
   RegistrationMethod method = RegistrationMethod::Auto;
   bool refine = true;
+  /// The source's orientation: levelled (Z up), Y-up, any, or auto (orientation_search.hpp).
+  OrientationParams orientation;
   PlaneExtractionParams plane_extraction;
   OpeningDetectionParams opening_detection;
   SegmentDetectionParams segment_detection;

@@ -5,11 +5,12 @@
 // the peak RSS.
 //
 //   bench_registration [--poses N] [--scenarios a,b,...] [--no-peers] [--no-big] [--big-only]
-//                      [--smoke] [--step DEG] [--fpfh-voxel M] [--fpfh-radius M] [--sac-iterations N]
+//                      [--tilted] [--smoke] [--step DEG] [--fpfh-voxel M] [--fpfh-radius M] [--sac-iterations N]
 // Plumb runs end to end per case (source features from the moved cloud, target features
 // extracted once, like the acceptance test); each peer prepares its target once too (thinning,
 // normals, FPFH) and is timed on the source side + registration. Peers start from the initial
 // pose (ICP, GICP) or search globally (FPFH + SampleConsensusPrerejective, then ICP).
+// --tilted adds a row per scenario: Plumb on as many poses with any 3D rotation (issue 14).
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
@@ -105,8 +106,25 @@ void printTable(const std::string& scenario, const std::string& info, const std:
   std::fflush(stdout);
 }
 
+/// Plumb on the scenario's source moved by poses of any 3D rotation (issue 14: orientation
+/// auto levels the source first), next to its row on levelled poses.
+Row runTilted(const Scenario& s, int poses, std::uint64_t seed) {
+  Row row{"Plumb auto, any 3D rot"};
+  for (const RigidTransform& pose : randomPoses3d(poses, seed)) {
+    const CaseOutcome o = runPlumbCase(s, pose, acceptanceParams());
+    row.add(o.reported_success, o.error, o.seconds_total);
+    const double tilt = std::acos(std::clamp(pose.rotation()(2, 2), -1.0, 1.0)) * 180.0 / M_PI;
+    std::printf("  [%s tilted %.0f deg] Plumb %s %s rot %.4f trans %.4f  %.2f s\n", s.name.c_str(),
+                tilt, o.method.c_str(), o.reported_success ? "success" : "FAILED",
+                o.error.rotation_deg, o.error.translation_m, o.seconds_total);
+    std::fflush(stdout);
+  }
+  return row;
+}
+
 /// Returns Plumb's row.
-Row runScenario(const std::string& name, int poses, bool peers, const bench::PeerParams& pp) {
+Row runScenario(const std::string& name, int poses, bool peers, bool tilted,
+                const bench::PeerParams& pp) {
   const PipelineParams params = acceptanceParams();
   const Scenario s = makeScenario(name, params);
   const PointCloud& peer_target = s.isBim() ? s.target_samples : s.target;
@@ -149,6 +167,7 @@ Row runScenario(const std::string& name, int poses, bool peers, const bench::Pee
     std::printf("\n");
     std::fflush(stdout);
   }
+  if (tilted) rows.push_back(runTilted(s, poses, 2000 + std::hash<std::string>{}(name) % 1000));
   printTable(name, info.str(), rows);
   return rows[0];
 }
@@ -255,7 +274,7 @@ void runBigPair(double step_deg, bool sensor_origins) {
 
 int main(int argc, char** argv) {
   int poses = 5;
-  bool peers = true, big = true, tables = true, smoke = false;
+  bool peers = true, big = true, tables = true, smoke = false, tilted = false;
   double step = 0.42;  // deg: ~300k returns per station in the rooms of "house"
   std::vector<std::string> names = scenarioNames();
   bench::PeerParams pp;
@@ -272,6 +291,7 @@ int main(int argc, char** argv) {
       for (std::string n; std::getline(ss, n, ',');) names.push_back(n);
     } else if (a == "--no-peers") peers = false;
     else if (a == "--no-big") big = false;
+    else if (a == "--tilted") tilted = true;
     else if (a == "--big-only") tables = false;
     else if (a == "--step") step = std::stod(next());
     else if (a == "--fpfh-voxel") pp.fpfh_voxel = std::stod(next());
@@ -288,7 +308,7 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: bench_registration [--poses N] [--scenarios a,b] [--no-peers] "
-                   "[--no-big] [--big-only] [--step DEG] [--smoke] [--fpfh-voxel M] "
+                   "[--no-big] [--big-only] [--tilted] [--step DEG] [--smoke] [--fpfh-voxel M] "
                    "[--fpfh-radius M] [--sac-iterations N]\n");
       return 2;
     }
@@ -302,7 +322,7 @@ int main(int argc, char** argv) {
   int plumb_failures = 0;
   if (tables)
     for (const auto& n : names) {
-      const Row plumb = runScenario(n, poses, peers, pp);
+      const Row plumb = runScenario(n, poses, peers, tilted, pp);
       plumb_failures += plumb.cases - plumb.correct;
     }
   // The smoke run (CTest) fails when Plumb misses its indoor-indoor case.

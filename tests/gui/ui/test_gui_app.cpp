@@ -5,6 +5,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QSignalSpy>
 #include <QTest>
@@ -34,6 +35,7 @@
 #include "ui/panels/layer_tree_panel.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/panels/param_panel.hpp"
+#include "ui/registration/param_groups_box.hpp"
 #include "ui/panels/properties_panel.hpp"
 #include "ui/tasks/task_manager.hpp"
 #include "ui/view/screenshot.hpp"
@@ -281,6 +283,30 @@ class GuiAppTest : public QObject {
     QVERIFY(params.method == Method::Icp);
     threshold->setValue(5.0);  // clamped to the schema's range
     QCOMPARE(params.threshold, 1.0);
+  }
+
+  // Issue 14: the source's orientation reaches the Registration dock from the schema alone.
+  void registrationDockOffersTheSourceOrientation() {
+    PipelineParams params;
+    ParamGroupsBox box(params);
+    int page = -1;
+    for (int i = 0; i < box.count(); ++i)
+      if (box.itemText(i) == "Source orientation") page = i;
+    QVERIFY(page >= 0);
+    auto* scroll = qobject_cast<QScrollArea*>(box.widget(page));
+    QVERIFY(scroll);
+    auto* panel = qobject_cast<ParamPanel*>(scroll->widget());
+    QVERIFY(panel);
+    auto* source = qobject_cast<QComboBox*>(panel->editor("source"));
+    QVERIFY(source);
+    QCOMPARE(source->count(), 4);
+    QCOMPARE(source->currentText(), QString("auto"));
+    source->setCurrentIndex(source->findText("y-up"));
+    QVERIFY(params.orientation.source == SourceOrientation::YUp);
+    box.enableFor(RegistrationMethod::Icp);  // ICP searches nothing: no orientation
+    QVERIFY(!box.isItemEnabled(page));
+    box.enableFor(RegistrationMethod::Planes);
+    QVERIFY(box.isItemEnabled(page));
   }
 
   void loadErrorIsLoggedWithTheFileName() {

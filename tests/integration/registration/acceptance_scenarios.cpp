@@ -150,6 +150,18 @@ std::vector<RigidTransform> randomPoses(int n, std::uint64_t seed, double max_sh
   return out;
 }
 
+std::vector<RigidTransform> randomPoses3d(int n, std::uint64_t seed, double max_shift) {
+  std::vector<RigidTransform> out = randomPoses(n, seed, max_shift);
+  std::mt19937_64 rng(seed ^ 0x3d3d3d3dULL);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (auto& pose : out) {
+    Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));  // uniform on SO(3) once normalised
+    q.normalize();
+    pose = RigidTransform(q.toRotationMatrix(), pose.translation());
+  }
+  return out;
+}
+
 PoseError poseError(const RigidTransform& est, const RigidTransform& truth,
                     const Eigen::Vector3d& c) {
   return {RigidTransform::rotationErrorDeg(est, truth), (est.apply(c) - truth.apply(c)).norm()};

@@ -55,6 +55,10 @@ PointCloud presetOutdoorScan(const std::string& preset, std::uint64_t seed);
 /// radius `max_shift` m, vertical shift uniform in [-1, 1] m. Deterministic for a seed.
 std::vector<RigidTransform> randomPoses(int n, std::uint64_t seed, double max_shift = 20.0);
 
+/// The shifts of randomPoses with rotations uniform on the sphere of 3D rotations (any tilt,
+/// any yaw; issue 14). Deterministic for a seed.
+std::vector<RigidTransform> randomPoses3d(int n, std::uint64_t seed, double max_shift = 20.0);
+
 /// Errors of an estimate against the truth: rotation angle of est^-1 truth (deg), and the
 /// displacement difference |est(c) - truth(c)| at the centroid c of the (moved) source data
 /// (m), which does not grow with the distance of the data from the origin.

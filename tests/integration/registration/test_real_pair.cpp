@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "io/io.hpp"
+#include "room_pair.hpp"
 #include "registration/auto/registration_pipeline.hpp"
 #include "support/pcl_peers.hpp"
 #include "support/test_support.hpp"
@@ -19,11 +20,7 @@
 using namespace plumb;
 
 namespace {
-PointCloud load(const std::string& name) {
-  PointCloud c = readDataset(test::sharedData("pcd/" + name)).merged();
-  c.removeNonFinite();
-  return c;
-}
+PointCloud load(const std::string& name) { return test::loadSharedPcd(name); }
 
 /// scan2 -> scan1 as the PCL NDT tutorial starts it ("initial alignment estimate found using
 /// robot odometry"): x -> R_z(0.6931 rad) x + (1.79387, 0.720047, 0).
@@ -51,14 +48,7 @@ double rotationBetween(const RigidTransform& x, const RigidTransform& y) {
   return (x * y.inverse()).rotationAngleDeg();
 }
 
-/// RMS distance between where x and y put the points of `c` (every 10th point): a difference
-/// of transforms that does not depend on where the origin is.
-double rmsDisplacement(const RigidTransform& x, const RigidTransform& y, const PointCloud& c) {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < c.size(); i += 10, ++n) sum += (x.apply(c.world(i)) - y.apply(c.world(i))).squaredNorm();
-  return std::sqrt(sum / double(n));
-}
+using test::rmsDisplacement;
 }  // namespace
 
 TEST(RealPair, RoomScansRegisterFromIdentityBothWays) {

@@ -23,7 +23,8 @@ TEST(PipelineParamsJson, RoundTripsEveryGroup) {
     EXPECT_FALSE(j[key].contains("seed")) << key;
     ++groups;
   });
-  EXPECT_EQ(groups, 12);  // with "candidates", "visibility" (issue 13) and "bim-features" (issue 14)
+  EXPECT_EQ(groups, 13);  // with "candidates", "visibility" (issue 13), "bim-features" and
+                          // "orientation" (issue 14)
   PipelineParams q;
   pipelineParamsFromJson(j, q);
   EXPECT_DOUBLE_EQ(q.candidates.min_overlap_gap, 0.012);
