@@ -43,7 +43,18 @@ const ParamSchema<CandidateParams>& CandidateParams::schema() {
           .integer(&P::elsewhere_peak_factor, "elsewhere-peak-factor", "Elsewhere peak factor",
                    "", 1, 10,
                    "That search examines this many times the translation peaks per rotation "
-                   "(segments)", true);
+                   "(segments)", true)
+          .boolean(&P::copy_search, "copy-search", "Search for copies",
+                   "Search the target for copies of the placed source (a repeated room, the "
+                   "other unit, an identical storey) and compare each with the chosen placement",
+                   true)
+          .real(&P::copy_cell, "copy-cell", "Copy search cell", "m", 0.05, 2.0,
+                "Grid cell and shift step of that search", true)
+          .real(&P::copy_min_fraction, "copy-fraction", "Copy fraction", "", 0.5, 1.0,
+                "A shift is a copy when it explains this fraction of what the chosen "
+                "placement explains", true)
+          .integer(&P::copy_max, "copy-max", "Copies compared", "", 0, 8,
+                   "Copies refined and compared at most, best first", true);
   return s;
 }
 

@@ -62,6 +62,17 @@ struct CandidateParams {
   /// search, [1, 10]: the global search keeps the peaks with the most votes, and a copy whose
   /// model edges are split into short pieces (modelled differently from its twin) draws few.
   int elsewhere_peak_factor = 4;
+  /// Search the target for copies of the placed source (copy_search.hpp: chamfer matching of
+  /// the chosen placement turned by quarter turns and shifted by whole cells) and refine and
+  /// compare each copy found, like the runner-up.
+  bool copy_search = true;
+  /// ... on a grid of this cell, m, [0.05, 2] (the shift step; the tolerance is one cell) ...
+  double copy_cell = 0.25;
+  /// ... counting as copies the shifts that explain at least this fraction of what the chosen
+  /// placement explains, [0.5, 1] ...
+  double copy_min_fraction = 0.9;
+  /// ... at most this many, best first, [0, 8].
+  int copy_max = 4;
   static const ParamSchema<CandidateParams>& schema();
 };
 

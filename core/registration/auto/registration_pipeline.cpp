@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "registration/auto/copy_search.hpp"
 #include "registration/auto/elsewhere_search.hpp"
 #include "registration/auto/orientation_search.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
@@ -244,10 +245,27 @@ CandidateSelection separateByFreeSpace(const RegistrationSide& source,
   return sel;
 }
 
+/// The copies of the placed source in the target (copy_search.hpp), when enabled.
+std::vector<Hypothesis> copiesOf(const PointCloud& sc, const PointCloud& tc,
+                                 const RigidTransform& chosen, const PipelineParams& p,
+                                 std::vector<std::string>& log) {
+  if (!p.candidates.copy_search || p.candidates.copy_max == 0) return {};
+  CopySearchParams cp;
+  cp.cell = p.candidates.copy_cell;
+  cp.min_fraction = p.candidates.copy_min_fraction;
+  cp.max_copies = p.candidates.copy_max;
+  cp.seed = p.seed;
+  CopySearchResult r = findCopies(sc, tc, chosen, cp);
+  log.push_back(r.message);
+  return std::move(r.copies);
+}
+
 /// The global answer refined, then (when `compare`) the runner-up, the further distinct
-/// hypotheses and the best placement elsewhere, refined without the slide test (only compared).
-std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const RefineTarget& prepared,
-                                                const RefineParams& rp, const PipelineResult& out,
+/// hypotheses, the best placement elsewhere and the copies of the best-fitting of them
+/// (copy_search.hpp), refined without the slide test (only compared).
+std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const PointCloud& tc,
+                                                const RefineTarget& prepared,
+                                                const RefineParams& rp, PipelineResult& out,
                                                 bool target_is_model, const PipelineParams& p,
                                                 bool compare, Progress* progress) {
   const GlobalRegistrationResult& g = out.global;
@@ -257,13 +275,20 @@ std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const Refi
   if (!compare) return h;
   auto compared = rp;
   compared.slide_test = false;  // measured again if it becomes the answer
-  std::vector<Hypothesis> others{*g.runner_up};
+  std::vector<Hypothesis> others;
+  if (g.runner_up) others.push_back(*g.runner_up);
   for (const Hypothesis& a : furtherHypotheses(g, p.candidates)) others.push_back(a);
   if (auto e = searchElsewhere(out.source_features, out.target_features, h[0].refined.transform,
                                g.score, target_is_model, p))
     others.push_back(*e);
   for (const Hypothesis& o : others)
     h.push_back({o, refineRegistration(sc, prepared, o.transform, compared, progress)});
+  // Copies of the best-fitting placement so far (the global answer may be a poor one).
+  const auto best = std::max_element(h.begin(), h.end(), [](const auto& a, const auto& b) {
+    return a.refined.overlap < b.refined.overlap;
+  });
+  for (const Hypothesis& c : copiesOf(sc, tc, best->refined.transform, p, out.log))
+    h.push_back({c, refineRegistration(sc, prepared, c.transform, compared, progress)});
   return h;
 }
 
@@ -282,9 +307,11 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
   limitToWallThickness(out.global, rp, out.log);
   GlobalRegistrationResult& g = out.global;
   const RefineTarget prepared(*tc, rp);  // once for every candidate
-  const bool compare = g.runner_up && p.candidates.refine_runner_up;
+  // Compare when there is a runner-up, or copies of the placement may be searched.
+  const bool compare =
+      p.candidates.refine_runner_up && (g.runner_up || p.candidates.copy_search);
   std::vector<RefinedHypothesis> h =
-      refineHypotheses(*sc, prepared, rp, out, target.isModel(), p, compare, progress);
+      refineHypotheses(*sc, *tc, prepared, rp, out, target.isModel(), p, compare, progress);
   const bool global_chose = g.ok();
   const Eigen::Vector3d centroid = sc->bounds().center();
   const CandidateSelection sel = separateByFreeSpace(
