@@ -7,6 +7,8 @@
 #include "common/error.hpp"
 #include "io/las/las_stream_writer.hpp"
 #include "io/ply/ply_stream_writer.hpp"
+#include "io/stream/e57_convert.hpp"
+#include "io/stream/point_count.hpp"
 #include "io/stream/point_stream.hpp"
 
 namespace plumb {
@@ -215,6 +217,25 @@ WriteOptions withReport(const WriteOptions& w, WriteReport& report) {
 
 }  // namespace
 
+StreamOptions streamOptionsWithin(std::uint64_t budget) {
+  StreamOptions o;
+  constexpr std::uint64_t kChunkBytesPerPoint = 64;
+  if (budget > 0) o.chunk_points = std::min<std::uint64_t>(o.chunk_points, budget / 4 / kChunkBytesPerPoint);
+  return o;
+}
+
+void checkWholeReadFits(const std::filesystem::path& path, std::uint64_t budget, const std::string& what) {
+  if (budget == 0) return;
+  const PointCountEstimate e = estimatePointCount(path);
+  const std::uint64_t need = e.points * kWholeReadBytesPerPoint;
+  if (need <= budget) return;
+  constexpr std::uint64_t kMb = 1024 * 1024;
+  throw FileError(path, what + " needs the whole file in memory (" + std::to_string(e.points) + " points, ~" +
+                            std::to_string(need / kMb) + " MB), above the memory budget of " +
+                            std::to_string(budget / kMb) + " MB: raise --memory-budget or pick a streamed "
+                            "format (docs/IO.md)");
+}
+
 void refuseSameFile(const std::filesystem::path& in, const std::filesystem::path& out) {
   std::error_code ec;
   if (!in.empty() && std::filesystem::equivalent(in, out, ec))
@@ -258,6 +279,8 @@ ConvertResult convertDataset(Dataset& data, const std::filesystem::path& out, co
 ConvertResult convertPointFile(const std::filesystem::path& in, const std::filesystem::path& out,
                                const ConvertParams& params, Progress* progress) {
   const FileFormat to = formatFromExtension(out);
+  if (params.allow_streaming && streamsInChunks(in) && to == FileFormat::E57)
+    return convertToE57Streamed(in, out, params, progress);
   if (params.allow_streaming && streamsInChunks(in) && (to == FileFormat::Las || to == FileFormat::Ply)) {
     try {
       ConvertSink sink(out, params, progress);
@@ -269,6 +292,7 @@ ConvertResult convertPointFile(const std::filesystem::path& in, const std::files
       // converted whole below
     }
   }
+  checkWholeReadFits(in, params.memory_budget, "converting to " + out.filename().string());
   ReadOptions read;
   read.keep_direction_only = params.stream.keep_direction_only;
   Dataset data = readDataset(in, read, progress);
