@@ -6,6 +6,8 @@
 #include "common/error.hpp"
 #include "io/e57/e57_reader.hpp"
 #include "io/las/las_reader.hpp"
+#include "io/ply/ply_reader.hpp"
+#include "io/stream/point_count.hpp"
 
 namespace plumb {
 namespace {
@@ -55,11 +57,57 @@ void emitScan(Scan& scan, std::size_t index, std::size_t capacity, ChunkSink& si
   sink.endScan(end);
 }
 
+const char* encodingName(ply::Encoding e) {
+  return e == ply::Encoding::Ascii ? "ascii"
+         : e == ply::Encoding::BinaryLittleEndian ? "binary_little_endian"
+                                                  : "binary_big_endian";
+}
+
+/// A PLY's vertices as one scan named after the file (plyToDataset's dataset), in chunks.
+void streamPly(const std::filesystem::path& path, const StreamOptions& options, ChunkSink& sink,
+               Progress* progress) {
+  StreamOutline outline;
+  outline.dataset.source = path;
+  outline.dataset.format = "ply";
+  PlyVertexStream stream;
+  stream.begin = [&](const ply::Header& h, std::uint64_t vertices, const std::vector<std::string>& fields,
+                     bool integral) {
+    outline.dataset.metadata.emplace_back("encoding", encodingName(h.encoding));
+    StreamScan scan;
+    scan.scan.name = path.stem().string();
+    scan.record_count = vertices;
+    scan.fields = fields;
+    scan.intensity_integral = integral;
+    outline.scans.push_back(scan);
+    outline.dataset.scans.push_back(scan.scan);
+    sink.begin(outline);
+    sink.beginScan(outline.scans[0]);
+  };
+  std::uint64_t points = 0;
+  stream.chunk = [&](const PointCloud& c) {
+    points += c.size();
+    sink.chunk(c);
+  };
+  const auto [rows, columns] = streamPlyVertices(path, chunkCapacity(options), stream, progress);
+  StreamScanEnd end;
+  end.points = points;
+  end.fields = outline.scans.at(0).fields;
+  end.grid_rows = rows;
+  end.grid_columns = columns;
+  sink.endScan(end);
+  sink.end(outline);
+}
+
 }  // namespace
 
 bool streamsInChunks(const std::filesystem::path& path) {
   const FileFormat f = formatFromExtension(path);
-  return f == FileFormat::E57 || f == FileFormat::Las;
+  if (f != FileFormat::Ply) return f == FileFormat::E57 || f == FileFormat::Las;
+  try {  // a PLY with faces is a model (readFile); a bad header is the whole reader's to report
+    return !estimatePointCount(path).model;
+  } catch (const std::exception&) {
+    return false;
+  }
 }
 
 void streamInMemory(Dataset data, const StreamOptions& options, ChunkSink& sink) {
@@ -89,6 +137,10 @@ void streamDataset(const std::filesystem::path& path, const StreamOptions& optio
   }
   if (f == FileFormat::Las) {
     streamLas(path, options, sink, progress);
+    return;
+  }
+  if (f == FileFormat::Ply) {
+    streamPly(path, options, sink, progress);
     return;
   }
   ReadOptions read;
