@@ -43,11 +43,16 @@ class E57ConvertSink final : public ChunkSink {
     scan_.pose = params_.transform * s.scan.pose;
     scan_.has_pose = s.scan.has_pose || !params_.transform.isIdentity();
     scan_.cloud = PointCloud();
+    records_ = s.record_count.value_or(0);
     if (params_.split) open(splitPath(out_, s.index, s.scan.name));
   }
   void chunk(const PointCloud& points) override {
-    if (scan_.cloud.empty()) scan_.cloud = points;
-    else scan_.cloud.append(points);
+    if (scan_.cloud.empty()) {
+      scan_.cloud = points;
+      if (records_ > points.size()) scan_.cloud.reserveColumns(records_);  // no doubling on append
+    } else {
+      scan_.cloud.append(points);
+    }
   }
   void endScan(const StreamScanEnd& end) override {
     settleColumns(scan_.cloud, end);
@@ -82,6 +87,7 @@ class E57ConvertSink final : public ChunkSink {
   const ConvertParams& params_;
   Progress* progress_;
   Scan scan_;
+  std::uint64_t records_ = 0;  ///< the current scan's record count, when the file says
   std::unique_ptr<E57StreamWriter> writer_;
   ConvertedFile file_;
   ConvertResult result_;

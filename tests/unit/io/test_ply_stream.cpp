@@ -74,9 +74,15 @@ void expectChunksAreTheFile(const std::filesystem::path& path) {
   for (std::size_t i = 0; i < whole.size(); ++i) {
     ASSERT_EQ(joined.positions[i], whole.positions[i]) << i;
     ASSERT_LE((joined.world(i) - whole.world(i)).cwiseAbs().maxCoeff(), PointCloud::kResidualTolerance) << i;
-    if (whole.hasNormals()) ASSERT_EQ(joined.normals[i], whole.normals[i]) << i;
-    if (whole.hasColors()) ASSERT_EQ(joined.colors[i], whole.colors[i]) << i;
-    if (whole.hasIntensity()) ASSERT_EQ(joined.intensity[i], whole.intensity[i]) << i;
+    if (whole.hasNormals()) {
+      ASSERT_EQ(joined.normals[i], whole.normals[i]) << i;
+    }
+    if (whole.hasColors()) {
+      ASSERT_EQ(joined.colors[i], whole.colors[i]) << i;
+    }
+    if (whole.hasIntensity()) {
+      ASSERT_EQ(joined.intensity[i], whole.intensity[i]) << i;
+    }
   }
   for (const auto& f : whole.scalar_fields) {
     const ScalarField* g = joined.findScalarField(f.name);
