@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "common/error.hpp"
 #include "io/las/las_stream_writer.hpp"
 #include "io/ply/ply_stream_writer.hpp"
 #include "io/stream/e57_convert.hpp"
+#include "io/stream/intensity_range.hpp"
 #include "io/stream/point_count.hpp"
 #include "io/stream/point_stream.hpp"
 
@@ -16,7 +18,9 @@ namespace {
 
 // Thrown by the streaming route when the output needs a fact only the whole data gives: the
 // file is then converted whole (nothing the stream wrote is committed).
-struct NeedsWholeData {};
+struct NeedsWholeData {
+  bool intensity_range = false;  ///< only the data's intensity range is missing (a pass gives it)
+};
 
 LasWriteOptions lasOptions(const WriteOptions& w) {
   LasWriteOptions o;
@@ -54,7 +58,8 @@ struct IntensityPlan {
   }
 };
 
-IntensityPlan intensityPlan(const std::vector<const StreamScan*>& scans, const Dataset& described) {
+IntensityPlan intensityPlan(const std::vector<const StreamScan*>& scans, const Dataset& described,
+                            const std::vector<ScanIntensityRange>* ranges) {
   IntensityPlan plan;
   bool any = false, integral = true;
   for (const auto* s : scans) {
@@ -63,9 +68,17 @@ IntensityPlan intensityPlan(const std::vector<const StreamScan*>& scans, const D
   }
   if (!any || integral) return plan;
   const auto limits = lasIntensityLimits(described);
-  if (!limits || !(limits->first < limits->second)) throw NeedsWholeData{};  // data min/max
-  plan.scale = LasStreamFormat::IntensityScale{limits->first, limits->second, "the E57 intensity limits"};
-  plan.needs_fraction = true;
+  if (limits && limits->first < limits->second) {
+    plan.scale = LasStreamFormat::IntensityScale{limits->first, limits->second, "the E57 intensity limits"};
+    plan.needs_fraction = true;
+    return plan;
+  }
+  if (!ranges) throw NeedsWholeData{true};  // the data's min/max: one more pass gives it
+  ScanIntensityRange data;
+  for (const auto* s : scans)
+    if (s->index < ranges->size()) data.extend((*ranges)[s->index]);
+  if (!data.integral)  // else writeLas keeps the values as stored
+    plan.scale = LasStreamFormat::IntensityScale{data.lo, data.hi, "the data's min/max"};
   return plan;
 }
 
@@ -96,8 +109,10 @@ Dataset oneScan(const Dataset& d, std::size_t k) {
 
 class ConvertSink final : public ChunkSink {
  public:
-  ConvertSink(const std::filesystem::path& out, const ConvertParams& params, Progress* progress)
-      : out_(out), params_(params), progress_(progress), to_las_(formatFromExtension(out) == FileFormat::Las) {}
+  ConvertSink(const std::filesystem::path& out, const ConvertParams& params, Progress* progress,
+              const std::vector<ScanIntensityRange>* ranges)
+      : out_(out), params_(params), progress_(progress), ranges_(ranges),
+        to_las_(formatFromExtension(out) == FileFormat::Las) {}
 
   void begin(const StreamOutline& outline) override {
     outline_ = &outline;
@@ -145,7 +160,7 @@ class ConvertSink final : public ChunkSink {
     output_ = Output{};
     output_.file.path = path;
     output_.file.scans = scan_count;
-    if (to_las_) output_.intensity = intensityPlan(scans, described);
+    if (to_las_) output_.intensity = intensityPlan(scans, described, ranges_);
     described_ = described;
   }
 
@@ -198,6 +213,7 @@ class ConvertSink final : public ChunkSink {
   std::filesystem::path out_;
   const ConvertParams& params_;
   Progress* progress_;
+  const std::vector<ScanIntensityRange>* ranges_;  ///< the data's intensity ranges, when gathered
   bool to_las_;
   const StreamOutline* outline_ = nullptr;
   Dataset described_;
@@ -282,14 +298,18 @@ ConvertResult convertPointFile(const std::filesystem::path& in, const std::files
   if (params.allow_streaming && streamsInChunks(in) && to == FileFormat::E57)
     return convertToE57Streamed(in, out, params, progress);
   if (params.allow_streaming && streamsInChunks(in) && (to == FileFormat::Las || to == FileFormat::Ply)) {
-    try {
-      ConvertSink sink(out, params, progress);
-      streamDataset(in, params.stream, sink, progress);
-      ConvertResult r = sink.result();
-      r.streamed = true;
-      return r;
-    } catch (const NeedsWholeData&) {
-      // converted whole below
+    std::optional<std::vector<ScanIntensityRange>> ranges;
+    while (true) {
+      try {
+        ConvertSink sink(out, params, progress, ranges ? &*ranges : nullptr);
+        streamDataset(in, params.stream, sink, progress);
+        ConvertResult r = sink.result();
+        r.streamed = true;
+        return r;
+      } catch (const NeedsWholeData& e) {
+        if (!e.intensity_range || ranges) break;  // converted whole below
+        ranges = intensityRanges(in, params.stream, progress);
+      }
     }
   }
   checkWholeReadFits(in, params.memory_budget, "converting to " + out.filename().string());

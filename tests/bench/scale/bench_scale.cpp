@@ -220,9 +220,8 @@ int smoke(const Options& o, const std::string& self) {
   const fs::path b = simulate(large, 0.15, true);
   if (b.empty()) return 2;
   const Table tb = measureAll(b, large, false, self, 1);
-  constexpr double kMarginMb = 12;
   bool ok = true;
-  auto check = [&](const char* name, const Run& x, const Run& y, double margin = kMarginMb) {
+  auto check = [&](const char* name, const Run& x, const Run& y, double margin = 12) {
     const bool within = y.peak_mb <= x.peak_mb + margin;
     std::printf("%-10s peak %.1f MB -> %.1f MB: %s\n", name, x.peak_mb, y.peak_mb, within ? "bounded" : "GROWS");
     ok = ok && within;

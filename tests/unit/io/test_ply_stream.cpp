@@ -11,6 +11,7 @@
 #include "common/error.hpp"
 
 #include "io/io.hpp"
+#include "io/stream/point_convert.hpp"
 #include "io/stream/point_stream.hpp"
 #include "support/test_support.hpp"
 
@@ -28,7 +29,7 @@ struct Collect final : ChunkSink {
 
 // `n` points with normals, colours, intensity and a scalar field, `far` metres from the origin
 // (1e6: double coordinates), on a grid of 100 columns.
-Dataset cloud(std::size_t n, double far) {
+Dataset cloud(std::size_t n, double far, double intensity_step = 1.0) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-10.0, 10.0);
   PointCloud c;
@@ -38,7 +39,7 @@ Dataset cloud(std::size_t n, double far) {
     c.positions.push_back(Eigen::Vector3f(u(rng), u(rng), u(rng)));
     c.normals.push_back(Eigen::Vector3f(u(rng), u(rng), 1).normalized());
     c.colors.push_back(Rgb8{std::uint8_t(i % 256), std::uint8_t(i / 7 % 256), std::uint8_t(9)});
-    c.intensity.push_back(static_cast<float>(i % 1000));
+    c.intensity.push_back(static_cast<float>(0.5 * (intensity_step != 1.0) + intensity_step * double(i % 1000)));
     quality.values.push_back(static_cast<float>(u(rng)));
   }
   c.scalar_fields.push_back(std::move(quality));
@@ -133,6 +134,28 @@ TEST(PlyStream, BigEndianListCarryingVertices) {
   Collect sink;
   streamDataset(dir / "be.ply", StreamOptions{}, sink);
   EXPECT_TRUE(sink.outline.scans.at(0).intensity_integral);  // uchar
+}
+
+// Float intensity without declared limits: writeLas scales by the data's min/max (or keeps
+// whole numbers as stored); the streamed conversion gathers that range in a first pass and
+// writes the same values and the same note.
+TEST(PlyStream, FloatIntensityToLasIsTheWholeRoutes) {
+  const auto dir = test::scratchDir("ply_stream_las");
+  for (double step : {1.0, 0.25}) {
+    SCOPED_TRACE(step);
+    writeDataset(dir / "in.ply", cloud(20000, 0, step));
+    ConvertParams params;
+    params.stream.chunk_points = 4096;
+    const ConvertResult streamed = convertPointFile(dir / "in.ply", dir / "s.las", params);
+    params.allow_streaming = false;
+    const ConvertResult whole = convertPointFile(dir / "in.ply", dir / "w.las", params);
+    EXPECT_TRUE(streamed.streamed);
+    ASSERT_EQ(streamed.files.size(), 1u);
+    EXPECT_EQ(streamed.files[0].report.notes, whole.files.at(0).report.notes);
+    const PointCloud a = readDataset(dir / "s.las").merged(), b = readDataset(dir / "w.las").merged();
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a.intensity[i], b.intensity[i]) << i;
+  }
 }
 
 TEST(PlyStream, PlyWithFacesIsAModelNotAStream) {
