@@ -44,8 +44,8 @@
 #include "common/error.hpp"
 #include "io/io.hpp"
 #include "model/trajectory.hpp"
-#include "registration/auto/pipeline_param_groups.hpp"
 #include "io/stream/point_convert.hpp"
+#include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/registration_input.hpp"
 #include "registration/bounded/bounded_input.hpp"
 #include "report/report_file.hpp"
@@ -159,7 +159,7 @@ void checkOutputs(const RegisterOptions& o, std::optional<bool> model_source) {
     }
 }
 
-void writeRegistered(const RegisterOptions& o, const Side& src, const RigidTransform& T, const MemoryParams& m);
+void writeRegistered(const RegisterOptions& o, const Side& src, const RigidTransform& T, const MemoryParams& memory);
 
 int run(const RegisterOptions& o) {
   const PipelineParams p = loadParams(o);
@@ -204,33 +204,31 @@ int run(const RegisterOptions& o) {
   return code;
 }
 
-void writeRegistered(const RegisterOptions& o, const Side& src, const RigidTransform& T, const MemoryParams& m) {
-  if (src.subsampled) {  // the full-resolution file, streamed with T applied per chunk
+/// -o: the source moved by T. A subsampled source is streamed again from its file at full
+/// resolution (convertPointFile: T applied per chunk, or per station for E57), never merged.
+void writeRegistered(const RegisterOptions& o, const Side& src, const RigidTransform& T, const MemoryParams& memory) {
+  if (src.subsampled) {
     ConvertParams convert;
     convert.transform = T;
-    convert.memory_budget = memoryBudgetBytes(m);
+    convert.memory_budget = memoryBudgetBytes(memory);
     convert.stream = streamOptionsWithin(convert.memory_budget);
     for (const auto& f : convertPointFile(o.source, o.output, convert).files)
       printWritten(f.path, f.points, f.scans, f.report);
-    return;
-  }
-  {
-    if (auto* d = std::get_if<Dataset>(&src.data)) {
-      Dataset moved = *d;
-      for (auto& scan : moved.scans) {
-        scan.pose = T * scan.pose;
-        scan.has_pose = true;
-      }
-      WriteReport written;
-      WriteOptions options;
-      options.report = &written;
-      writeDataset(o.output, moved, options);
-      printWritten(o.output, moved, written);
-    } else {
-      BimModel m = std::get<BimModel>(src.data);
-      m.transform(T);
-      writeModel(o.output, m);
+  } else if (auto* d = std::get_if<Dataset>(&src.data)) {
+    Dataset moved = *d;
+    for (auto& scan : moved.scans) {
+      scan.pose = T * scan.pose;
+      scan.has_pose = true;
     }
+    WriteReport written;
+    WriteOptions options;
+    options.report = &written;
+    writeDataset(o.output, moved, options);
+    printWritten(o.output, moved, written);
+  } else {
+    BimModel m = std::get<BimModel>(src.data);
+    m.transform(T);
+    writeModel(o.output, m);
   }
 }
 
