@@ -3,7 +3,8 @@
 // gets a one-line error on stderr, the others are still reported, and the exit code is 1.
 // E57 and LAS files are streamed (io/stream/stream_statistics.hpp): memory stays bounded by
 // the chunk size however large the file; other formats are read whole, then counted the same
-// way.
+// way. --memory-budget MB: a file that must be read whole is refused above the budget, and
+// the chunk size of a streamed file never exceeds a quarter of it.
 #include <nlohmann/json.hpp>
 
 #include <iomanip>
@@ -11,7 +12,9 @@
 #include <sstream>
 
 #include "cli/command.hpp"
+#include "cli/option_checks.hpp"
 #include "io/io.hpp"
+#include "io/stream/point_convert.hpp"
 #include "io/stream/point_stream.hpp"
 #include "io/stream/stream_statistics.hpp"
 
@@ -71,9 +74,10 @@ nlohmann::json describeModel(const std::filesystem::path& path, const BimModel& 
 }
 
 // E57 and LAS are streamed; other files are read whole.
-nlohmann::json describe(const std::filesystem::path& path) {
+nlohmann::json describe(const std::filesystem::path& path, std::uint64_t budget) {
   if (streamsInChunks(path) && !isModelFormat(formatFromExtension(path)))
-    return describePoints(path, datasetStatistics(path));
+    return describePoints(path, datasetStatistics(path, streamOptionsWithin(budget)));
+  if (!isModelFormat(formatFromExtension(path))) checkWholeReadFits(path, budget, "describing it");
   LoadedData data = readFile(path);
   if (auto* d = std::get_if<Dataset>(&data)) return describePoints(path, datasetStatistics(std::move(*d)));
   return describeModel(path, std::get<BimModel>(data));
@@ -123,13 +127,16 @@ void addInfoCommand(CLI::App& app, Action& action) {
   auto json = std::make_shared<bool>(false);
   cmd->add_option("files", *files, "Files to describe")->required();
   cmd->add_flag("--json", *json, "Print a JSON array (one object per file)");
-  cmd->callback([&action, files, json] {
-    action = [files, json]() {
+  auto budget = std::make_shared<std::string>();
+  cmd->add_option("--memory-budget", *budget, memoryBudgetHelp());
+  cmd->callback([&action, files, json, budget] {
+    action = [files, json, budget]() {
+      const std::uint64_t bytes = memoryBudgetBytes(memoryParamsFromOption(*budget));
       int rc = 0;
       nlohmann::json all = nlohmann::json::array();
       for (const auto& f : *files) {
         try {
-          const auto j = describe(f);
+          const auto j = describe(f, bytes);
           if (*json) all.push_back(j);
           else printText(j);
         } catch (const std::exception& e) {

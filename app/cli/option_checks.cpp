@@ -24,6 +24,25 @@ const ParamSpec& seedSpec() {
   return PipelineParams::schema().find("seed")->spec;
 }
 
+const ParamSpec& memoryBudgetSpec() {
+  static const ParamSpec spec = [] {
+    ParamSpec s = MemoryParams::schema().find("budget")->spec;
+    s.key = "memory-budget";  // the option's name in errors
+    return s;
+  }();
+  return spec;
+}
+
+std::string memoryBudgetHelp() {
+  return memoryBudgetSpec().help + " (" + memoryBudgetSpec().unit + ")";
+}
+
+MemoryParams memoryParamsFromOption(const std::string& text) {
+  MemoryParams m;
+  if (!text.empty()) m.budget_mb = parseOption(memoryBudgetSpec(), text);
+  return m;
+}
+
 ParamSpec coordinateSpec(const std::string& key) {
   return {key, key, "m", "Coordinate", ParamKind::Real, -1.0e7, 1.0e7, {}, false};
 }

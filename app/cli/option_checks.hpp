@@ -8,12 +8,19 @@
 #include <string>
 #include <vector>
 
+#include "common/memory_budget.hpp"
 #include "common/params.hpp"
 
 namespace plumb::cli {
 
 /// Random seeds: whole numbers in [0, 9e15], the top-level "seed" of PipelineParams::schema().
 const ParamSpec& seedSpec();
+/// --memory-budget of register, info and convert: the "budget" of MemoryParams::schema().
+const ParamSpec& memoryBudgetSpec();
+/// Its help text, with the unit.
+std::string memoryBudgetHelp();
+/// MemoryParams with --memory-budget `text` applied (defaults when empty); InputError when bad.
+MemoryParams memoryParamsFromOption(const std::string& text);
 /// A coordinate given on the command line, metres: finite, within 10,000 km of the origin.
 ParamSpec coordinateSpec(const std::string& key);
 

@@ -44,8 +44,10 @@
 #include "common/error.hpp"
 #include "io/io.hpp"
 #include "model/trajectory.hpp"
+#include "io/stream/point_convert.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/registration_input.hpp"
+#include "registration/bounded/bounded_input.hpp"
 #include "report/report_file.hpp"
 
 namespace plumb::cli {
@@ -59,6 +61,7 @@ struct RegisterOptions {
   bool print_params = false;
   std::string seed;  ///< empty: not given; range-checked in loadParams
   std::string orientation;  ///< empty: not given; else orientation.source (issue 14)
+  std::string memory_budget;  ///< empty: not given; else memory.budget (MB)
   std::vector<std::string> settings;  ///< --set GROUP.KEY=VALUE or KEY=VALUE
 };
 
@@ -93,15 +96,33 @@ PipelineParams loadParams(const RegisterOptions& o) {
   if (o.no_refine) p.refine = false;
   if (!o.seed.empty()) p.seed = static_cast<std::uint64_t>(parseOption(seedSpec(), o.seed));
   if (!o.orientation.empty()) setPipelineParam(p, "orientation.source", o.orientation);
+  if (!o.memory_budget.empty()) setPipelineParam(p, "memory.budget", o.memory_budget);
   return p;
 }
 
 struct Side {
-  LoadedData data;
+  LoadedData data;  ///< what readFile gave (an empty Dataset when subsampled)
   RegistrationInput input;
+  bool subsampled = false;  ///< input is a streamed subsample: write -o by streaming the file
 };
 
-void load(Side& s, const std::string& path, const std::string& trajectory, const char* option) {
+/// A file above the memory budget becomes a streamed subsample (not with a trajectory: the
+/// origins are set on the whole dataset).
+bool loadSubsampled(Side& s, const std::string& path, const std::string& trajectory, const PipelineParams& p) {
+  if (!trajectory.empty()) return false;
+  auto sub = boundedRegistrationInput(path, p);
+  if (!sub) return false;
+  std::cerr << "plumb-cli: " << path << ": " << sub->estimated_points << " points exceed the memory budget ("
+            << sub->budget_bytes / (1024 * 1024) << " MB): registering a " << sub->voxel * 100
+            << " cm voxel subsample of " << sub->points_kept << " of " << sub->points_read << " points\n";
+  s.input = std::move(sub->input);
+  s.subsampled = true;
+  return true;
+}
+
+void load(Side& s, const std::string& path, const std::string& trajectory, const char* option,
+          const PipelineParams& p) {
+  if (loadSubsampled(s, path, trajectory, p)) return;
   s.data = readFile(path);
   if (!trajectory.empty() && !std::holds_alternative<Dataset>(s.data))
     throw InputError(std::string(option) + ": " + path + " is a model, not a scan: a trajectory only "
@@ -138,6 +159,8 @@ void checkOutputs(const RegisterOptions& o, std::optional<bool> model_source) {
     }
 }
 
+void writeRegistered(const RegisterOptions& o, const Side& src, const RigidTransform& T, const MemoryParams& memory);
+
 int run(const RegisterOptions& o) {
   const PipelineParams p = loadParams(o);
   if (o.print_params) {
@@ -150,8 +173,8 @@ int run(const RegisterOptions& o) {
   checkOutputs(o, source_format == FileFormat::Ply ? std::nullopt
                                                    : std::optional<bool>(isModelFormat(source_format)));
   Side src, tgt;
-  load(src, o.source, o.source_trajectory, "--source-trajectory");
-  load(tgt, o.target, o.target_trajectory, "--target-trajectory");
+  load(src, o.source, o.source_trajectory, "--source-trajectory", p);
+  load(tgt, o.target, o.target_trajectory, "--target-trajectory", p);
   checkOutputs(o, std::holds_alternative<BimModel>(src.data));
   // Progress on a terminal only (logs stay clean).
   const bool tty = isatty(2);
@@ -177,25 +200,36 @@ int run(const RegisterOptions& o) {
   }
   const RigidTransform& T = r.transform();
   if (!o.transform.empty()) writeTransformFile(o.transform, T);
-  if (!o.output.empty()) {
-    if (auto* d = std::get_if<Dataset>(&src.data)) {
-      Dataset moved = *d;
-      for (auto& scan : moved.scans) {
-        scan.pose = T * scan.pose;
-        scan.has_pose = true;
-      }
-      WriteReport written;
-      WriteOptions options;
-      options.report = &written;
-      writeDataset(o.output, moved, options);
-      printWritten(o.output, moved, written);
-    } else {
-      BimModel m = std::get<BimModel>(src.data);
-      m.transform(T);
-      writeModel(o.output, m);
-    }
-  }
+  if (!o.output.empty()) writeRegistered(o, src, T, p.memory);
   return code;
+}
+
+/// -o: the source moved by T. A subsampled source is streamed again from its file at full
+/// resolution (convertPointFile: T applied per chunk, or per station for E57), never merged.
+void writeRegistered(const RegisterOptions& o, const Side& src, const RigidTransform& T, const MemoryParams& memory) {
+  if (src.subsampled) {
+    ConvertParams convert;
+    convert.transform = T;
+    convert.memory_budget = memoryBudgetBytes(memory);
+    convert.stream = streamOptionsWithin(convert.memory_budget);
+    for (const auto& f : convertPointFile(o.source, o.output, convert).files)
+      printWritten(f.path, f.points, f.scans, f.report);
+  } else if (auto* d = std::get_if<Dataset>(&src.data)) {
+    Dataset moved = *d;
+    for (auto& scan : moved.scans) {
+      scan.pose = T * scan.pose;
+      scan.has_pose = true;
+    }
+    WriteReport written;
+    WriteOptions options;
+    options.report = &written;
+    writeDataset(o.output, moved, options);
+    printWritten(o.output, moved, written);
+  } else {
+    BimModel m = std::get<BimModel>(src.data);
+    m.transform(T);
+    writeModel(o.output, m);
+  }
 }
 
 }  // namespace
@@ -215,6 +249,7 @@ void addRegisterCommand(CLI::App& app, Action& action) {
                   "The source's orientation: auto (default), levelled (Z up), y-up (glTF, "
                   "handheld, SLAM) or any; same as --set orientation.source=...")
       ->check(CLI::IsMember({"auto", "levelled", "y-up", "any"}));
+  cmd->add_option("--memory-budget", opts->memory_budget, memoryBudgetHelp() + "; same as --set memory.budget=MB");
   cmd->add_option("-o,--output", opts->output, "Write the registered SOURCE (e57, ply, las...)");
   cmd->add_option("--transform", opts->transform, "Write the transform (JSON or 4x4 text)");
   cmd->add_option("--report", opts->reports,

@@ -142,6 +142,15 @@ std::size_t PointCloud::memoryBytes() const {
 
 void PointCloud::reserve(std::size_t n) { positions.reserve(n); }
 
+void PointCloud::reserveColumns(std::size_t n) {
+  positions.reserve(n);
+  forEachAttribute([n](const char*, Absent, auto& v) {
+    if (!v.empty()) v.reserve(n);
+  }, *this);
+  for (auto& f : scalar_fields)
+    if (!f.values.empty()) f.values.reserve(n);
+}
+
 void PointCloud::validate(bool strict) const {
   const std::size_t n = size();
   forEachAttribute([&](const char* name, Absent, const auto& v) {

@@ -148,6 +148,9 @@ class PointCloud {
 
   // --- edits -----------------------------------------------------------------------------
   void reserve(std::size_t n);
+  /// Reserves `n` points in positions and in every column the cloud has (non-empty), so
+  /// appending chunks up to n points never reallocates (one scan gathered from a stream).
+  void reserveColumns(std::size_t n);
   /// Drops attributes whose size does not match positions (throws InputError instead if
   /// `strict`), so that "present" always means "one value per point".
   void validate(bool strict = true) const;

@@ -17,6 +17,10 @@
 // empty scans in the form both libE57Format 3.x and E57RefImpl tools read (docs/E57_FORMAT.md
 // pitfall 8), and is replaced atomically.
 #include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "common/progress.hpp"
 #include "model/dataset.hpp"
@@ -33,5 +37,29 @@ struct E57WriteOptions {
 
 void writeE57(const std::filesystem::path& path, const Dataset& data,
               const E57WriteOptions& options = {}, Progress* progress = nullptr);
+
+/// The same file written one scan at a time (writeE57 uses it): a scan's binary section is
+/// written when the scan is given, the XML (every scan's pose, limits, prototype) at
+/// finish(), so memory is the largest scan, never the campaign. The target is replaced only
+/// by finish(); destroyed before, nothing is left (AtomicFileWriter).
+class E57StreamWriter {
+ public:
+  E57StreamWriter(const std::filesystem::path& path, const E57WriteOptions& options = {});
+  ~E57StreamWriter();
+  E57StreamWriter(const E57StreamWriter&) = delete;
+  E57StreamWriter& operator=(const E57StreamWriter&) = delete;
+  /// Writes one scan (validated first); the caller may release it afterwards.
+  void writeScan(const Scan& scan, Progress* progress = nullptr);
+  /// The XML (file GUID from `metadata` "file GUID" when present) and the header; commits.
+  void finish(const std::vector<std::pair<std::string, std::string>>& metadata,
+              const std::string& coordinate_system);
+  std::uint64_t points() const { return points_; }
+  std::size_t scans() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+  std::uint64_t points_ = 0;
+};
 
 }  // namespace plumb

@@ -154,7 +154,7 @@ void limitsXml(Xml& x, const WrittenScan& w) {
 
 /// One data3D vectorChild: identification, pose, limits and the points' CompressedVector.
 void scanXml(Xml& x, const WrittenScan& w) {
-  const Scan& scan = *w.scan;
+  const Scan& scan = w.scan;
   x.open("vectorChild", "type=\"Structure\"");
   x.str("guid", w.guid);
   x.str("name", scan.name);

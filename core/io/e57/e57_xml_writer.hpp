@@ -12,7 +12,7 @@ namespace plumb::e57 {
 
 /// What the writer knows about one written scan.
 struct WrittenScan {
-  const Scan* scan = nullptr;
+  Scan scan;  ///< name, description, pose (no points: the writer may stream scan after scan)
   std::string guid;
   std::uint64_t section_offset = 0;  ///< physical
   std::uint64_t records = 0;

@@ -282,8 +282,9 @@ struct VertexLayout {
 
 class Reader {
  public:
-  Reader(const std::filesystem::path& path, Progress* progress)
-      : path_(path), in_(path, kHeadBlockBytes), progress_(progress) {}
+  Reader(const std::filesystem::path& path, Progress* progress, const PlyVertexStream* stream = nullptr,
+         std::size_t chunk_points = 0)
+      : path_(path), in_(path, kHeadBlockBytes), progress_(progress), stream_(stream), chunk_points_(chunk_points) {}
 
   PlyData run() {
     if (in_.fileSize() == 0) throw FileError(path_, "file is empty (0 bytes)");
@@ -303,15 +304,19 @@ class Reader {
     in_.consume(out_.header.data_offset);
     line_ = out_.header.data_line;
     for (const Element& e : out_.header.elements) {
-      if (e.name == "vertex") readVertices(e);
-      else if (e.name == "face") readFaces(e);
+      if (e.name == "vertex") stream_ ? streamVertices(e) : readVertices(e);
+      else if (e.name == "face" && !stream_) readFaces(e);
       else skipElement(e);
     }
     if (!saw_vertex_)
       throw FileError(path_, "PLY file has no \"vertex\" element", atLine(1, "PLY header"));
+    if (stream_) {
+      readGridComment(vertex_count_);
+      return std::move(out_);
+    }
     checkFaceIndices();
     readElementComments();
-    readGridComment();
+    readGridComment(out_.vertices.size());
     return std::move(out_);
   }
 
@@ -530,25 +535,77 @@ class Reader {
   /// Binary vertex records without lists: the offset from a sample of the first records (with
   /// double coordinates), then all records at their fixed stride.
   void readFixedVertices(const Element& e, std::size_t n, const VertexLayout& l, Columns& c, PointCloud& cloud) {
+    const std::uint64_t start = in_.offset();
+    c.offset = fixedVertexOffset(e, n, l);
+    cloud.offset = c.offset;
+    readFixedRecords(start, n, e.recordSize(), swap(), l.slots, c);
+    in_.seek(start + static_cast<std::uint64_t>(n) * e.recordSize());
+  }
+
+  /// Fixed-size binary vertices at the reader's position: checks that all `n` fit in the file
+  /// and gives their offset (double coordinates: from a sample of the first records).
+  Eigen::Vector3d fixedVertexOffset(const Element& e, std::size_t n, const VertexLayout& l) {
     const std::size_t stride = e.recordSize();
-    const bool sw = swap();
     const std::uint64_t start = in_.offset();
     if (n > 0 && in_.fill(stride) < stride) truncated(e, 0);
+    Eigen::Vector3d offset = Eigen::Vector3d::Zero();
     if (l.double_coords && n > 0) {
       const std::size_t k = std::min({n, kOffsetSampleSize, std::max<std::size_t>(1, kWindowBytes / stride)});
       const std::size_t got = std::min(k, in_.fill(k * stride) / stride);
       std::vector<Eigen::Vector3d> sample(got);
       for (std::size_t j = 0; j < got; ++j)
-        sample[j] = sw ? binaryPosition<true>(l.slots, in_.data() + j * stride)
-                       : binaryPosition<false>(l.slots, in_.data() + j * stride);
-      c.offset = offsetFromSample(std::move(sample));
+        sample[j] = swap() ? binaryPosition<true>(l.slots, in_.data() + j * stride)
+                           : binaryPosition<false>(l.slots, in_.data() + j * stride);
+      offset = offsetFromSample(std::move(sample));
     }
-    cloud.offset = c.offset;
-    const std::uint64_t end = start + static_cast<std::uint64_t>(n) * stride;
-    if (end > in_.fileSize())
+    if (start + static_cast<std::uint64_t>(n) * stride > in_.fileSize())
       truncated(e, (in_.fileSize() - start) / stride, in_.fileSize());
-    readFixedRecords(start, n, stride, sw, l.slots, c);
-    in_.seek(end);
+    return offset;
+  }
+
+  /// The vertices handed to stream_ in chunks of chunk_points_ (readDataset's values: same
+  /// offset, columns and numbers; residuals below 1 µm are kept, as every stream does).
+  void streamVertices(const Element& e) {
+    if (saw_vertex_) throw FileError(path_, "PLY file has two \"vertex\" elements", atLine(e.header_line, "PLY header"));
+    saw_vertex_ = true;
+    PointCloud named;  // the scalar fields' names; no points
+    const VertexLayout l = mapVertexProperties(e, named);
+    const std::size_t n = static_cast<std::size_t>(e.count);
+    vertex_count_ = n;
+    stream_->begin(out_.header, e.count, chunkOf(named, l, 1).fieldNames(), intensityIntegral(e, l));
+    const bool fixed = binary() && !e.hasLists();
+    const std::uint64_t start = in_.offset();
+    Eigen::Vector3d offset = fixed ? fixedVertexOffset(e, n, l) : Eigen::Vector3d::Zero();
+    for (std::size_t first = 0; first < n; first += chunk_points_) {
+      const std::size_t m = std::min(chunk_points_, n - first);
+      std::vector<Column<double>> extras(l.extra_names.size());
+      PointCloud chunk = named;
+      Columns c = sizeColumns(chunk, m, l, extras);
+      c.offset = offset;
+      if (fixed) readFixedRecords(start + static_cast<std::uint64_t>(first) * e.recordSize(), m, e.recordSize(), swap(), l.slots, c);
+      else readRecords(e, first, m, l.slots, l.double_coords && first == 0, c);
+      offset = c.offset;  // chosen in the first chunk (>= kOffsetSampleSize records)
+      chunk.offset = offset;
+      storeExtras(l.extra_names, extras, chunk);
+      stream_->chunk(chunk);
+    }
+    if (fixed) in_.seek(start + static_cast<std::uint64_t>(n) * e.recordSize());
+  }
+
+  /// A cloud of `n` (uninitialised) points with the columns a chunk carries.
+  static PointCloud chunkOf(const PointCloud& named, const VertexLayout& l, std::size_t n) {
+    PointCloud c = named;
+    std::vector<Column<double>> extras(l.extra_names.size());
+    sizeColumns(c, n, l, extras);
+    storeExtras(l.extra_names, extras, c);
+    return c;
+  }
+
+  /// Intensity stored as an unsigned type of at most 16 bits: whole numbers within 0..65535.
+  static bool intensityIntegral(const Element& e, const VertexLayout& l) {
+    if (l.intensity < 0) return false;
+    const Type t = e.properties[l.intensity].type;
+    return t == Type::UInt8 || t == Type::UInt16;
   }
 
   void readVertices(const Element& e) {
@@ -562,17 +619,18 @@ class Reader {
     if (binary() && !e.hasLists()) {
       readFixedVertices(e, n, l, c, cloud);
     } else {
-      readRecords(e, n, l.slots, l.double_coords, c);
+      readRecords(e, 0, n, l.slots, l.double_coords, c);
       cloud.offset = c.offset;
     }
     cloud.dropNegligibleResiduals();
     storeExtras(l.extra_names, extra_values, cloud);  // only when the records were read
   }
 
-  /// ASCII or list-carrying vertex records, one by one. With double coordinates the first
-  /// kOffsetSampleSize records are held until the offset is chosen from them.
-  void readRecords(const Element& e, std::size_t n, const std::vector<Slot>& slots, bool double_coords,
-                   Columns& c) {
+  /// ASCII or list-carrying vertex records `first` .. first+n-1, one by one, into columns from
+  /// index 0. With `double_coords` the first kOffsetSampleSize records are held until the
+  /// offset is chosen from them.
+  void readRecords(const Element& e, std::size_t first, std::size_t n, const std::vector<Slot>& slots,
+                   bool double_coords, Columns& c) {
     std::vector<double> values(slots.size());
     std::vector<std::vector<double>> held;
     auto put = [&](std::size_t i, const std::vector<double>& v) {
@@ -586,17 +644,18 @@ class Reader {
       held.clear();
     };
     for (std::size_t i = 0; i < n; ++i) {
-      if (!beginRecord()) truncated(e, i);
+      const std::size_t record = first + i;
+      if (!beginRecord()) truncated(e, record);
       for (std::size_t j = 0; j < slots.size(); ++j) {
         const auto& p = e.properties[j];
         if (p.is_list) {
-          const std::uint64_t m = listCount(e, i, p);
-          for (std::uint64_t q = 0; q < m; ++q) value(e, i, p.type);
+          const std::uint64_t m = listCount(e, record, p);
+          for (std::uint64_t q = 0; q < m; ++q) value(e, record, p.type);
         } else {
-          values[j] = value(e, i, p.type);
+          values[j] = value(e, record, p.type);
         }
       }
-      endRecord(e, i);
+      endRecord(e, record);
       if (double_coords && i < kOffsetSampleSize) {
         held.push_back(values);
         if (held.size() == kOffsetSampleSize) release();
@@ -726,14 +785,14 @@ class Reader {
   }
 
   /// "comment plumb-grid ROWS COLUMNS" restores the grid size of an organized cloud.
-  void readGridComment() {
+  void readGridComment(std::size_t vertices) {
     auto& v = out_.vertices;
     for (const auto& cmt : out_.header.comments) {
       std::istringstream in(cmt);
       std::string key;
       long long rows = 0, cols = 0;
       if (in >> key >> rows >> cols && key == "plumb-grid" && rows > 0 && cols > 0 &&
-          rows <= INT32_MAX && cols <= INT32_MAX && static_cast<std::size_t>(rows * cols) == v.size()) {
+          rows <= INT32_MAX && cols <= INT32_MAX && static_cast<std::size_t>(rows * cols) == vertices) {
         v.grid_rows = static_cast<std::int32_t>(rows);
         v.grid_columns = static_cast<std::int32_t>(cols);
       }
@@ -744,6 +803,9 @@ class Reader {
   BlockReader in_;
   Progress* progress_;
   PlyData out_;
+  const PlyVertexStream* stream_ = nullptr;  ///< streaming read: vertices go there in chunks
+  std::size_t chunk_points_ = 0;
+  std::size_t vertex_count_ = 0;
   bool saw_vertex_ = false;
   std::uint64_t line_ = 0;  ///< ASCII: 1-based line of the record being parsed
   std::string line_text_;
@@ -758,6 +820,13 @@ PlyData readPly(const std::filesystem::path& path, Progress* progress) {
   PlyData data = reader.run();
   reportProgress(progress, 1.0, "reading PLY");
   return data;
+}
+
+std::pair<std::int32_t, std::int32_t> streamPlyVertices(const std::filesystem::path& path, std::size_t chunk_points,
+                                                        const PlyVertexStream& stream, Progress* progress) {
+  Reader reader(path, progress, &stream, std::max<std::size_t>(chunk_points, kOffsetSampleSize));
+  const PlyData data = reader.run();
+  return {data.vertices.grid_rows, data.vertices.grid_columns};
 }
 
 Dataset plyToDataset(PlyData&& ply, const std::filesystem::path& path) {

@@ -19,6 +19,8 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,23 @@ struct PlyData {
 };
 
 PlyData readPly(const std::filesystem::path& path, Progress* progress = nullptr);
+
+/// A streaming read of the vertices (io/stream: streamDataset of a PLY).
+struct PlyVertexStream {
+  /// Before the first chunk: the header, the vertex count, the fields every chunk carries and
+  /// whether intensity is stored as an unsigned type of at most 16 bits.
+  std::function<void(const ply::Header&, std::uint64_t vertices, const std::vector<std::string>& fields,
+                     bool intensity_integral)>
+      begin;
+  /// At most chunk_points vertices, as readPly gives them (same offset, same values).
+  std::function<void(const PointCloud&)> chunk;
+};
+
+/// Reads the vertices in chunks of `chunk_points` (at least 4096), faces and other elements
+/// skipped; the memory is one chunk, one read window per thread and one ASCII line. Errors
+/// as readPly's (face indices are not checked). Returns the "plumb-grid" size (0 x 0: none).
+std::pair<std::int32_t, std::int32_t> streamPlyVertices(const std::filesystem::path& path, std::size_t chunk_points,
+                                                        const PlyVertexStream& stream, Progress* progress = nullptr);
 
 /// A one-scan dataset from the vertices (faces ignored).
 Dataset plyToDataset(PlyData&& ply, const std::filesystem::path& path);

@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "common/error.hpp"
 #include "io/las/las_stream_writer.hpp"
 #include "io/ply/ply_stream_writer.hpp"
+#include "io/stream/e57_convert.hpp"
+#include "io/stream/intensity_range.hpp"
+#include "io/stream/point_count.hpp"
 #include "io/stream/point_stream.hpp"
 
 namespace plumb {
@@ -14,7 +18,9 @@ namespace {
 
 // Thrown by the streaming route when the output needs a fact only the whole data gives: the
 // file is then converted whole (nothing the stream wrote is committed).
-struct NeedsWholeData {};
+struct NeedsWholeData {
+  bool intensity_range = false;  ///< only the data's intensity range is missing (a pass gives it)
+};
 
 LasWriteOptions lasOptions(const WriteOptions& w) {
   LasWriteOptions o;
@@ -52,7 +58,8 @@ struct IntensityPlan {
   }
 };
 
-IntensityPlan intensityPlan(const std::vector<const StreamScan*>& scans, const Dataset& described) {
+IntensityPlan intensityPlan(const std::vector<const StreamScan*>& scans, const Dataset& described,
+                            const std::vector<ScanIntensityRange>* ranges) {
   IntensityPlan plan;
   bool any = false, integral = true;
   for (const auto* s : scans) {
@@ -61,9 +68,17 @@ IntensityPlan intensityPlan(const std::vector<const StreamScan*>& scans, const D
   }
   if (!any || integral) return plan;
   const auto limits = lasIntensityLimits(described);
-  if (!limits || !(limits->first < limits->second)) throw NeedsWholeData{};  // data min/max
-  plan.scale = LasStreamFormat::IntensityScale{limits->first, limits->second, "the E57 intensity limits"};
-  plan.needs_fraction = true;
+  if (limits && limits->first < limits->second) {
+    plan.scale = LasStreamFormat::IntensityScale{limits->first, limits->second, "the E57 intensity limits"};
+    plan.needs_fraction = true;
+    return plan;
+  }
+  if (!ranges) throw NeedsWholeData{true};  // the data's min/max: one more pass gives it
+  ScanIntensityRange data;
+  for (const auto* s : scans)
+    if (s->index < ranges->size()) data.extend((*ranges)[s->index]);
+  if (!data.integral)  // else writeLas keeps the values as stored
+    plan.scale = LasStreamFormat::IntensityScale{data.lo, data.hi, "the data's min/max"};
   return plan;
 }
 
@@ -94,8 +109,10 @@ Dataset oneScan(const Dataset& d, std::size_t k) {
 
 class ConvertSink final : public ChunkSink {
  public:
-  ConvertSink(const std::filesystem::path& out, const ConvertParams& params, Progress* progress)
-      : out_(out), params_(params), progress_(progress), to_las_(formatFromExtension(out) == FileFormat::Las) {}
+  ConvertSink(const std::filesystem::path& out, const ConvertParams& params, Progress* progress,
+              const std::vector<ScanIntensityRange>* ranges)
+      : out_(out), params_(params), progress_(progress), ranges_(ranges),
+        to_las_(formatFromExtension(out) == FileFormat::Las) {}
 
   void begin(const StreamOutline& outline) override {
     outline_ = &outline;
@@ -143,7 +160,7 @@ class ConvertSink final : public ChunkSink {
     output_ = Output{};
     output_.file.path = path;
     output_.file.scans = scan_count;
-    if (to_las_) output_.intensity = intensityPlan(scans, described);
+    if (to_las_) output_.intensity = intensityPlan(scans, described, ranges_);
     described_ = described;
   }
 
@@ -196,6 +213,7 @@ class ConvertSink final : public ChunkSink {
   std::filesystem::path out_;
   const ConvertParams& params_;
   Progress* progress_;
+  const std::vector<ScanIntensityRange>* ranges_;  ///< the data's intensity ranges, when gathered
   bool to_las_;
   const StreamOutline* outline_ = nullptr;
   Dataset described_;
@@ -214,6 +232,25 @@ WriteOptions withReport(const WriteOptions& w, WriteReport& report) {
 }
 
 }  // namespace
+
+StreamOptions streamOptionsWithin(std::uint64_t budget) {
+  StreamOptions o;
+  constexpr std::uint64_t kChunkBytesPerPoint = 64;
+  if (budget > 0) o.chunk_points = std::min<std::uint64_t>(o.chunk_points, budget / 4 / kChunkBytesPerPoint);
+  return o;
+}
+
+void checkWholeReadFits(const std::filesystem::path& path, std::uint64_t budget, const std::string& what) {
+  if (budget == 0) return;
+  const PointCountEstimate e = estimatePointCount(path);
+  const std::uint64_t need = e.points * kWholeReadBytesPerPoint;
+  if (need <= budget) return;
+  constexpr std::uint64_t kMb = 1024 * 1024;
+  throw FileError(path, what + " needs the whole file in memory (" + std::to_string(e.points) + " points, ~" +
+                            std::to_string(need / kMb) + " MB), above the memory budget of " +
+                            std::to_string(budget / kMb) + " MB: raise --memory-budget or pick a streamed "
+                            "format (docs/IO.md)");
+}
 
 void refuseSameFile(const std::filesystem::path& in, const std::filesystem::path& out) {
   std::error_code ec;
@@ -258,17 +295,24 @@ ConvertResult convertDataset(Dataset& data, const std::filesystem::path& out, co
 ConvertResult convertPointFile(const std::filesystem::path& in, const std::filesystem::path& out,
                                const ConvertParams& params, Progress* progress) {
   const FileFormat to = formatFromExtension(out);
+  if (params.allow_streaming && streamsInChunks(in) && to == FileFormat::E57)
+    return convertToE57Streamed(in, out, params, progress);
   if (params.allow_streaming && streamsInChunks(in) && (to == FileFormat::Las || to == FileFormat::Ply)) {
-    try {
-      ConvertSink sink(out, params, progress);
-      streamDataset(in, params.stream, sink, progress);
-      ConvertResult r = sink.result();
-      r.streamed = true;
-      return r;
-    } catch (const NeedsWholeData&) {
-      // converted whole below
+    std::optional<std::vector<ScanIntensityRange>> ranges;
+    while (true) {
+      try {
+        ConvertSink sink(out, params, progress, ranges ? &*ranges : nullptr);
+        streamDataset(in, params.stream, sink, progress);
+        ConvertResult r = sink.result();
+        r.streamed = true;
+        return r;
+      } catch (const NeedsWholeData& e) {
+        if (!e.intensity_range || ranges) break;  // converted whole below
+        ranges = intensityRanges(in, params.stream, progress);
+      }
     }
   }
+  checkWholeReadFits(in, params.memory_budget, "converting to " + out.filename().string());
   ReadOptions read;
   read.keep_direction_only = params.stream.keep_direction_only;
   Dataset data = readDataset(in, read, progress);

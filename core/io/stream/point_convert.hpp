@@ -22,6 +22,10 @@ struct ConvertParams {
   WriteOptions write;        ///< encoding, quantum, LAS version (`report` is not used)
   StreamOptions stream;      ///< chunk size
   bool allow_streaming = true;  ///< false: always read whole (tests compare both routes)
+  /// Memory budget, bytes (memoryBudgetBytes; 0: no limit). A file the stream cannot convert
+  /// is read whole only when its estimate (kWholeReadBytesPerPoint a point) fits; otherwise
+  /// the conversion is refused with a FileError naming the budget.
+  std::uint64_t memory_budget = 0;
 };
 
 struct ConvertedFile {
@@ -35,6 +39,18 @@ struct ConvertResult {
   std::vector<ConvertedFile> files;
   bool streamed = false;  ///< true when no scan was held whole
 };
+
+/// Bytes a point costs when a file is read whole and written (readDataset's columns, ~24 B,
+/// and the writer's working copy).
+inline constexpr std::uint64_t kWholeReadBytesPerPoint = 48;
+
+/// Throws FileError naming `path`, the estimate and the budget when reading `path` whole would
+/// exceed `budget` bytes (0: no limit). `what` says what needs the whole file.
+void checkWholeReadFits(const std::filesystem::path& path, std::uint64_t budget, const std::string& what);
+
+/// Default StreamOptions with chunks of at most a quarter of `budget` bytes (at ~64 bytes a
+/// point of columns); 0: no limit.
+StreamOptions streamOptionsWithin(std::uint64_t budget);
 
 /// Throws FileError when `out` is the file `in` (also through a link or another spelling):
 /// converting in place is refused. Nothing when `in` is empty.

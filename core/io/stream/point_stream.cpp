@@ -6,6 +6,9 @@
 #include "common/error.hpp"
 #include "io/e57/e57_reader.hpp"
 #include "io/las/las_reader.hpp"
+#include "io/ply/ply_reader.hpp"
+#include "io/stream/point_count.hpp"
+#include "io/text/text_io.hpp"
 
 namespace plumb {
 namespace {
@@ -55,11 +58,87 @@ void emitScan(Scan& scan, std::size_t index, std::size_t capacity, ChunkSink& si
   sink.endScan(end);
 }
 
+const char* encodingName(ply::Encoding e) {
+  return e == ply::Encoding::Ascii ? "ascii"
+         : e == ply::Encoding::BinaryLittleEndian ? "binary_little_endian"
+                                                  : "binary_big_endian";
+}
+
+/// The calls of a one-scan file (PLY, text) to a sink: the outline once the reader knows the
+/// fields, the chunks, then the scan's end.
+class OneScanStream {
+ public:
+  OneScanStream(const std::filesystem::path& path, const char* format, ChunkSink& sink) : sink_(sink) {
+    outline_.dataset.source = path;
+    outline_.dataset.format = format;
+    scan_.scan.name = path.stem().string();
+  }
+  void begin(std::vector<std::pair<std::string, std::string>> metadata, const std::vector<std::string>& fields,
+             std::optional<std::uint64_t> records, bool intensity_integral) {
+    outline_.dataset.metadata = std::move(metadata);
+    scan_.record_count = records;
+    scan_.fields = fields;
+    scan_.intensity_integral = intensity_integral;
+    outline_.scans.push_back(scan_);
+    outline_.dataset.scans.push_back(scan_.scan);
+    sink_.begin(outline_);
+    sink_.beginScan(outline_.scans[0]);
+  }
+  void chunk(const PointCloud& c) {
+    points_ += c.size();
+    sink_.chunk(c);
+  }
+  void finish(std::int32_t grid_rows, std::int32_t grid_columns) {
+    StreamScanEnd end;
+    end.points = points_;
+    end.fields = scan_.fields;
+    end.grid_rows = grid_rows;
+    end.grid_columns = grid_columns;
+    sink_.endScan(end);
+    sink_.end(outline_);
+  }
+
+ private:
+  ChunkSink& sink_;
+  StreamOutline outline_;
+  StreamScan scan_;
+  std::uint64_t points_ = 0;
+};
+
+/// A PLY's vertices as one scan named after the file (plyToDataset's dataset), in chunks.
+void streamPly(const std::filesystem::path& path, const StreamOptions& options, ChunkSink& sink,
+               Progress* progress) {
+  OneScanStream one(path, "ply", sink);
+  PlyVertexStream stream;
+  stream.begin = [&](const ply::Header& h, std::uint64_t vertices, const std::vector<std::string>& fields,
+                     bool integral) { one.begin({{"encoding", encodingName(h.encoding)}}, fields, vertices, integral); };
+  stream.chunk = [&](const PointCloud& c) { one.chunk(c); };
+  const auto [rows, columns] = streamPlyVertices(path, chunkCapacity(options), stream, progress);
+  one.finish(rows, columns);
+}
+
+/// A text point file as one scan (readText's dataset), in chunks.
+void streamTextFile(const std::filesystem::path& path, const StreamOptions& options, ChunkSink& sink,
+                    Progress* progress) {
+  OneScanStream one(path, "text", sink);
+  TextPointStream stream;
+  stream.begin = [&](const std::vector<std::pair<std::string, std::string>>& metadata,
+                     const std::vector<std::string>& fields) { one.begin(metadata, fields, std::nullopt, false); };
+  stream.chunk = [&](const PointCloud& c) { one.chunk(c); };
+  streamText(path, chunkCapacity(options), stream, progress);
+  one.finish(0, 0);
+}
+
 }  // namespace
 
 bool streamsInChunks(const std::filesystem::path& path) {
   const FileFormat f = formatFromExtension(path);
-  return f == FileFormat::E57 || f == FileFormat::Las;
+  if (f != FileFormat::Ply) return f == FileFormat::E57 || f == FileFormat::Las || f == FileFormat::Text;
+  try {  // a PLY with faces is a model (readFile); a bad header is the whole reader's to report
+    return !estimatePointCount(path).model;
+  } catch (const std::exception&) {
+    return false;
+  }
 }
 
 void streamInMemory(Dataset data, const StreamOptions& options, ChunkSink& sink) {
@@ -89,6 +168,14 @@ void streamDataset(const std::filesystem::path& path, const StreamOptions& optio
   }
   if (f == FileFormat::Las) {
     streamLas(path, options, sink, progress);
+    return;
+  }
+  if (f == FileFormat::Ply) {
+    streamPly(path, options, sink, progress);
+    return;
+  }
+  if (f == FileFormat::Text) {
+    streamTextFile(path, options, sink, progress);
     return;
   }
   ReadOptions read;

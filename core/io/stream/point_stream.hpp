@@ -4,8 +4,10 @@
 // bounded by the chunk size, not the file:
 // - E57: one compressed-vector packet, one decoded block (<= 4 MiB) and one chunk at a time.
 // - LAS: one block of records and one chunk at a time.
-// - PLY (ASCII and binary), PCD (ASCII, binary, binary_compressed) and text: read whole, then
-//   handed over in chunks (their memory is that of readDataset; see the doc).
+// - PLY (ASCII and binary): one chunk of vertices, one 1 MiB read window per thread, one line.
+// - Text (.xyz .txt .csv .pts .asc): one 4 MiB block cut at a line end and one chunk.
+// - PCD (ASCII, binary, binary_compressed): read whole (PCL, in the import helper), then
+//   handed over in chunks (its memory is that of readDataset; see the doc).
 // Chunks hold the values readDataset gives (same offsets, same columns, same numbers), so a
 // consumer's result does not depend on the route.
 #include <filesystem>
@@ -16,7 +18,8 @@
 
 namespace plumb {
 
-/// True when `path`'s format is streamed without reading it whole (E57, LAS).
+/// True when `path` is streamed without reading it whole: E57, LAS, text, and PLY without faces
+/// (a PLY whose header cannot be read: false, the whole reader reports it).
 bool streamsInChunks(const std::filesystem::path& path);
 
 /// Streams a point file to `sink`; format and errors as readDataset (FileError naming the

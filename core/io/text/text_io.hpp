@@ -19,7 +19,12 @@
 // Writing: .csv gets a header line "x,y,z,..." and commas; other extensions a comment header
 // "// x y z ..." and spaces. World coordinates are written with the shortest exact float
 // text when the offset is zero, else with 4 decimals (0.1 mm). Atomic.
+#include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "common/progress.hpp"
 #include "model/dataset.hpp"
@@ -27,6 +32,23 @@
 namespace plumb {
 
 Dataset readText(const std::filesystem::path& path, Progress* progress = nullptr);
+
+/// A streaming read (io/stream: streamDataset of a text file).
+struct TextPointStream {
+  /// Before the first chunk: readText's metadata and the fields every chunk carries.
+  std::function<void(const std::vector<std::pair<std::string, std::string>>& metadata,
+                     const std::vector<std::string>& fields)>
+      begin;
+  /// At most chunk_points points, readText's values (same offset; residuals below 1 µm kept).
+  std::function<void(const PointCloud&)> chunk;
+};
+
+/// readText's points in chunks of `chunk_points`: the layout from the first lines (grown until
+/// they hold the whole reader's 1000-row sample), then the file in 4 MiB blocks cut at line
+/// ends, so a record is never split between two blocks. Memory: one block and one chunk.
+/// Errors as readText's (line numbers and byte offsets of the file). Returns the points read.
+std::uint64_t streamText(const std::filesystem::path& path, std::size_t chunk_points, const TextPointStream& stream,
+                         Progress* progress = nullptr);
 
 struct TextWriteOptions {
   char delimiter = 0;  ///< 0: ',' for .csv, ' ' otherwise

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string_view>
 
@@ -101,23 +102,25 @@ struct Line {
 };
 
 /// Calls f(Line) for each line from byte `pos`; f returns false to stop. Lines longer than
-/// kMaxLineBytes are refused.
+/// kMaxLineBytes are refused. `base` is the file offset of text[0] (a block of a stream).
+/// Returns the number of the line after the last one seen.
 template <class F>
-void forEachLine(const std::string& text, std::size_t pos, std::uint64_t line_no,
-                 const std::filesystem::path& path, F&& f) {
+std::uint64_t forEachLine(const std::string& text, std::size_t pos, std::uint64_t line_no,
+                          const std::filesystem::path& path, F&& f, std::uint64_t base = 0) {
   while (pos < text.size()) {
     std::size_t eol = text.find('\n', pos);
     if (eol == std::string::npos) eol = text.size();
     if (eol - pos > kMaxLineBytes) {
       FileLocation where = atLine(line_no);
-      where.byte_offset = pos;
+      where.byte_offset = base + pos;
       throw FileError(path, "line of " + std::to_string(eol - pos) + " bytes is longer than the " +
                                 std::to_string(kMaxLineBytes) + " bytes accepted", where);
     }
-    if (!f(Line{std::string_view(text).substr(pos, eol - pos), line_no, pos})) return;
+    if (!f(Line{std::string_view(text).substr(pos, eol - pos), line_no, base + pos})) return line_no;
     pos = eol + 1;
     ++line_no;
   }
+  return line_no;
 }
 
 /// Colour / normal triples only when complete; otherwise they stay scalar fields.
@@ -332,27 +335,48 @@ void appendPoint(PointCloud& c, const std::vector<Col>& cols, const std::vector<
   if (has_normals) c.normals.push_back(n);
 }
 
-/// Pass 2: every data row from the first data line into `c`.
-void readRows(const std::string& text, const TextLayout& t, const std::vector<Col>& cols,
-              const std::vector<ScalarField*>& scalar_of, PointCloud& c, const std::filesystem::path& path,
-              Progress* progress) {
+/// Where pass 2 is: the points read so far (named in errors) and the progress scale.
+struct RowCursor {
+  std::uint64_t count = 0;
+  double total_bytes = 1;
+};
+
+/// Pass 2: every data row of `text` from byte `pos` (line `line_no`; text[0] is at file
+/// offset `base`) into `c`; `full` (when set) is called whenever `c` holds `capacity` points.
+/// Returns the number of the line after the text.
+std::uint64_t readRows(const std::string& text, std::size_t pos, std::uint64_t line_no, std::uint64_t base,
+                       const TextLayout& t, const std::vector<Col>& cols, const std::vector<ScalarField*>& scalar_of,
+                       PointCloud& c, const std::filesystem::path& path, Progress* progress, RowCursor& at,
+                       std::size_t capacity = 0, const std::function<void()>& full = {}) {
   const auto has = [&](Col x) { return std::find(cols.begin(), cols.end(), x) != cols.end(); };
   const bool has_rgb = has(Col::R), has_normals = has(Col::NX);
   std::vector<std::string_view> toks;
   std::vector<double> vals(t.ncols);
-  const double total = static_cast<double>(text.size());
-  std::uint64_t count = 0;
-  forEachLine(text, t.data_pos, t.data_line, path, [&](const Line& ln) {
-    const std::string_view line = trim(ln.text);
-    if (line.empty() || isComment(line)) return true;
-    if (!parseDataRow(line, ln, t, count, toks, vals, path)) return true;
-    appendPoint(c, cols, vals, scalar_of, has_rgb, has_normals);
-    if ((++count & 0xFFFF) == 0) {
-      checkCanceled(progress);
-      reportProgress(progress, static_cast<double>(ln.offset) / total, "reading text");
-    }
-    return true;
-  });
+  return forEachLine(
+      text, pos, line_no, path,
+      [&](const Line& ln) {
+        const std::string_view line = trim(ln.text);
+        if (line.empty() || isComment(line)) return true;
+        if (!parseDataRow(line, ln, t, at.count, toks, vals, path)) return true;
+        appendPoint(c, cols, vals, scalar_of, has_rgb, has_normals);
+        if (full && c.size() >= capacity) full();
+        if ((++at.count & 0xFFFF) == 0) {
+          checkCanceled(progress);
+          reportProgress(progress, static_cast<double>(ln.offset) / at.total_bytes, "reading text");
+        }
+        return true;
+      },
+      base);
+}
+
+/// Empties the columns of `c`, keeping its offset and scalar fields (their pointers stay valid).
+void clearRows(PointCloud& c) {
+  c.positions.clear();
+  c.position_residuals.clear();
+  c.colors.clear();
+  c.normals.clear();
+  c.intensity.clear();
+  for (auto& f : c.scalar_fields) f.values.clear();
 }
 
 }  // namespace
@@ -373,13 +397,108 @@ Dataset readText(const std::filesystem::path& path, Progress* progress) {
   scan.name = path.stem().string();
   PointCloud& c = scan.cloud;
   const std::vector<ScalarField*> scalar_of = prepareCloud(c, cols, layout);
-  readRows(contents, layout, cols, scalar_of, c, path, progress);
+  RowCursor at;
+  at.total_bytes = static_cast<double>(std::max<std::size_t>(contents.size(), 1));
+  readRows(contents, layout.data_pos, layout.data_line, 0, layout, cols, scalar_of, c, path, progress, at);
   c.dropNegligibleResiduals();
   d.metadata.emplace_back("delimiter", layout.delim == ' ' ? "space/tab" : std::string(1, layout.delim));
   d.metadata.emplace_back("header", layout.names.empty() ? "none (columns guessed from their count)" : "yes");
   d.scans.push_back(std::move(scan));
   reportProgress(progress, 1.0, "reading text");
   return d;
+}
+
+namespace text {
+namespace {
+
+constexpr std::size_t kTextBlockBytes = std::size_t{4} << 20;
+
+/// The metadata readText gives.
+std::vector<std::pair<std::string, std::string>> textMetadata(const TextLayout& t) {
+  return {{"delimiter", t.delim == ' ' ? "space/tab" : std::string(1, t.delim)},
+          {"header", t.names.empty() ? "none (columns guessed from their count)" : "yes"}};
+}
+
+/// PointCloud::fieldNames() of the cloud readText fills with `cols`.
+std::vector<std::string> textFields(const std::vector<Col>& cols, const PointCloud& prepared) {
+  const auto has = [&](Col x) { return std::find(cols.begin(), cols.end(), x) != cols.end(); };
+  std::vector<std::string> names{"x", "y", "z"};
+  if (has(Col::NX)) names.insert(names.end(), {"nx", "ny", "nz"});
+  if (has(Col::R)) names.insert(names.end(), {"red", "green", "blue"});
+  if (has(Col::I)) names.push_back("intensity");
+  for (const auto& f : prepared.scalar_fields) names.push_back(f.name);
+  return names;
+}
+
+/// Reads on from `in` into `text` (after `carry`): complete lines only, unless the file ends.
+/// Returns false when nothing is left.
+bool nextBlock(std::ifstream& in, std::string& carry, std::string& text) {
+  text = std::move(carry);
+  carry.clear();
+  const std::size_t had = text.size();
+  text.resize(had + kTextBlockBytes);
+  in.read(text.data() + had, static_cast<std::streamsize>(kTextBlockBytes));
+  text.resize(had + static_cast<std::size_t>(in.gcount()));
+  if (text.empty()) return false;
+  if (in.gcount() == static_cast<std::streamsize>(kTextBlockBytes)) {  // more to come: cut
+    const std::size_t nl = text.rfind('\n');
+    const std::size_t cut = nl == std::string::npos ? 0 : nl + 1;
+    carry.assign(text, cut, std::string::npos);
+    text.resize(cut);
+  }
+  return true;
+}
+
+/// The layout from the start of the file: grown until the layout's sample is complete (the
+/// whole reader's 1000 rows) or the file ends, so both readers decide the same columns.
+/// `head` keeps the complete lines read, `carry` the rest.
+TextLayout headLayout(std::ifstream& in, const std::filesystem::path& path, std::string& head, std::string& carry) {
+  std::string more;
+  while (true) {
+    const bool end = !nextBlock(in, carry, more) || in.eof();
+    head += more;
+    if (head.empty()) throw FileError(path, "file is empty (0 bytes)");
+    checkIsText(head, path);
+    try {
+      TextLayout t = scanLayout(head, path);
+      if (t.sample.size() >= 1000 || end) return t;
+    } catch (const FileError&) {
+      if (end) throw;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace text
+
+std::uint64_t streamText(const std::filesystem::path& path, std::size_t chunk_points, const TextPointStream& stream,
+                         Progress* progress) {
+  using namespace text;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path, "cannot open file");
+  std::string text, carry;
+  const TextLayout layout = headLayout(in, path, text, carry);
+  const std::vector<Col> cols = layout.names.empty()
+                                    ? guessColumns(layout.ncols, layout.sample)
+                                    : rolesFromHeader(layout.names, layout.ncols, layout.data_line, path);
+  PointCloud c;
+  const std::vector<ScalarField*> scalar_of = prepareCloud(c, cols, layout);
+  stream.begin(textMetadata(layout), textFields(cols, c));
+  const auto emit = [&] {
+    stream.chunk(c);
+    clearRows(c);
+  };
+  RowCursor at;
+  at.total_bytes = static_cast<double>(std::max<std::uintmax_t>(std::filesystem::file_size(path), 1));
+  std::uint64_t line = layout.data_line, base = 0;
+  std::size_t pos = layout.data_pos;
+  do {
+    line = readRows(text, pos, line, base, layout, cols, scalar_of, c, path, progress, at, chunk_points, emit);
+    base += text.size();
+    pos = 0;
+  } while (nextBlock(in, carry, text));
+  if (!c.empty()) emit();
+  return at.count;
 }
 
 }  // namespace plumb

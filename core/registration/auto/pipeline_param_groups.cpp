@@ -39,7 +39,7 @@ bool paramGroupUsedBy(const std::string& key, RegistrationMethod method) {
   auto in = [&key](std::initializer_list<const char*> keys) {
     return std::any_of(keys.begin(), keys.end(), [&key](const char* k) { return key == k; });
   };
-  if (key == "registration") return true;  // the top level: seed, refine, ...
+  if (key == "registration" || key == "memory") return true;  // the top level: seed, refine, ...
   switch (method) {
     case RegistrationMethod::Auto: return true;
     case RegistrationMethod::Planes:

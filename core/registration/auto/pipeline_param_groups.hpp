@@ -27,6 +27,7 @@ void forEachParamGroup(P& p, F&& f) {
   f("candidates", "Candidate placements", CandidateParams::schema(), p.candidates);
   f("quality", "Quality checks", QualityParams::schema(), p.quality);
   f("visibility", "Free-space check", VisibilityParams::schema(), p.visibility);
+  f("memory", "Memory budget", MemoryParams::schema(), p.memory);
 }
 
 /// Whether the group `key` takes part in a registration with `method` (auto: all). The

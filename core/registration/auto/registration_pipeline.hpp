@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "common/memory_budget.hpp"
 #include "common/params.hpp"
 #include "common/progress.hpp"
 #include "common/seed.hpp"
@@ -78,6 +79,9 @@ struct PipelineParams {
   QualityParams quality;
   /// Free-space (visibility) check of the final transform (registration/auto/visibility_check).
   VisibilityParams visibility;
+  /// Memory budget: when an input is read whole or subsampled while streaming
+  /// (registration/auto/bounded_input.hpp). Not used by registerData itself.
+  MemoryParams memory;
   /// Spacing of the points sampled on a model for refinement, metres, [0.005, 1] (advanced).
   double model_sample_spacing = 0.05;
   /// The runner-up refined and compared with the answer (candidate_refinement.hpp); settles

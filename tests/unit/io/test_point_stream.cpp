@@ -189,7 +189,7 @@ TEST(PointConvert, StreamedOutputsAreTheWholeFileOutputs) {
   params.stream = smallChunks();
   params.transform = RigidTransform::fromQuaternion(Eigen::Quaterniond(Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX())),
                                                     Eigen::Vector3d(5.0, -3.0, 1.0));
-  for (const char* ext : {".las", ".ply"}) {
+  for (const char* ext : {".las", ".ply", ".e57"}) {
     for (bool split : {false, true}) {
       SCOPED_TRACE(std::string(ext) + (split ? " split" : ""));
       params.split = split;
@@ -207,7 +207,8 @@ TEST(PointConvert, StreamedOutputsAreTheWholeFileOutputs) {
         // LAS: the header offsets differ (first chunk / whole bounds), so a coordinate half-way
         // between two quanta may round to either (one quantum); the whole route also drops
         // residuals within 1 µm the stream keeps. PLY (float32 at ~2 km: steps of 0.12 mm):
-        // both within the 0.1 mm claim of the source, so within 0.2 mm of each other.
+        // both within the 0.1 mm claim of the source, so within 0.2 mm of each other. E57: both
+        // routes quantize the same scan-frame coordinates (E57StreamWriter, scan by scan).
         const Dataset s = readDataset(streamed.files[f].path), w = readDataset(whole.files[f].path);
         const bool las = std::string(ext) == ".las";
         expectSamePoints(s, w, las ? 1e-4 + 2 * PointCloud::kResidualTolerance : 2 * kCoordinatePrecision);

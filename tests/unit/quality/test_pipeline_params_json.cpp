@@ -23,8 +23,8 @@ TEST(PipelineParamsJson, RoundTripsEveryGroup) {
     EXPECT_FALSE(j[key].contains("seed")) << key;
     ++groups;
   });
-  EXPECT_EQ(groups, 13);  // with "candidates", "visibility" (issue 13), "bim-features" and
-                          // "orientation" (issue 14)
+  EXPECT_EQ(groups, 14);  // with "candidates", "visibility" (issue 13), "bim-features",
+                          // "orientation" (issue 14) and "memory" (issue 16)
   PipelineParams q;
   pipelineParamsFromJson(j, q);
   EXPECT_DOUBLE_EQ(q.candidates.min_overlap_gap, 0.012);
@@ -113,6 +113,20 @@ TEST(PipelineParamsJson, GroupsUsedByEachMethod) {
   EXPECT_FALSE(paramGroupUsedBy("plane-extraction", RegistrationMethod::Icp));
   EXPECT_TRUE(paramGroupUsedBy("refinement", RegistrationMethod::Icp));
   EXPECT_TRUE(paramGroupUsedBy("registration", RegistrationMethod::Icp));  // the seed, refine
+  EXPECT_TRUE(paramGroupUsedBy("memory", RegistrationMethod::Icp));  // how the inputs are read
+}
+
+// Issue 16: the memory budget is one group of the schema, reachable by --set and JSON, with
+// 0 (half the available memory) by default; explicit budgets are taken as given.
+TEST(PipelineParamsJson, MemoryBudgetIsAParameterGroup) {
+  PipelineParams p;
+  EXPECT_EQ(pipelineParamsToJson(p).at("memory").at("budget"), 0.0);
+  EXPECT_EQ(pipelineParamsToJson(p).at("memory").at("subsample-voxel"), 0.02);
+  setPipelineParam(p, "memory.budget", "512");
+  EXPECT_EQ(memoryBudgetBytes(p.memory), 512ull << 20);
+  EXPECT_THROW(setPipelineParam(p, "memory.budget", "-1"), InputError);
+  p.memory.budget_mb = 0;
+  EXPECT_GE(memoryBudgetBytes(p.memory), 256ull << 20);  // half of MemAvailable, at least 256 MB
 }
 
 // Issue 18: the nested parameters (direction clustering, segment-set distance, rotation

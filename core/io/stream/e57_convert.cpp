@@ -1,0 +1,107 @@
+#include "io/stream/e57_convert.hpp"
+
+#include <algorithm>
+#include <memory>
+
+#include "io/e57/e57_writer.hpp"
+#include "io/stream/point_stream.hpp"
+
+namespace plumb {
+namespace {
+
+bool listed(const std::vector<std::string>& fields, const char* name) {
+  return std::find(fields.begin(), fields.end(), name) != fields.end();
+}
+
+/// What readDataset decides after a scan's last point (StreamScanEnd): an E57 scan whose
+/// colours are all invalid has no colour column; LAS fields that are 0 everywhere have none;
+/// residuals below 1 µm are dropped.
+void settleColumns(PointCloud& c, const StreamScanEnd& end) {
+  if (!listed(end.fields, "colors")) c.colors.clear(), c.color_invalid.clear();
+  if (!listed(end.fields, "scan_angle")) c.scan_angle.clear();
+  if (!listed(end.fields, "user_data")) c.user_data.clear();
+  if (!listed(end.fields, "point_source_id")) c.point_source_id.clear();
+  if (!listed(end.fields, "classification_flags")) c.classification_flags.clear();
+  if (!listed(end.fields, "scanner_channel")) c.scanner_channel.clear();
+  if (!listed(end.fields, "scan_flags")) c.scan_flags.clear();
+  c.grid_rows = end.grid_rows;
+  c.grid_columns = end.grid_columns;
+  c.dropNegligibleResiduals();
+}
+
+class E57ConvertSink final : public ChunkSink {
+ public:
+  E57ConvertSink(const std::filesystem::path& out, const ConvertParams& params, Progress* progress)
+      : out_(out), params_(params), progress_(progress) {}
+
+  void begin(const StreamOutline& outline) override {
+    source_ = outline.dataset.source;
+    if (!params_.split) open(out_);
+  }
+  void beginScan(const StreamScan& s) override {
+    scan_ = s.scan;
+    scan_.pose = params_.transform * s.scan.pose;
+    scan_.has_pose = s.scan.has_pose || !params_.transform.isIdentity();
+    scan_.cloud = PointCloud();
+    records_ = s.record_count.value_or(0);
+    if (params_.split) open(splitPath(out_, s.index, s.scan.name));
+  }
+  void chunk(const PointCloud& points) override {
+    if (scan_.cloud.empty()) {
+      scan_.cloud = points;
+      if (records_ > points.size()) scan_.cloud.reserveColumns(records_);  // no doubling on append
+    } else {
+      scan_.cloud.append(points);
+    }
+  }
+  void endScan(const StreamScanEnd& end) override {
+    settleColumns(scan_.cloud, end);
+    writer_->writeScan(scan_, progress_);
+    scan_.cloud = PointCloud();  // released before the next scan
+    if (params_.split) close({}, "");
+  }
+  void end(const StreamOutline& outline) override {
+    if (!params_.split) close(outline.dataset.metadata, outline.dataset.coordinate_system);
+  }
+  ConvertResult result() { return std::move(result_); }
+
+ private:
+  void open(const std::filesystem::path& path) {
+    refuseSameFile(source_, path);
+    E57WriteOptions o;
+    o.scaled_precision = params_.write.scaled_precision;
+    o.float_positions = params_.write.e57_float_positions;
+    writer_ = std::make_unique<E57StreamWriter>(path, o);
+    file_ = ConvertedFile{path, 0, 0, {}};
+  }
+  void close(const std::vector<std::pair<std::string, std::string>>& metadata, const std::string& crs) {
+    writer_->finish(metadata, crs);
+    file_.points = writer_->points();
+    file_.scans = writer_->scans();
+    file_.report.points = file_.points;
+    result_.files.push_back(std::move(file_));
+    writer_.reset();
+  }
+
+  std::filesystem::path out_, source_;
+  const ConvertParams& params_;
+  Progress* progress_;
+  Scan scan_;
+  std::uint64_t records_ = 0;  ///< the current scan's record count, when the file says
+  std::unique_ptr<E57StreamWriter> writer_;
+  ConvertedFile file_;
+  ConvertResult result_;
+};
+
+}  // namespace
+
+ConvertResult convertToE57Streamed(const std::filesystem::path& in, const std::filesystem::path& out,
+                                   const ConvertParams& params, Progress* progress) {
+  E57ConvertSink sink(out, params, progress);
+  streamDataset(in, params.stream, sink, progress);
+  ConvertResult r = sink.result();
+  r.streamed = true;
+  return r;
+}
+
+}  // namespace plumb
