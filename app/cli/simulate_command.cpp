@@ -10,6 +10,7 @@
 //   truth.json                 per dataset and per scan: the transform mapping the perturbed
 //                              data back to the model frame ({"matrix": ...} format); per
 //                              scan also "true_pose" (scan frame -> model frame)
+// --tls-walk orders the stations as a surveyor walks (each next the nearest not yet scanned).
 // --perturb-stations yaw_max_deg,shift_max_m moves every TLS station by its own random
 // perturbation (a network to register, issue 15), deterministic from --seed.
 //   trajectory.txt             the MMS trajectory ("t x y z" per line) in the outdoor dataset
@@ -35,6 +36,7 @@
 #include "simulation/doorway_stations.hpp"
 #include "simulation/ground_truth_json.hpp"
 #include "simulation/presets.hpp"
+#include "simulation/station_order.hpp"
 #include "simulation/survey.hpp"
 
 namespace plumb::cli {
@@ -65,7 +67,7 @@ void applyParamOptions(const ParamSchema<P>& schema, const std::string& prefix,
 struct Args {
   std::string preset, building, model, trajectory, perturb, perturb_stations, outdir, format = "e57";
   std::vector<std::string> tls;
-  bool tls_rooms = false, tls_doors = false, mms = false, perturb_mms = false, list = false, demo = false, opaque_glass = false;
+  bool tls_rooms = false, tls_doors = false, tls_walk = false, mms = false, perturb_mms = false, list = false, demo = false, opaque_glass = false;
   std::string seed = "1", noise_mm;  // parsed and range-checked in run()
   std::map<std::string, std::string> params;
 };
@@ -158,6 +160,7 @@ SurveyRequest surveyRequest(const Args& a, const Subject& s, std::uint64_t seed)
     if (!s.generated) throw InputError("simulate: --tls-doors needs a generated building (no --model)");
     for (const auto& c : doorwayStations(*s.generated, 0)) r.tls_stations.push_back(c);
   }
+  if (a.tls_walk) r.tls_stations = walkOrder(r.tls_stations);
   r.mms = r.mms || a.mms || !a.trajectory.empty();
   if (!a.trajectory.empty()) r.trajectory = readTrajectory(a.trajectory);
   r.perturb_mms = r.perturb_mms || a.perturb_mms;
@@ -257,6 +260,7 @@ void addSimulateCommand(CLI::App& app, Action& action) {
   cmd->add_option("--tls", a->tls, "Static station x,y,z in the model frame (repeatable)");
   cmd->add_flag("--tls-rooms", a->tls_rooms, "A static station at each ground-floor room centre");
   cmd->add_flag("--tls-doors", a->tls_doors, "A static station in each ground-floor interior doorway (after --tls-rooms)");
+  cmd->add_flag("--tls-walk", a->tls_walk, "Order the static stations as a walk (each next the nearest not yet scanned)");
   cmd->add_flag("--mms", a->mms, "Mobile mapping along an automatic street loop");
   cmd->add_option("--trajectory", a->trajectory, "Mobile mapping along a trajectory file (t x y z per line)");
   cmd->add_option("--perturb", a->perturb, "Random rigid perturbation yaw_max_deg,shift_max_m");

@@ -57,7 +57,7 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, N
     const Link& l = out.links[k];
     if (!l.accepted) continue;
     out.adjusted.push_back(k);
-    links.push_back({l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg});
+    links.push_back({l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg, l.reason == "sequence"});
   }
   out.adjustment = adjustNetwork(stations.size(), links, out.reference, stations[out.reference].file_pose, params.graph);
   for (std::size_t i = 0; i < stations.size(); ++i)

@@ -21,6 +21,9 @@ std::vector<CandidatePair> initialPairs(const std::vector<std::vector<double>>& 
     const auto key = std::minmax(i, j);
     if (!pairs.count(key)) pairs[key] = {key.first, key.second, similarity[i][j], reason};
   };
+  for (std::size_t i = 0; i < n; ++i)  // first: a pair both in sequence and alike is "sequence"
+    for (std::size_t k = 1; k <= static_cast<std::size_t>(params.sequence_neighbours) && i + k < n; ++k)
+      add(i, i + k, "sequence");
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<std::size_t> others;
     for (std::size_t j = 0; j < n; ++j)
@@ -29,8 +32,6 @@ std::vector<CandidatePair> initialPairs(const std::vector<std::vector<double>>& 
                      [&](std::size_t x, std::size_t y) { return similarity[i][x] > similarity[i][y]; });
     for (std::size_t k = 0; k < others.size() && k < static_cast<std::size_t>(params.nearest_layouts); ++k)
       add(i, others[k], "layout");
-    for (std::size_t k = 1; k <= static_cast<std::size_t>(params.sequence_neighbours) && i + k < n; ++k)
-      add(i, i + k, "sequence");
   }
   std::vector<CandidatePair> out;
   for (auto& [key, p] : pairs) out.push_back(p);

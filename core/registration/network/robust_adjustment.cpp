@@ -12,13 +12,14 @@ std::vector<GraphEdge> graphEdges(const std::vector<AdjustmentLink>& links, cons
   return edges;
 }
 
-/// Kept links (local indices) ordered for the initial tree: most closing triangles minus
-/// failing ones first, then the smallest sigma.
+/// Kept links (local indices) ordered for the initial tree: sequence links first, then most
+/// closing triangles minus failing ones, then the smallest sigma.
 std::vector<std::size_t> treeOrder(const std::vector<AdjustmentLink>& links, const std::vector<std::size_t>& kept,
                                    const std::vector<TriangleSupport>& support) {
   std::vector<std::size_t> order(kept.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+    if (links[kept[x]].sequence != links[kept[y]].sequence) return links[kept[x]].sequence;
     const int sx = support[x].closing - support[x].failing, sy = support[y].closing - support[y].failing;
     if (sx != sy) return sx > sy;
     return links[kept[x]].sigma_translation < links[kept[y]].sigma_translation;

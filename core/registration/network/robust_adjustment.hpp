@@ -1,6 +1,6 @@
 #pragma once
 // The robust network adjustment (docs/NETWORK.md): initial poses from a spanning tree of the
-// links (ordered by triangle support, then by weight), the pose graph solved with a Cauchy
+// links (sequence links first, then by triangle support, then by weight), the pose graph solved with a Cauchy
 // loss (pose_graph.hpp), then the link whose residual disagrees most with the network beyond
 // the drop thresholds is dropped and the network solved again, until no link is beyond them.
 // Stations the kept links do not connect to the reference are not placed (reported, not forced).
@@ -18,6 +18,9 @@ struct AdjustmentLink {
   RigidTransform transform;  ///< b's frame -> a's frame
   double sigma_translation = 0.001;  ///< m
   double sigma_rotation_deg = 0.01;  ///< deg
+  /// Stations shot one after the other (sequence neighbours): such links come first in the
+  /// initial spanning tree (shot order is evidence the geometry of identical rooms cannot fake).
+  bool sequence = false;
 };
 
 struct LinkOutcome {
