@@ -55,6 +55,19 @@ inline SyntheticNetwork ringNetwork(std::size_t count, double radius, std::size_
   return net;
 }
 
+/// Wrong links among `members` that agree with each other: each pair registered as if all
+/// members stood at the same place (identical rooms stacked onto one another).
+inline void addStackedClique(SyntheticNetwork& net, const std::vector<std::size_t>& members, double sigma_m,
+                             double sigma_deg) {
+  for (std::size_t i = 0; i < members.size(); ++i)
+    for (std::size_t j = i + 1; j < members.size(); ++j) {
+      AdjustmentLink l;
+      l.a = members[i], l.b = members[j];
+      l.sigma_translation = sigma_m, l.sigma_rotation_deg = sigma_deg;  // transform: identity
+      net.links.push_back(l);
+    }
+}
+
 /// Largest position error of the placed stations (m); unplaced stations count as infinite.
 inline double maxPositionError(const std::vector<std::optional<RigidTransform>>& poses,
                                const std::vector<RigidTransform>& truth) {

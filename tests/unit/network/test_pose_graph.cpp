@@ -56,6 +56,20 @@ TEST(RobustAdjustment, WrongLinkIsFlaggedDroppedAndStationsBeatTheChain) {
   EXPECT_FALSE(adj.loops.empty());
 }
 
+TEST(RobustAdjustment, SequenceLinksOutvoteAStackedCliqueOfIdenticalRooms) {
+  auto net = test::ringNetwork(12, 10.0, 4, 0.001, 0.005, 21, false);
+  for (std::size_t k = 0; k < 12; ++k) net.links[k].sequence = true;  // the ring: shot in order
+  const std::size_t first_wrong = net.links.size();
+  test::addStackedClique(net, {0, 3, 6, 9}, 0.0005, 0.002);  // 6 wrong links, all agreeing
+  const auto adj = adjustNetwork(net.truth.size(), net.links, 0, net.truth[0], graphParams());
+  for (std::size_t k = first_wrong; k < net.links.size(); ++k) {
+    EXPECT_TRUE(adj.links[k].dropped) << k;
+    EXPECT_GE(adj.links[k].triangles.closing, 2) << "the clique's triangles close";
+  }
+  EXPECT_EQ(adj.dropped_order.size(), net.links.size() - first_wrong);
+  EXPECT_LT(test::maxPositionError(adj.poses, net.truth), 0.004);
+}
+
 TEST(RobustAdjustment, ReportedSigmasCoverTheTrueErrors) {
   int covered = 0, total = 0;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
