@@ -20,7 +20,7 @@ struct PairSelectionParams {
   int nearest_layouts = 2;
   /// Each station is paired with the stations up to this many places after it in the input
   /// order (stations are usually shot in sequence), [0, 50].
-  int sequence_neighbours = 2;
+  int sequence_neighbours = 1;
   /// While the accepted links leave the network split, at most this many further pairs per
   /// station are tried between the parts, most similar first, [0, 100].
   int expansion_per_station = 2;
