@@ -1,7 +1,7 @@
 // Graph bookkeeping: components, spanning tree, chained poses, loop closures, triangles.
 #include <gtest/gtest.h>
 
-#include "synthetic_network.hpp"
+#include "support/synthetic_network.hpp"
 
 namespace plumb {
 namespace {

@@ -1,7 +1,7 @@
 // The pose graph and its robust adjustment on synthetic networks with known poses.
 #include <gtest/gtest.h>
 
-#include "synthetic_network.hpp"
+#include "support/synthetic_network.hpp"
 
 namespace plumb {
 namespace {
