@@ -22,9 +22,10 @@ struct DisjointSets {
 };
 
 /// Neighbour lists of the tree: (node, edge index).
-std::vector<std::vector<std::pair<std::size_t, std::size_t>>> treeAdjacency(
+using TreeAdjacency = std::vector<std::vector<std::pair<std::size_t, std::size_t>>>;
+TreeAdjacency treeAdjacency(
     std::size_t nodes, const std::vector<GraphEdge>& edges, const std::vector<std::size_t>& tree) {
-  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> adj(nodes);
+  TreeAdjacency adj(nodes);
   for (std::size_t k : tree) {
     adj[edges[k].a].push_back({edges[k].b, k});
     adj[edges[k].b].push_back({edges[k].a, k});
@@ -80,6 +81,41 @@ std::vector<std::optional<RigidTransform>> chainPoses(std::size_t nodes, const s
   return pose;
 }
 
+namespace {
+
+/// The tree path from `from` to `to` (both included); empty when the tree does not join them.
+std::vector<std::size_t> treePath(std::size_t nodes, const TreeAdjacency& adj, std::size_t from, std::size_t to) {
+  std::vector<std::optional<std::size_t>> parent(nodes);
+  parent[from] = from;
+  std::vector<std::size_t> stack{from};
+  while (!stack.empty()) {
+    const std::size_t u = stack.back();
+    stack.pop_back();
+    for (const auto& [v, e] : adj[u])
+      if (!parent[v]) parent[v] = u, stack.push_back(v);
+  }
+  if (!parent[to]) return {};
+  std::vector<std::size_t> path{to};
+  while (path.back() != from) path.push_back(*parent[path.back()]);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+/// The transform mapping the frame of path.back() into the frame of path.front() along the tree.
+RigidTransform alongPath(const std::vector<GraphEdge>& edges, const TreeAdjacency& adj,
+                         const std::vector<std::size_t>& path) {
+  RigidTransform around;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    for (const auto& [v, e] : adj[path[i]])
+      if (v == path[i + 1]) {
+        around = around * step(edges[e], path[i]);
+        break;
+      }
+  return around;
+}
+
+}  // namespace
+
 std::vector<LoopClosure> loopClosures(std::size_t nodes, const std::vector<GraphEdge>& edges,
                                       const std::vector<std::size_t>& tree) {
   const auto adj = treeAdjacency(nodes, edges, tree);
@@ -88,36 +124,11 @@ std::vector<LoopClosure> loopClosures(std::size_t nodes, const std::vector<Graph
   std::vector<LoopClosure> loops;
   for (std::size_t k = 0; k < edges.size(); ++k) {
     if (in_tree[k]) continue;
-    // Path a -> b in the tree (depth-first with parent edges).
-    std::vector<long> parent_edge(nodes, -1);
-    std::vector<bool> seen(nodes, false);
-    std::vector<std::size_t> stack{edges[k].a};
-    seen[edges[k].a] = true;
-    while (!stack.empty()) {
-      const std::size_t u = stack.back();
-      stack.pop_back();
-      for (const auto& [v, e] : adj[u])
-        if (!seen[v]) seen[v] = true, parent_edge[v] = static_cast<long>(e), stack.push_back(v);
-    }
-    if (!seen[edges[k].b]) continue;
     LoopClosure loop;
     loop.edge = k;
-    std::vector<std::size_t> path{edges[k].b};
-    while (path.back() != edges[k].a) {
-      const GraphEdge& e = edges[static_cast<std::size_t>(parent_edge[path.back()])];
-      path.push_back(e.a == path.back() ? e.b : e.a);
-    }
-    std::reverse(path.begin(), path.end());  // a ... b
-    RigidTransform around;                   // b's frame -> a's frame along the tree
-    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-      for (const auto& [v, e] : adj[path[i]])
-        if (v == path[i + 1]) {
-          around = around * step(edges[e], path[i]);
-          break;
-        }
-    }
-    const RigidTransform mis = edges[k].transform.inverse() * around;
-    loop.nodes = path;
+    loop.nodes = treePath(nodes, adj, edges[k].a, edges[k].b);
+    if (loop.nodes.empty()) continue;
+    const RigidTransform mis = edges[k].transform.inverse() * alongPath(edges, adj, loop.nodes);
     loop.translation = mis.translation().norm();
     loop.rotation_deg = mis.rotationAngleDeg();
     loops.push_back(std::move(loop));

@@ -57,6 +57,61 @@ double dropRatio(const EdgeResidual& r, const PoseGraphParams& p) {
   return std::max(r.translation / p.drop_translation, r.rotation_deg / p.drop_rotation);
 }
 
+/// Initial poses from the tree of the kept links, then one solve; fills poses, sigmas and the
+/// residual of every link whose stations are placed. Returns the tree (indices into kept).
+std::vector<std::size_t> solveOnce(std::size_t stations, const std::vector<AdjustmentLink>& links,
+                                   const std::vector<std::size_t>& kept, std::size_t reference,
+                                   const RigidTransform& reference_pose, const PoseGraphParams& params,
+                                   NetworkAdjustment& out) {
+  const auto edges = graphEdges(links, kept);
+  const auto support = triangleSupport(stations, edges, params.triangle_tolerance, params.drop_rotation);
+  const auto tree = spanningTree(stations, edges, treeOrder(links, kept, support));
+  out.poses = chainPoses(stations, edges, tree, reference, reference_pose);
+  const PoseGraphSolution s = solvePoseGraph(problemFor(links, kept, out.poses, reference, params));
+  ++out.solves;
+  for (std::size_t i = 0; i < stations; ++i)
+    if (out.poses[i]) out.poses[i] = s.poses[i];
+  out.sigma_position = s.sigma_position;
+  out.sigma_rotation_deg = s.sigma_rotation_deg;
+  out.converged = s.converged || s.residuals.empty();
+  out.covariance_ok = s.covariance_ok;
+  out.message = s.message;
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    const auto& l = links[k];
+    if (out.poses[l.a] && out.poses[l.b])
+      out.links[k].residual = edgeResidual({l.a, l.b, l.transform, l.sigma_translation,
+                                            l.sigma_rotation_deg * M_PI / 180.0},
+                                           *out.poses[l.a], *out.poses[l.b]);
+  }
+  return tree;
+}
+
+/// Position in kept of the link furthest beyond the drop thresholds; kept.size() if none is.
+std::size_t worstBeyondDrop(const std::vector<std::size_t>& kept, const NetworkAdjustment& out,
+                            const PoseGraphParams& params) {
+  std::size_t worst = kept.size();
+  double worst_ratio = 1.0;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    const double ratio = dropRatio(out.links[kept[i]].residual, params);
+    if (ratio > worst_ratio) worst_ratio = ratio, worst = i;
+  }
+  return worst;
+}
+
+/// Flags, loop closures and the chain comparison of the final kept links.
+void summarise(std::size_t stations, const std::vector<AdjustmentLink>& links, const std::vector<std::size_t>& kept,
+               const std::vector<std::size_t>& tree, std::size_t reference, const RigidTransform& reference_pose,
+               const PoseGraphParams& params, NetworkAdjustment& out) {
+  for (auto& o : out.links)
+    o.flagged = o.dropped || o.residual.translation > params.flag_translation ||
+                o.residual.rotation_deg > params.flag_rotation;
+  const auto edges = graphEdges(links, kept);
+  out.loops = loopClosures(stations, edges, tree);
+  for (auto& loop : out.loops) loop.edge = kept[loop.edge];
+  out.chain_poses = chainPoses(stations, edges, spanningTree(stations, edges, sigmaOrder(links, kept)), reference,
+                               reference_pose);
+}
+
 }  // namespace
 
 NetworkAdjustment adjustNetwork(std::size_t stations, const std::vector<AdjustmentLink>& links,
@@ -69,49 +124,17 @@ NetworkAdjustment adjustNetwork(std::size_t stations, const std::vector<Adjustme
   const auto all_support = triangleSupport(stations, graphEdges(links, kept), params.triangle_tolerance,
                                            params.drop_rotation);
   for (std::size_t k = 0; k < links.size(); ++k) out.links[k].triangles = all_support[k];
-  std::vector<std::size_t> tree;
   while (true) {
-    const auto edges = graphEdges(links, kept);
-    const auto support = triangleSupport(stations, edges, params.triangle_tolerance, params.drop_rotation);
-    tree = spanningTree(stations, edges, treeOrder(links, kept, support));
-    out.poses = chainPoses(stations, edges, tree, reference, reference_pose);
-    const PoseGraphSolution s = solvePoseGraph(problemFor(links, kept, out.poses, reference, params));
-    ++out.solves;
-    for (std::size_t i = 0; i < stations; ++i)
-      if (out.poses[i]) out.poses[i] = s.poses[i];
-    out.sigma_position = s.sigma_position;
-    out.sigma_rotation_deg = s.sigma_rotation_deg;
-    out.converged = s.converged || s.residuals.empty();
-    out.covariance_ok = s.covariance_ok;
-    out.message = s.message;
-    for (std::size_t k = 0; k < links.size(); ++k) {
-      const auto& l = links[k];
-      if (out.poses[l.a] && out.poses[l.b])
-        out.links[k].residual = edgeResidual({l.a, l.b, l.transform, l.sigma_translation,
-                                              l.sigma_rotation_deg * M_PI / 180.0},
-                                             *out.poses[l.a], *out.poses[l.b]);
+    const auto tree = solveOnce(stations, links, kept, reference, reference_pose, params, out);
+    const std::size_t worst = params.auto_drop ? worstBeyondDrop(kept, out, params) : kept.size();
+    if (worst == kept.size()) {
+      summarise(stations, links, kept, tree, reference, reference_pose, params, out);
+      return out;
     }
-    if (!params.auto_drop) break;
-    std::size_t worst = kept.size();
-    double worst_ratio = 1.0;
-    for (std::size_t i = 0; i < kept.size(); ++i) {
-      const double ratio = dropRatio(out.links[kept[i]].residual, params);
-      if (ratio > worst_ratio) worst_ratio = ratio, worst = i;
-    }
-    if (worst == kept.size()) break;
     out.links[kept[worst]].dropped = true;
     out.dropped_order.push_back(kept[worst]);
     kept.erase(kept.begin() + static_cast<long>(worst));
   }
-  for (auto& o : out.links)
-    o.flagged = o.dropped || o.residual.translation > params.flag_translation ||
-                o.residual.rotation_deg > params.flag_rotation;
-  const auto edges = graphEdges(links, kept);
-  out.loops = loopClosures(stations, edges, tree);
-  for (auto& loop : out.loops) loop.edge = kept[loop.edge];
-  out.chain_poses = chainPoses(stations, edges, spanningTree(stations, edges, sigmaOrder(links, kept)), reference,
-                               reference_pose);
-  return out;
 }
 
 }  // namespace plumb
