@@ -136,6 +136,17 @@ std::vector<LoopClosure> loopClosures(std::size_t nodes, const std::vector<Graph
   return loops;
 }
 
+std::vector<bool> bridgeEdges(std::size_t nodes, const std::vector<GraphEdge>& edges) {
+  std::vector<bool> bridge(edges.size(), false);
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    std::vector<GraphEdge> others = edges;
+    others.erase(others.begin() + static_cast<long>(k));
+    const auto component = connectedComponents(nodes, others);
+    bridge[k] = component[edges[k].a] != component[edges[k].b];
+  }
+  return bridge;
+}
+
 std::vector<TriangleSupport> triangleSupport(std::size_t nodes, const std::vector<GraphEdge>& edges,
                                              double tolerance_m, double tolerance_deg) {
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> index;

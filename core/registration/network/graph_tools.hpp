@@ -42,6 +42,10 @@ struct LoopClosure {
 std::vector<LoopClosure> loopClosures(std::size_t nodes, const std::vector<GraphEdge>& edges,
                                       const std::vector<std::size_t>& tree);
 
+/// For each edge, whether it is a bridge: the only connection between two parts of the graph.
+/// A bridge has no redundancy, so no adjustment can check it.
+std::vector<bool> bridgeEdges(std::size_t nodes, const std::vector<GraphEdge>& edges);
+
 /// For each edge, how many triangles (a, b, c) with both other edges present close within
 /// `tolerance_m` / `tolerance_deg` (closing) and how many do not (failing).
 struct TriangleSupport {

@@ -31,6 +31,7 @@ nlohmann::json linkJson(const NetworkResult& r, const std::vector<Station>& st, 
   const LinkOutcome* o = outcomeOf(r, k);
   j["flagged"] = o && o->flagged;
   j["dropped"] = o && o->dropped;
+  j["bridge"] = o && o->bridge;
   if (o) {
     j["residual_translation_m"] = o->residual.translation;
     j["residual_rotation_deg"] = o->residual.rotation_deg;
@@ -82,19 +83,19 @@ nlohmann::json loopsJson(const NetworkResult& r, const std::vector<Station>& st,
 nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& st) {
   MeanMax lt, lr, res;
   nlohmann::json loops = loopsJson(r, st, lt, lr);
-  std::size_t registered = 0, flagged = 0;
+  std::size_t registered = 0, flagged = 0, bridges = 0;
   for (const auto& l : r.links) registered += l.registered;
   std::vector<std::size_t> dropped;
   for (std::size_t i = 0; i < r.adjusted.size(); ++i) {
     const auto& o = r.adjustment.links[i];
     if (o.dropped) dropped.push_back(r.adjusted[i]);
-    else res.add(o.residual.translation), flagged += o.flagged;
+    else res.add(o.residual.translation), flagged += o.flagged, bridges += o.bridge;
   }
   nlohmann::json parts = nlohmann::json::array();
   for (const auto& p : r.parts) parts.push_back(names(st, p));
   return {{"stations", st.size()}, {"pairs_all", r.all_pairs}, {"pairs_registered", r.links.size()},
           {"links_registered", registered}, {"links_accepted", r.adjusted.size()}, {"links_dropped", dropped},
-          {"links_flagged", flagged}, {"rounds", r.rounds}, {"loop_closures", loops},
+          {"links_flagged", flagged}, {"links_unchecked", bridges}, {"rounds", r.rounds}, {"loop_closures", loops},
           {"loop_translation_mean_m", lt.mean()}, {"loop_translation_max_m", lt.max},
           {"loop_rotation_mean_deg", lr.mean()}, {"loop_rotation_max_deg", lr.max},
           {"residual_translation_mean_m", res.mean()}, {"residual_translation_max_m", res.max},
@@ -142,6 +143,7 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
         << " mm / " << std::setprecision(4) << l.value("residual_rotation_deg", 0.0) << " deg";
     if (l["dropped"].get<bool>()) o << "  DROPPED (disagrees with the network)";
     else if (l["flagged"].get<bool>()) o << "  FLAGGED (disagrees with the network)";
+    else if (l["bridge"].get<bool>()) o << "  (no loop checks it)";
     o << "\n";
   }
   for (const auto& s : j["stations"]) {

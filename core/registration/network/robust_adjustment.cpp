@@ -106,6 +106,8 @@ void summarise(std::size_t stations, const std::vector<AdjustmentLink>& links, c
     o.flagged = o.dropped || o.residual.translation > params.flag_translation ||
                 o.residual.rotation_deg > params.flag_rotation;
   const auto edges = graphEdges(links, kept);
+  const auto bridge = bridgeEdges(stations, edges);
+  for (std::size_t i = 0; i < kept.size(); ++i) out.links[kept[i]].bridge = bridge[i];
   out.loops = loopClosures(stations, edges, tree);
   for (auto& loop : out.loops) loop.edge = kept[loop.edge];
   out.chain_poses = chainPoses(stations, edges, spanningTree(stations, edges, sigmaOrder(links, kept)), reference,

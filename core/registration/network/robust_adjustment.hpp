@@ -28,6 +28,8 @@ struct LinkOutcome {
   bool flagged = false;       ///< residual beyond the flag thresholds
   bool dropped = false;       ///< removed by the robust loop
   TriangleSupport triangles;  ///< with all links, before any drop
+  /// A kept link that is the only connection between two parts: nothing checks it.
+  bool bridge = false;
 };
 
 struct NetworkAdjustment {

@@ -22,6 +22,16 @@ TEST(GraphTools, ComponentsSplitWhereNoLinkJoins) {
   EXPECT_NE(c[5], c[3]);
 }
 
+TEST(GraphTools, BridgesAreTheLinksNoLoopChecks) {
+  // A triangle 0-1-2 with a tail 2-3: only 2-3 is a bridge.
+  const std::vector<GraphEdge> e{{0, 1, {}}, {1, 2, {}}, {2, 0, {}}, {2, 3, {}}};
+  const auto b = bridgeEdges(4, e);
+  EXPECT_FALSE(b[0]);
+  EXPECT_FALSE(b[1]);
+  EXPECT_FALSE(b[2]);
+  EXPECT_TRUE(b[3]);
+}
+
 TEST(GraphTools, ExactLinksChainToTheTruthAndCloseEveryLoop) {
   const auto net = test::ringNetwork(10, 8.0, 3, 0.0, 0.0, 2, false);
   const auto e = edgesOf(net);
