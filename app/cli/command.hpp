@@ -16,5 +16,6 @@ void addConvertCommand(CLI::App& app, Action& action);
 void addFeaturesCommand(CLI::App& app, Action& action);
 void addSimulateCommand(CLI::App& app, Action& action);
 void addRegisterCommand(CLI::App& app, Action& action);
+void addNetworkCommand(CLI::App& app, Action& action);
 
 }  // namespace plumb::cli

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   plumb::cli::addFeaturesCommand(app, action);
   plumb::cli::addSimulateCommand(app, action);
   plumb::cli::addRegisterCommand(app, action);
+  plumb::cli::addNetworkCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

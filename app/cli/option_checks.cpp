@@ -73,4 +73,17 @@ std::vector<double> parseNumberList(const std::string& text, std::size_t count, 
   return v;
 }
 
+void applySettings(const std::vector<std::string>& settings,
+                   const std::function<void(const std::string&, const std::string&)>& set) {
+  for (const auto& s : settings) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos) throw InputError("--set expects GROUP.KEY=VALUE, got '" + s + "'");
+    try {
+      set(s.substr(0, eq), s.substr(eq + 1));
+    } catch (const InputError& e) {
+      throw InputError(std::string("--set ") + s + ": " + e.what());
+    }
+  }
+}
+
 }  // namespace plumb::cli

@@ -5,6 +5,7 @@
 // the accepted range the way the schema parameters do: "--seed: parameter 'seed' = -1 is
 // outside its valid range [0, 9e+15]". NaN, infinities and 1e308 never reach the core.
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,5 +31,9 @@ double parseOption(const ParamSpec& spec, const std::string& text);
 void checkOption(const ParamSpec& spec, double value);
 /// `count` comma-separated numbers for --option (not range-checked: see checkOption).
 std::vector<double> parseNumberList(const std::string& text, std::size_t count, const std::string& option);
+
+/// Each --set PATH=VALUE through `set(path, value)`; errors name the setting ("--set X=Y: ...").
+void applySettings(const std::vector<std::string>& settings,
+                   const std::function<void(const std::string&, const std::string&)>& set);
 
 }  // namespace plumb::cli

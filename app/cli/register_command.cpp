@@ -83,15 +83,7 @@ PipelineParams loadParams(const RegisterOptions& o) {
       throw FileError(o.params, std::string("invalid registration parameters: ") + e.what());
     }
   }
-  for (const auto& s : o.settings) {
-    const auto eq = s.find('=');
-    if (eq == std::string::npos) throw InputError("--set expects GROUP.KEY=VALUE, got '" + s + "'");
-    try {
-      setPipelineParam(p, s.substr(0, eq), s.substr(eq + 1));
-    } catch (const InputError& e) {
-      throw InputError(std::string("--set ") + s + ": " + e.what());
-    }
-  }
+  applySettings(o.settings, [&](const std::string& path, const std::string& value) { setPipelineParam(p, path, value); });
   if (!o.method.empty()) p.method = methodFromName(o.method);
   if (o.no_refine) p.refine = false;
   if (!o.seed.empty()) p.seed = static_cast<std::uint64_t>(parseOption(seedSpec(), o.seed));

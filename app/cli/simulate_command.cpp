@@ -1,6 +1,6 @@
 // plumb-cli simulate: scans a generated building (--preset NAME or --building SPEC.json) or an
 // existing model (--model FILE: IFC/OBJ/PLY... through readModel) with simulated static
-// stations (--tls x,y,z, repeatable, or --tls-rooms) and a mobile mapping pass (--mms, or
+// stations (--tls x,y,z, repeatable, --tls-rooms, --tls-doors: in every interior doorway) and a mobile mapping pass (--mms, or
 // --trajectory FILE with "t x y z" lines), moves each dataset by a random rigid transform
 // (--perturb yaw_max_deg,shift_max_m; the outdoor one only with --perturb-mms) and writes to
 // -o OUTDIR:
@@ -8,7 +8,11 @@
 //   model.ply, model.obj       the scanned model (OBJ: one group per element)
 //   ground_truth.json          planes, openings, sharp edges (generated buildings only)
 //   truth.json                 per dataset and per scan: the transform mapping the perturbed
-//                              data back to the model frame ({"matrix": ...} format)
+//                              data back to the model frame ({"matrix": ...} format); per
+//                              scan also "true_pose" (scan frame -> model frame)
+// --tls-walk orders the stations as a surveyor walks (each next the nearest not yet scanned).
+// --perturb-stations yaw_max_deg,shift_max_m moves every TLS station by its own random
+// perturbation (a network to register, issue 15), deterministic from --seed.
 //   trajectory.txt             the MMS trajectory ("t x y z" per line) in the outdoor dataset
 //                              frame (the model frame unless --perturb-mms), for
 //                              `register --target-trajectory` on files without sensor origins
@@ -21,6 +25,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "cli/command.hpp"
 #include "cli/option_checks.hpp"
@@ -28,8 +33,10 @@
 #include "common/error.hpp"
 #include "io/io.hpp"
 #include "simulation/building_generator.hpp"
+#include "simulation/doorway_stations.hpp"
 #include "simulation/ground_truth_json.hpp"
 #include "simulation/presets.hpp"
+#include "simulation/station_order.hpp"
 #include "simulation/survey.hpp"
 
 namespace plumb::cli {
@@ -58,9 +65,9 @@ void applyParamOptions(const ParamSchema<P>& schema, const std::string& prefix,
 }
 
 struct Args {
-  std::string preset, building, model, trajectory, perturb, outdir, format = "e57";
+  std::string preset, building, model, trajectory, perturb, perturb_stations, outdir, format = "e57";
   std::vector<std::string> tls;
-  bool tls_rooms = false, mms = false, perturb_mms = false, list = false, demo = false, opaque_glass = false;
+  bool tls_rooms = false, tls_doors = false, tls_walk = false, mms = false, perturb_mms = false, list = false, demo = false, opaque_glass = false;
   std::string seed = "1", noise_mm;  // parsed and range-checked in run()
   std::map<std::string, std::string> params;
 };
@@ -71,12 +78,12 @@ Eigen::Vector3d parseStation(const std::string& text) {
   for (double x : v) checkOption(coordinateSpec("tls"), x);
   return {v[0], v[1], v[2]};
 }
-void applyPerturb(const std::string& text, SurveyRequest& r) {
-  const auto v = parseNumberList(text, 2, "--perturb");
-  checkOption({"perturb", "yaw_max_deg", "deg", "", ParamKind::Real, 0, 180, {}, false}, v[0]);
-  checkOption({"perturb", "shift_max_m", "m", "", ParamKind::Real, 0, 1000, {}, false}, v[1]);
-  r.perturb_yaw_deg = v[0];
-  r.perturb_shift_m = v[1];
+/// yaw_max_deg,shift_max_m of --perturb or --perturb-stations, range-checked.
+std::pair<double, double> parsePerturb(const std::string& text, const std::string& option) {
+  const auto v = parseNumberList(text, 2, "--" + option);
+  checkOption({option, "yaw_max_deg", "deg", "", ParamKind::Real, 0, 180, {}, false}, v[0]);
+  checkOption({option, "shift_max_m", "m", "", ParamKind::Real, 0, 1000, {}, false}, v[1]);
+  return {v[0], v[1]};
 }
 /// --noise-mm applies to both scanners: it must suit both of their schema ranges.
 void applyNoise(const std::string& text, SurveyRequest& r) {
@@ -91,7 +98,10 @@ void applyNoise(const std::string& text, SurveyRequest& r) {
 void applyNumbers(const Args& a, SurveyRequest& r) {
   r.seed = static_cast<std::uint64_t>(parseOption(seedSpec(), a.seed));
   for (const auto& t : a.tls) r.tls_stations.push_back(parseStation(t));
-  if (!a.perturb.empty()) applyPerturb(a.perturb, r);
+  if (!a.perturb.empty()) std::tie(r.perturb_yaw_deg, r.perturb_shift_m) = parsePerturb(a.perturb, "perturb");
+  if (!a.perturb_stations.empty())
+    std::tie(r.perturb_station_yaw_deg, r.perturb_station_shift_m) =
+        parsePerturb(a.perturb_stations, "perturb-stations");
   applyNoise(a.noise_mm, r);
   applyParamOptions(TlsParams::schema(), "tls", a.params, r.tls);
   applyParamOptions(MmsParams::schema(), "mms", a.params, r.mms_params);
@@ -146,6 +156,11 @@ SurveyRequest surveyRequest(const Args& a, const Subject& s, std::uint64_t seed)
     if (!s.generated) throw InputError("simulate: --tls-rooms needs a generated building (no --model)");
     for (const auto& c : roomCentres(s.generated->spec, 0)) r.tls_stations.push_back(c);
   }
+  if (a.tls_doors) {
+    if (!s.generated) throw InputError("simulate: --tls-doors needs a generated building (no --model)");
+    for (const auto& c : doorwayStations(*s.generated, 0)) r.tls_stations.push_back(c);
+  }
+  if (a.tls_walk) r.tls_stations = walkOrder(r.tls_stations);
   r.mms = r.mms || a.mms || !a.trajectory.empty();
   if (!a.trajectory.empty()) r.trajectory = readTrajectory(a.trajectory);
   r.perturb_mms = r.perturb_mms || a.perturb_mms;
@@ -168,10 +183,13 @@ nlohmann::json writeDatasets(const std::filesystem::path& out, const SimulatedSu
     const auto transform = nlohmann::json::parse(transformToJson(d.truth));
     std::size_t points = 0;
     nlohmann::json names = nlohmann::json::array();
-    for (const auto& s : d.data.scans) {
+    for (std::size_t i = 0; i < d.data.scans.size(); ++i) {
+      const Scan& s = d.data.scans[i];
       names.push_back(s.name);
       points += s.cloud.size();
-      truth["scans"].push_back({{"file", file}, {"scan", s.name}, {"transform", transform}});
+      truth["scans"].push_back({{"file", file}, {"scan", s.name},
+                                {"transform", nlohmann::json::parse(transformToJson(d.scan_truths.at(i)))},
+                                {"true_pose", nlohmann::json::parse(transformToJson(d.true_poses.at(i)))}});
     }
     truth["datasets"].push_back({{"name", d.name}, {"file", file}, {"scans", names}, {"points", points},
                                  {"transform", transform}});
@@ -241,9 +259,13 @@ void addSimulateCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--demo", a->demo, "Demo survey: a station per ground-floor room, MMS loop, perturbed indoor");
   cmd->add_option("--tls", a->tls, "Static station x,y,z in the model frame (repeatable)");
   cmd->add_flag("--tls-rooms", a->tls_rooms, "A static station at each ground-floor room centre");
+  cmd->add_flag("--tls-doors", a->tls_doors, "A static station in each ground-floor interior doorway (after --tls-rooms)");
+  cmd->add_flag("--tls-walk", a->tls_walk, "Order the static stations as a walk (each next the nearest not yet scanned)");
   cmd->add_flag("--mms", a->mms, "Mobile mapping along an automatic street loop");
   cmd->add_option("--trajectory", a->trajectory, "Mobile mapping along a trajectory file (t x y z per line)");
   cmd->add_option("--perturb", a->perturb, "Random rigid perturbation yaw_max_deg,shift_max_m");
+  cmd->add_option("--perturb-stations", a->perturb_stations,
+                  "Move every TLS station by its own random perturbation yaw_max_deg,shift_max_m");
   cmd->add_flag("--perturb-mms", a->perturb_mms, "Perturb the outdoor dataset too (default: it is the reference)");
   cmd->add_flag("--opaque-glass", a->opaque_glass, "Glass stops the laser");
   cmd->add_option("--seed", a->seed, "Random seed, 0 .. 9e15 (same seed, same output)");

@@ -22,4 +22,17 @@ RigidTransform perturbDataset(Dataset& data, const RigidTransform& perturbation)
   return perturbation.inverse();
 }
 
+std::vector<RigidTransform> perturbScans(Dataset& data, double yaw_max_deg, double shift_max_m,
+                                         std::uint64_t seed) {
+  std::vector<RigidTransform> undo;
+  for (std::size_t i = 0; i < data.scans.size(); ++i) {
+    const RigidTransform p = randomPerturbation(yaw_max_deg, shift_max_m, sim::splitmix64(seed * 7919 + i));
+    Scan& scan = data.scans[i];
+    scan.pose = p * scan.pose;
+    scan.has_pose = true;
+    undo.push_back(p.inverse());
+  }
+  return undo;
+}
+
 }  // namespace plumb

@@ -1,6 +1,7 @@
 #pragma once
 // Random rigid perturbations of simulated scans and the ground truth that undoes them.
 #include <cstdint>
+#include <vector>
 
 #include "model/dataset.hpp"
 #include "model/rigid_transform.hpp"
@@ -16,5 +17,11 @@ RigidTransform randomPerturbation(double yaw_max_deg, double shift_max_m, std::u
 /// their scan frames). Returns the ground truth: the transform mapping the perturbed dataset
 /// frame back to the model/reference frame, i.e. perturbation.inverse().
 RigidTransform perturbDataset(Dataset& data, const RigidTransform& perturbation);
+
+/// Moves each scan of `data` by its own randomPerturbation(yaw_max_deg, shift_max_m, seed
+/// derived from `seed` and the scan index). Returns per scan the transform mapping the
+/// perturbed scan (dataset frame) back to where it was.
+std::vector<RigidTransform> perturbScans(Dataset& data, double yaw_max_deg, double shift_max_m,
+                                         std::uint64_t seed);
 
 }  // namespace plumb

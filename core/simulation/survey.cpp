@@ -27,7 +27,15 @@ SimulatedSurvey simulateSurvey(const BimModel& model, const std::vector<bool>& g
       indoor.data.scans.push_back(std::move(s));
       ++done;
     }
+    std::vector<RigidTransform> original;
+    for (const auto& s : indoor.data.scans) original.push_back(s.pose);
+    const bool per_station = r.perturb_station_yaw_deg > 0 || r.perturb_station_shift_m > 0;
+    indoor.scan_truths = per_station ? perturbScans(indoor.data, r.perturb_station_yaw_deg,
+                                                    r.perturb_station_shift_m, r.seed + 3000)
+                                     : std::vector<RigidTransform>(original.size());
     indoor.truth = perturbDataset(indoor.data, randomPerturbation(r.perturb_yaw_deg, r.perturb_shift_m, r.seed + 1000));
+    for (auto& t : indoor.scan_truths) t = t * indoor.truth;  // dataset frame -> model frame
+    indoor.true_poses = original;
     survey.datasets.push_back(std::move(indoor));
   }
   if (r.mms) {
@@ -47,6 +55,8 @@ SimulatedSurvey simulateSurvey(const BimModel& model, const std::vector<bool>& g
     outdoor.truth = r.perturb_mms
                         ? perturbDataset(outdoor.data, randomPerturbation(r.perturb_yaw_deg, r.perturb_shift_m, r.seed + 2000))
                         : RigidTransform();
+    outdoor.scan_truths = {outdoor.truth};
+    outdoor.true_poses = {outdoor.truth * outdoor.data.scans[0].pose};
     survey.datasets.push_back(std::move(outdoor));
     survey.mms_trajectory = traj;
   }

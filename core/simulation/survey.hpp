@@ -25,6 +25,11 @@ struct SurveyRequest {
   double perturb_yaw_deg = 0.0;  ///< max |yaw| of the random perturbation, deg
   double perturb_shift_m = 0.0;  ///< max |shift| per axis (z: a quarter), m
   bool perturb_mms = false;      ///< also move the outdoor dataset (default: it is the reference)
+  /// Each TLS station moved by its own random perturbation (issue 15, a network to register):
+  /// max |yaw|, deg, and max |shift| per axis (z: a quarter), m; 0 = off. Applied before the
+  /// dataset-wide perturbation above.
+  double perturb_station_yaw_deg = 0.0;
+  double perturb_station_shift_m = 0.0;
   bool glass_transparent = true;
   std::uint64_t seed = 1;
 };
@@ -33,6 +38,11 @@ struct SimulatedDataset {
   std::string name;       ///< "indoor" or "outdoor"
   Dataset data;           ///< perturbed: scans' poses include the perturbation
   RigidTransform truth;   ///< perturbed dataset frame -> model frame
+  /// Per scan: the transform mapping that perturbed scan (in the dataset frame) to the model
+  /// frame. Equal to `truth` for every scan unless stations were perturbed independently.
+  std::vector<RigidTransform> scan_truths;
+  /// Per scan: its true pose (scan frame -> model frame).
+  std::vector<RigidTransform> true_poses;
 };
 
 struct SimulatedSurvey {

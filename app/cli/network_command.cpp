@@ -1,0 +1,171 @@
+// plumb-cli network INPUTS... [--reference NAME] [-o REGISTERED.e57] [--report REPORT.json]
+//   [--transforms DIR] [--set GROUP.KEY=VALUE]... [--seed N] [--print-params]
+// Registers the stations of a campaign as one network (issue 15, docs/NETWORK.md): each data3D
+// of each E57 input, and each scan of any other point file, is a station with its own pose.
+// Candidate pairs are registered with the pipeline, then a robust pose-graph adjustment
+// (Ceres, Cauchy loss) places every station relative to the reference (default: the first
+// station), which keeps its pose in its file. Links that disagree with the network are flagged
+// and dropped.
+// Outputs: -o a multi-scan E57 of the stations with their adjusted poses (not merged);
+// --transforms DIR one <station>.json per station (its file frame -> the registered frame);
+// --report the JSON report (network_report.hpp), written also when the network fails.
+// Exit: 0 every station placed; 3 placed but a kept link disagrees (check visually); 2 a
+// station could not be placed: the parts are reported, -o and --transforms are not written
+// (existing files stay untouched); 1 bad input or parameters.
+// Parameters: --set pair-selection.KEY, link-weights.KEY, pose-graph.KEY, or any registration
+// parameter (GROUP.KEY / KEY as in plumb-cli register) for the links.
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <iostream>
+
+#include <unistd.h>
+
+#include "cli/command.hpp"
+#include "cli/option_checks.hpp"
+#include "cli/written_output.hpp"
+#include "common/atomic_file.hpp"
+#include "common/error.hpp"
+#include "io/io.hpp"
+#include "registration/network/network_report.hpp"
+
+namespace plumb::cli {
+namespace {
+
+struct NetworkOptions {
+  std::vector<std::string> inputs, settings;
+  std::string reference, output, report, transforms, seed;
+  bool print_params = false;
+};
+
+NetworkParams loadParams(const NetworkOptions& o) {
+  NetworkParams p;
+  applySettings(o.settings, [&](const std::string& path, const std::string& value) { setNetworkParam(p, path, value); });
+  if (!o.seed.empty()) p.link.seed = static_cast<std::uint64_t>(parseOption(seedSpec(), o.seed));
+  validateNetworkParams(p);
+  return p;
+}
+
+void checkOutputs(const NetworkOptions& o) {
+  if (!o.output.empty()) {
+    checkOutputPath(o.output, false);
+    if (formatFromExtension(o.output) != FileFormat::E57)
+      throw InputError("network: -o must be an .e57 file (one scan per station, with its pose): '" + o.output + "'");
+  }
+  if (!o.report.empty()) {
+    if (std::filesystem::path(o.report).extension() != ".json")
+      throw InputError("network: --report must be a .json file: '" + o.report + "'");
+    checkWritableTarget(o.report);
+  }
+  if (!o.transforms.empty() && std::filesystem::exists(o.transforms) && !std::filesystem::is_directory(o.transforms))
+    throw InputError("network: --transforms '" + o.transforms + "' exists and is not a directory");
+}
+
+/// Reads every input; the datasets are kept to write the registered E57.
+std::vector<Station> loadStations(const NetworkOptions& o, std::vector<Dataset>& datasets) {
+  std::vector<Station> stations;
+  for (const auto& path : o.inputs) {
+    LoadedData data = readFile(path);
+    if (!std::holds_alternative<Dataset>(data))
+      throw FileError(path, "is a model: BIM constraints are not part of `network` yet; give scan files");
+    datasets.push_back(std::move(std::get<Dataset>(data)));
+    for (auto& s : stationsOf(datasets.back(), path)) stations.push_back(std::move(s));
+  }
+  makeStationNamesUnique(stations);
+  return stations;
+}
+
+std::string fileNameOf(const std::string& station) {
+  std::string s = station;
+  for (char& c : s)
+    if (c == '/' || c == '\\' || c == ':' || c == '#') c = '_';
+  return s + ".json";
+}
+
+void writeResults(const NetworkOptions& o, const NetworkResult& r, const std::vector<Station>& stations,
+                  const std::vector<Dataset>& datasets) {
+  if (!o.output.empty()) {
+    Dataset out;
+    out.format = "e57";
+    std::size_t i = 0;
+    for (const auto& d : datasets)
+      for (const auto& scan : d.scans) {
+        Scan s = scan;
+        s.name = stations[i].name;
+        s.pose = *r.adjustment.poses[i++];
+        s.has_pose = true;
+        out.scans.push_back(std::move(s));
+      }
+    WriteReport written;
+    WriteOptions options;
+    options.report = &written;
+    writeDataset(o.output, out, options);
+    printWritten(o.output, out, written);
+  }
+  if (!o.transforms.empty()) {
+    std::filesystem::create_directories(o.transforms);
+    for (std::size_t i = 0; i < stations.size(); ++i)
+      writeTransformFile(std::filesystem::path(o.transforms) / fileNameOf(stations[i].name),
+                         *stationTransform(r, stations, i));
+    std::cout << "wrote " << stations.size() << " transforms to " << o.transforms << "\n";
+  }
+}
+
+int run(const NetworkOptions& o) {
+  const NetworkParams p = loadParams(o);
+  if (o.print_params) {
+    std::cout << networkParamsToJson(p).dump(2) << "\n";
+    return 0;
+  }
+  if (o.inputs.empty()) throw InputError("network: give the station files (or --print-params)");
+  checkOutputs(o);
+  std::vector<Dataset> datasets;
+  std::vector<Station> stations = loadStations(o, datasets);
+  const std::size_t reference = o.reference.empty() ? 0 : findStation(stations, o.reference);
+  if (stations.size() < 2) throw InputError("network: the inputs hold " + std::to_string(stations.size()) +
+                                            " station(s); a network needs at least two");
+  const bool tty = isatty(2);
+  Progress progress([tty](double f, std::string_view stage) {
+    if (tty) std::cerr << "\r[" << int(f * 100) << "%] " << stage << "\033[K" << std::flush;
+  });
+  for (std::size_t i = 0; i < stations.size(); ++i) {
+    progress.report(double(i) / double(stations.size()), "features of " + stations[i].name);
+    detectStationFeatures(stations[i], p.link);
+  }
+  const NetworkResult r = registerNetwork(stations, reference, p, &progress);
+  if (tty) std::cerr << "\r\033[K";
+  if (!o.report.empty())
+    writeFileAtomically(o.report, [&](std::ostream& out) { out << networkReportToJson(r, stations).dump(2) << "\n"; });
+  std::cout << networkReportToText(r, stations);
+  const int code = networkExitCode(r);
+  if (code == 2) {
+    std::cerr << "plumb-cli: network incomplete: " << r.unplaced.size() << " station(s) could not be placed:";
+    for (std::size_t i : r.unplaced) std::cerr << " " << stations[i].name;
+    std::cerr << " (no accepted link joins them to the reference " << stations[reference].name << ")"
+              << (o.output.empty() && o.transforms.empty() ? "" : "; no output written") << "\n";
+    return code;
+  }
+  if (code == 3) std::cerr << "plumb-cli: check visually (exit 3): a kept link disagrees with the network (see FLAGGED)\n";
+  writeResults(o, r, stations, datasets);
+  return code;
+}
+
+}  // namespace
+
+void addNetworkCommand(CLI::App& app, Action& action) {
+  auto o = std::make_shared<NetworkOptions>();
+  auto* cmd = app.add_subcommand("network", "Register the stations of a campaign as one network (pose graph)");
+  cmd->add_option("INPUTS", o->inputs, "Scan files; each data3D of an E57 is a station")->check(CLI::ExistingFile);
+  cmd->add_option("--reference", o->reference, "Station that keeps its pose (default: the first)");
+  cmd->add_option("-o,--output", o->output, "Write the registered stations as one multi-scan E57 with their poses");
+  cmd->add_option("--report", o->report, "Write the network report (JSON)");
+  cmd->add_option("--transforms", o->transforms, "Write each station's transform (<station>.json) to this directory");
+  cmd->add_option("--set", o->settings,
+                  "One parameter, GROUP.KEY=VALUE: pair-selection, link-weights, pose-graph, or a registration "
+                  "group for the links (planes.max-tilt=5); repeatable");
+  cmd->add_option("--seed", o->seed, "Random seed of every link registration, 0 .. 9e15 (default 1)");
+  cmd->add_flag("--print-params", o->print_params, "Write the parameters as JSON to stdout and exit");
+  cmd->callback([o, &action] { action = [o] { return run(*o); }; });
+}
+
+}  // namespace plumb::cli

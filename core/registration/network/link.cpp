@@ -1,0 +1,40 @@
+#include "registration/network/link.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace plumb {
+
+void weighLink(Link& link, const LinkWeightParams& p) {
+  const double held = std::clamp(link.weakest_resistance / p.full_resistance, 1e-3, 1.0);
+  link.sigma_translation = std::max(p.min_sigma, p.rms_factor * link.point_rms) / std::sqrt(held);
+  link.sigma_rotation_deg = link.sigma_translation / std::max(1.0, link.length_scale) * 180.0 / M_PI;
+}
+
+Link registerLink(const Station& a, const Station& b, const CandidatePair& pair, const NetworkParams& params) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Link link;
+  link.a = pair.a;
+  link.b = pair.b;
+  link.reason = pair.reason;
+  link.similarity = pair.similarity;
+  const PipelineResult r = registerData(b.input.side(), a.input.side(), params.link);
+  link.level = r.report.level;
+  link.verdict = r.report.verdict;
+  link.method = r.method_used;
+  link.warnings = r.report.warnings;
+  link.registered = r.success();
+  link.transform = r.transform();
+  link.overlap = r.report.overlap_ratio;
+  link.point_rms = r.report.point_rms;
+  link.weakest_resistance = *std::min_element(r.report.direction_resistance.begin(), r.report.direction_resistance.end());
+  link.length_scale = r.refinement ? r.refinement->length_scale : 0.0;
+  link.accepted = link.registered && (link.level == VerdictLevel::Usable ||
+                                      (link.level == VerdictLevel::CheckVisually && params.weights.accept_check_visually));
+  weighLink(link, params.weights);
+  link.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return link;
+}
+
+}  // namespace plumb

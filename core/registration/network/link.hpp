@@ -1,0 +1,41 @@
+#pragma once
+// A link of the network: one station pair registered with the pipeline (registerData, source =
+// station b, target = station a, each in its own frame), its quality figures and verdict, and
+// the standard deviations that weigh it in the adjustment (docs/NETWORK.md "Links").
+#include <string>
+#include <vector>
+
+#include "quality/verdict_level.hpp"
+#include "registration/network/network_params.hpp"
+#include "registration/network/pair_selection.hpp"
+#include "registration/network/station.hpp"
+
+namespace plumb {
+
+struct Link {
+  std::size_t a = 0, b = 0;
+  std::string reason;        ///< why the pair was tried (CandidatePair::reason)
+  double similarity = 0.0;   ///< layout similarity
+  RigidTransform transform;  ///< b's frame -> a's frame (meaningful when registered)
+  bool registered = false;   ///< the pipeline gave a transform (usable or check visually)
+  bool accepted = false;     ///< used in the adjustment (registered, and verdict accepted)
+  VerdictLevel level = VerdictLevel::Failed;
+  std::string verdict, method;
+  std::vector<std::string> warnings;
+  double overlap = 0.0;             ///< fraction of b's points matched
+  double point_rms = 0.0;           ///< m
+  double weakest_resistance = 0.0;  ///< slide resistance of the weakest direction
+  double length_scale = 0.0;        ///< m, RMS radius of the matched points
+  double sigma_translation = 0.0;   ///< m, weight in the adjustment
+  double sigma_rotation_deg = 0.0;  ///< deg
+  double seconds = 0.0;
+};
+
+/// Registers station b onto station a with params.link and weighs the result.
+Link registerLink(const Station& a, const Station& b, const CandidatePair& pair, const NetworkParams& params);
+
+/// sigma_t = max(min_sigma, rms_factor * point_rms) / sqrt(min(1, weakest / full_resistance));
+/// sigma_r = sigma_t / length_scale (radians; length_scale at least 1 m).
+void weighLink(Link& link, const LinkWeightParams& params);
+
+}  // namespace plumb

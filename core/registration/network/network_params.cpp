@@ -1,0 +1,97 @@
+#include "registration/network/network_params.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "common/error.hpp"
+#include "common/params_json.hpp"
+#include "registration/auto/pipeline_param_groups.hpp"
+
+namespace plumb {
+
+const ParamSchema<PairSelectionParams>& PairSelectionParams::schema() {
+  using P = PairSelectionParams;
+  static const auto s =
+      ParamSchema<P>("pair-selection")
+          .integer(&P::nearest_layouts, "nearest-layouts", "Most similar layouts", "", 0, 50,
+                   "Pairs each station with this many stations of the most similar plane layout")
+          .integer(&P::sequence_neighbours, "sequence-neighbours", "Sequence neighbours", "", 0, 50,
+                   "Pairs each station with the stations up to this many places after it in input order")
+          .integer(&P::expansion_per_station, "expansion", "Expansion pairs per station", "", 0, 100,
+                   "While the network is split, further pairs per station tried between its parts");
+  return s;
+}
+
+const ParamSchema<LinkWeightParams>& LinkWeightParams::schema() {
+  using P = LinkWeightParams;
+  static const auto s =
+      ParamSchema<P>("link-weights")
+          .real(&P::min_sigma, "min-sigma", "Min link sigma", "m", 1e-5, 1.0,
+                "Floor of a link's translation standard deviation")
+          .real(&P::rms_factor, "rms-factor", "RMS factor", "", 0.0, 10.0,
+                "A link's translation sigma is its point RMS times this", true)
+          .real(&P::full_resistance, "full-resistance", "Full resistance", "", 0.001, 1.0,
+                "Weakest-direction slide resistance at which a link counts as fully held", true)
+          .boolean(&P::accept_check_visually, "accept-check-visually", "Accept check-visually links",
+                   "Use links whose verdict is check-visually (failed links are never used)");
+  return s;
+}
+
+const ParamSchema<PoseGraphParams>& PoseGraphParams::schema() {
+  using P = PoseGraphParams;
+  static const auto s =
+      ParamSchema<P>("pose-graph")
+          .real(&P::robust_scale, "robust-scale", "Cauchy scale", "sigma", 0.1, 100.0,
+                "Cauchy loss scale on each link's normalised residual")
+          .real(&P::flag_translation, "flag-translation", "Flag translation", "m", 1e-4, 10.0,
+                "A link whose residual after adjustment exceeds this is flagged")
+          .real(&P::flag_rotation, "flag-rotation", "Flag rotation", "deg", 1e-4, 10.0,
+                "A link whose rotation residual after adjustment exceeds this is flagged")
+          .real(&P::drop_translation, "drop-translation", "Drop translation", "m", 1e-4, 100.0,
+                "A link whose residual exceeds this is dropped (auto-drop)")
+          .real(&P::drop_rotation, "drop-rotation", "Drop rotation", "deg", 1e-4, 180.0,
+                "A link whose rotation residual exceeds this is dropped (auto-drop)")
+          .boolean(&P::auto_drop, "auto-drop", "Drop wrong links",
+                   "Drop the worst link above the drop thresholds and solve again, until none is left")
+          .real(&P::triangle_tolerance, "triangle-tolerance", "Triangle tolerance", "m", 1e-4, 10.0,
+                "A triangle of links closes within this (orders the initial spanning tree)", true)
+          .integer(&P::max_iterations, "max-iterations", "Max iterations", "", 1, 10000,
+                   "Solver iterations", true);
+  return s;
+}
+
+nlohmann::json networkParamsToJson(const NetworkParams& p) {
+  nlohmann::json j;
+  forEachNetworkParamGroup(p, [&](const char* key, const char*, const auto& schema, const auto& group) {
+    j[key] = paramsToJson(schema, group);
+  });
+  j["link"] = pipelineParamsToJson(p.link);
+  return j;
+}
+
+void setNetworkParam(NetworkParams& p, const std::string& path, const std::string& text) {
+  const auto dot = path.find('.');
+  bool found_group = false, set = false;
+  if (dot != std::string::npos) {
+    const std::string group = path.substr(0, dot), key = path.substr(dot + 1);
+    forEachNetworkParamGroup(p, [&](const char* name, const char*, const auto& schema, auto& params) {
+      if (group != name) return;
+      found_group = true;
+      set = setParam(schema, params, key, text);
+    });
+    if (found_group && !set) throw InputError("group '" + group + "' has no parameter '" + key + "'");
+  }
+  if (!found_group) setPipelineParam(p.link, path, text);
+}
+
+void validateNetworkParams(const NetworkParams& p) {
+  forEachNetworkParamGroup(p, [&](const char* name, const char*, const auto& schema, const auto& params) {
+    try {
+      validateParams(schema, params);
+    } catch (const InputError& e) {
+      throw InputError(std::string("\"") + name + "\": " + e.what());
+    }
+  });
+  validatePipelineParams(p.link);
+}
+
+}  // namespace plumb

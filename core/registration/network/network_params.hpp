@@ -1,0 +1,93 @@
+#pragma once
+// The parameters of a network registration (docs/NETWORK.md), each group with its schema so the
+// CLI (--set GROUP.KEY=VALUE), JSON and UI come from one definition:
+//   "pair-selection"  which station pairs are registered (pair_selection.hpp)
+//   "link-weights"    how a link's quality figures become its weight in the adjustment
+//   "pose-graph"      the robust global adjustment (pose_graph.hpp, robust_adjustment.hpp)
+// and the registration pipeline's own groups for each link (pipeline_param_groups.hpp).
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+
+#include "common/params.hpp"
+#include "registration/auto/registration_pipeline.hpp"
+
+namespace plumb {
+
+struct PairSelectionParams {
+  /// Each station is paired with its this many most similar stations by layout descriptor
+  /// (layout_descriptor.hpp), [0, 50].
+  int nearest_layouts = 2;
+  /// Each station is paired with the stations up to this many places after it in the input
+  /// order (stations are usually shot in sequence), [0, 50].
+  int sequence_neighbours = 1;
+  /// While the accepted links leave the network split, at most this many further pairs per
+  /// station are tried between the parts, most similar first, [0, 100].
+  int expansion_per_station = 2;
+  static const ParamSchema<PairSelectionParams>& schema();
+};
+
+struct LinkWeightParams {
+  /// Floor of a link's translation standard deviation, m, [1e-5, 1]: no link is trusted to
+  /// better than this (systematic errors of the refinement).
+  double min_sigma = 0.0005;
+  /// A link's translation sigma is the point RMS times this factor (before the strength
+  /// factor), [0, 10].
+  double rms_factor = 0.2;
+  /// Slide resistance of the weakest direction (quality report) at and above which a link
+  /// counts as fully held; weaker links get sigma / sqrt(resistance / this), [0.001, 1].
+  double full_resistance = 0.2;
+  /// Accept links whose verdict is check-visually (weighted as above); failed links are never
+  /// accepted. Off: on l-shaped and office-floor every check-visually link measured was wrong
+  /// (4 of 4), and one that is a bridge places stations wrongly with nothing to check it.
+  bool accept_check_visually = false;
+  static const ParamSchema<LinkWeightParams>& schema();
+};
+
+struct PoseGraphParams {
+  /// Cauchy loss scale on each link's normalised residual (in standard deviations), [0.1, 100].
+  double robust_scale = 3.0;
+  /// A link is flagged (disagrees with the network) when its residual after the adjustment
+  /// exceeds this translation, m, [1e-4, 10] ...
+  double flag_translation = 0.005;
+  /// ... or this rotation, deg, [1e-4, 10].
+  double flag_rotation = 0.02;
+  /// Flagged links whose residual exceeds this translation, m, [1e-4, 100] ...
+  double drop_translation = 0.05;
+  /// ... or this rotation, deg, [1e-4, 180], are dropped automatically (the worst one at a
+  /// time, then the network is solved again).
+  double drop_rotation = 0.2;
+  bool auto_drop = true;
+  /// Two links of a triangle of stations agree with the third when the triangle closes within
+  /// this translation, m, [1e-4, 10] (and drop-rotation): used to order the links of the first
+  /// spanning tree, which initialises the adjustment.
+  double triangle_tolerance = 0.05;
+  /// Solver iterations, [1, 10000].
+  int max_iterations = 200;
+  static const ParamSchema<PoseGraphParams>& schema();
+};
+
+struct NetworkParams {
+  PairSelectionParams pairs;
+  LinkWeightParams weights;
+  PoseGraphParams graph;
+  PipelineParams link;  ///< the pipeline of each link
+};
+
+/// Calls f(key, label, schema, member) for the network's own groups.
+template <class P, class F>
+void forEachNetworkParamGroup(P& p, F&& f) {
+  f("pair-selection", "Candidate pairs", PairSelectionParams::schema(), p.pairs);
+  f("link-weights", "Link weights", LinkWeightParams::schema(), p.weights);
+  f("pose-graph", "Global adjustment", PoseGraphParams::schema(), p.graph);
+}
+
+/// {"pair-selection": {...}, "link-weights": {...}, "pose-graph": {...}, "link": {pipeline}}.
+nlohmann::json networkParamsToJson(const NetworkParams& p);
+/// Sets "GROUP.KEY" of a network group, or of the link pipeline (any other path, as
+/// setPipelineParam). Throws InputError naming the group or key.
+void setNetworkParam(NetworkParams& p, const std::string& path, const std::string& text);
+/// Range check of every group; throws InputError naming the group and parameter.
+void validateNetworkParams(const NetworkParams& p);
+
+}  // namespace plumb

@@ -1,0 +1,38 @@
+#pragma once
+// Registers the stations of a campaign as one network (docs/NETWORK.md): candidate pairs
+// (pair_selection.hpp), each registered with the pipeline (link.hpp), more pairs while the
+// accepted links leave the network split, then the robust adjustment (robust_adjustment.hpp)
+// with the reference station fixed at its pose in its file. Stations the links cannot join to
+// the reference are reported as not placed, never forced.
+#include <string>
+#include <vector>
+
+#include "common/progress.hpp"
+#include "registration/network/link.hpp"
+#include "registration/network/robust_adjustment.hpp"
+#include "registration/network/station.hpp"
+
+namespace plumb {
+
+struct NetworkResult {
+  std::vector<Link> links;             ///< every pair registered, in the order tried
+  std::vector<std::size_t> adjusted;   ///< indices into links of the accepted ones
+  NetworkAdjustment adjustment;        ///< adjustment.links[k] is links[adjusted[k]]
+  std::size_t reference = 0;
+  std::size_t all_pairs = 0;           ///< N (N - 1) / 2
+  int rounds = 0;                      ///< pair-selection rounds (1 + expansions)
+  double seconds_features = 0.0, seconds_links = 0.0, seconds_adjustment = 0.0;
+  std::vector<std::size_t> unplaced;   ///< stations not joined to the reference
+  std::vector<std::vector<std::size_t>> parts;  ///< the accepted links' connected parts
+  bool complete() const { return unplaced.empty(); }
+};
+
+/// Index of the station named `name`; throws InputError listing the names when none is.
+std::size_t findStation(const std::vector<Station>& stations, const std::string& name);
+
+/// `stations` carry their features (detectStationFeatures). Throws InputError for invalid
+/// parameters or fewer than two stations.
+NetworkResult registerNetwork(const std::vector<Station>& stations, std::size_t reference,
+                              const NetworkParams& params, Progress* progress = nullptr);
+
+}  // namespace plumb

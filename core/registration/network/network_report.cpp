@@ -1,0 +1,168 @@
+#include "registration/network/network_report.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <iomanip>
+#include <sstream>
+
+namespace plumb {
+namespace {
+
+nlohmann::json matrixJson(const RigidTransform& t) { return nlohmann::json::parse(transformToJson(t)); }
+nlohmann::json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+/// The adjustment's outcome of links[k], if it was adjusted.
+const LinkOutcome* outcomeOf(const NetworkResult& r, std::size_t k) {
+  for (std::size_t i = 0; i < r.adjusted.size(); ++i)
+    if (r.adjusted[i] == k) return &r.adjustment.links[i];
+  return nullptr;
+}
+
+nlohmann::json linkJson(const NetworkResult& r, const std::vector<Station>& st, std::size_t k) {
+  const Link& l = r.links[k];
+  nlohmann::json j = {{"a", st[l.a].name}, {"b", st[l.b].name}, {"reason", l.reason},
+                      {"similarity", l.similarity}, {"method", l.method},
+                      {"verdict_level", verdictLevelName(l.level)}, {"verdict", l.verdict},
+                      {"warnings", l.warnings}, {"overlap", l.overlap}, {"point_rms_m", l.point_rms},
+                      {"weakest_resistance", l.weakest_resistance}, {"sigma_translation_m", l.sigma_translation},
+                      {"sigma_rotation_deg", l.sigma_rotation_deg}, {"accepted", l.accepted},
+                      {"seconds", l.seconds}};
+  if (l.registered) j["transform"] = matrixJson(l.transform);
+  const LinkOutcome* o = outcomeOf(r, k);
+  j["flagged"] = o && o->flagged;
+  j["dropped"] = o && o->dropped;
+  j["bridge"] = o && o->bridge;
+  if (o) {
+    j["residual_translation_m"] = o->residual.translation;
+    j["residual_rotation_deg"] = o->residual.rotation_deg;
+    j["residual_sigma"] = o->residual.normalised;
+    j["triangles_closing"] = o->triangles.closing;
+    j["triangles_failing"] = o->triangles.failing;
+  }
+  return j;
+}
+
+nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& st, std::size_t i) {
+  nlohmann::json links = nlohmann::json::array();
+  for (std::size_t k = 0; k < r.links.size(); ++k)
+    if (r.links[k].a == i || r.links[k].b == i) links.push_back(k);
+  nlohmann::json j = {{"name", st[i].name}, {"file", st[i].file}, {"scan", st[i].scan_index},
+                      {"placed", r.adjustment.poses[i].has_value()}, {"links", links}};
+  if (const auto& p = r.adjustment.poses[i]) {
+    j["pose"] = matrixJson(*p);
+    j["transform"] = matrixJson(*stationTransform(r, st, i));
+    j["sigma_position_m"] = vec(r.adjustment.sigma_position[i]);
+    j["sigma_rotation_deg"] = vec(r.adjustment.sigma_rotation_deg[i]);
+  }
+  return j;
+}
+
+struct MeanMax {
+  double sum = 0, max = 0;
+  int n = 0;
+  void add(double v) { sum += v, max = std::max(max, v), ++n; }
+  double mean() const { return n ? sum / n : 0.0; }
+};
+
+nlohmann::json names(const std::vector<Station>& st, const std::vector<std::size_t>& idx) {
+  nlohmann::json j = nlohmann::json::array();
+  for (std::size_t i : idx) j.push_back(st[i].name);
+  return j;
+}
+
+nlohmann::json loopsJson(const NetworkResult& r, const std::vector<Station>& st, MeanMax& t, MeanMax& rot) {
+  nlohmann::json loops = nlohmann::json::array();
+  for (const auto& loop : r.adjustment.loops) {
+    t.add(loop.translation), rot.add(loop.rotation_deg);
+    loops.push_back({{"link", r.adjusted[loop.edge]}, {"stations", names(st, loop.nodes)},
+                     {"translation_m", loop.translation}, {"rotation_deg", loop.rotation_deg}});
+  }
+  return loops;
+}
+
+nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& st) {
+  MeanMax lt, lr, res;
+  nlohmann::json loops = loopsJson(r, st, lt, lr);
+  std::size_t registered = 0, flagged = 0, bridges = 0;
+  for (const auto& l : r.links) registered += l.registered;
+  std::vector<std::size_t> dropped;
+  for (std::size_t i = 0; i < r.adjusted.size(); ++i) {
+    const auto& o = r.adjustment.links[i];
+    if (o.dropped) dropped.push_back(r.adjusted[i]);
+    else res.add(o.residual.translation), flagged += o.flagged, bridges += o.bridge;
+  }
+  nlohmann::json parts = nlohmann::json::array();
+  for (const auto& p : r.parts) parts.push_back(names(st, p));
+  return {{"stations", st.size()}, {"pairs_all", r.all_pairs}, {"pairs_registered", r.links.size()},
+          {"links_registered", registered}, {"links_accepted", r.adjusted.size()}, {"links_dropped", dropped},
+          {"links_flagged", flagged}, {"links_unchecked", bridges}, {"rounds", r.rounds}, {"loop_closures", loops},
+          {"loop_translation_mean_m", lt.mean()}, {"loop_translation_max_m", lt.max},
+          {"loop_rotation_mean_deg", lr.mean()}, {"loop_rotation_max_deg", lr.max},
+          {"residual_translation_mean_m", res.mean()}, {"residual_translation_max_m", res.max},
+          {"unplaced", names(st, r.unplaced)}, {"parts", parts}, {"solves", r.adjustment.solves},
+          {"converged", r.adjustment.converged}, {"covariance", r.adjustment.covariance_ok},
+          {"solver", r.adjustment.message}, {"seconds_features", r.seconds_features},
+          {"seconds_links", r.seconds_links}, {"seconds_adjustment", r.seconds_adjustment}};
+}
+
+}  // namespace
+
+int networkExitCode(const NetworkResult& r) {
+  if (!r.complete()) return 2;
+  for (const auto& o : r.adjustment.links)
+    if (o.flagged && !o.dropped) return 3;
+  return 0;
+}
+
+std::optional<RigidTransform> stationTransform(const NetworkResult& r, const std::vector<Station>& st, std::size_t i) {
+  if (!r.adjustment.poses[i]) return std::nullopt;
+  return *r.adjustment.poses[i] * st[i].file_pose.inverse();
+}
+
+nlohmann::json networkReportToJson(const NetworkResult& r, const std::vector<Station>& st) {
+  nlohmann::json j = {{"format", "plumb-network-report"}, {"version", 1}, {"complete", r.complete()},
+                      {"exit_code", networkExitCode(r)}, {"reference", st[r.reference].name}};
+  j["stations"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < st.size(); ++i) j["stations"].push_back(stationJson(r, st, i));
+  j["links"] = nlohmann::json::array();
+  for (std::size_t k = 0; k < r.links.size(); ++k) j["links"].push_back(linkJson(r, st, k));
+  j["network"] = networkJson(r, st);
+  return j;
+}
+
+std::string networkReportToText(const NetworkResult& r, const std::vector<Station>& st) {
+  std::ostringstream o;
+  o << std::fixed;
+  const nlohmann::json j = networkReportToJson(r, st);
+  for (const auto& l : j["links"]) {
+    o << "link " << l["a"].get<std::string>() << " - " << l["b"].get<std::string>() << ": "
+      << l["verdict_level"].get<std::string>() << " (" << l["method"].get<std::string>() << ")";
+    if (l["accepted"].get<bool>())
+      o << std::setprecision(1) << ", overlap " << 100 * l["overlap"].get<double>() << "%, RMS "
+        << 1000 * l["point_rms_m"].get<double>() << " mm, residual " << 1000 * l.value("residual_translation_m", 0.0)
+        << " mm / " << std::setprecision(4) << l.value("residual_rotation_deg", 0.0) << " deg";
+    if (l["dropped"].get<bool>()) o << "  DROPPED (disagrees with the network)";
+    else if (l["flagged"].get<bool>()) o << "  FLAGGED (disagrees with the network)";
+    else if (l["bridge"].get<bool>()) o << "  (no loop checks it)";
+    o << "\n";
+  }
+  for (const auto& s : j["stations"]) {
+    o << "station " << s["name"].get<std::string>() << ": ";
+    if (!s["placed"].get<bool>()) {
+      o << "NOT PLACED (no accepted link joins it to the reference)\n";
+      continue;
+    }
+    const auto& sp = s["sigma_position_m"];
+    o << std::setprecision(2) << "sigma " << 1000 * sp[0].get<double>() << ", " << 1000 * sp[1].get<double>() << ", "
+      << 1000 * sp[2].get<double>() << " mm\n";
+  }
+  const auto& n = j["network"];
+  o << std::setprecision(2) << "network: " << st.size() << " stations, reference " << st[r.reference].name << ", "
+    << n["pairs_registered"] << " of " << n["pairs_all"] << " pairs registered, " << n["links_accepted"]
+    << " links accepted, " << n["links_dropped"].size() << " dropped; " << n["loop_closures"].size()
+    << " loops, closure mean " << 1000 * n["loop_translation_mean_m"].get<double>() << " mm, max "
+    << 1000 * n["loop_translation_max_m"].get<double>() << " mm\n";
+  return o.str();
+}
+
+}  // namespace plumb

@@ -1,0 +1,42 @@
+#pragma once
+// The JSON report of a network registration (docs/NETWORK.md "Report"):
+// {"format": "plumb-network-report", "version": 1, "complete": bool, "exit_code": n,
+//  "reference": name,
+//  "stations": [{"name", "file", "scan", "placed", "pose": {"matrix"}, "transform": {"matrix"}
+//                (file frame -> registered frame), "sigma_position_m": [x,y,z],
+//                "sigma_rotation_deg": [x,y,z], "links": [link indices]}],
+//  "links": [{"a", "b", "reason", "similarity", "method", "verdict_level", "verdict",
+//             "warnings", "overlap", "point_rms_m", "weakest_resistance", "sigma_translation_m",
+//             "sigma_rotation_deg", "accepted", "residual_translation_m", "residual_rotation_deg",
+//             "residual_sigma", "flagged", "dropped", "bridge" (a kept link no loop checks),
+//             "triangles_closing", "triangles_failing",
+//             "seconds", "transform" (b's frame -> a's frame)}],
+//  "network": {"stations", "pairs_all", "pairs_registered", "links_accepted", "links_dropped",
+//              "links_flagged", "links_unchecked" (bridges), "rounds", "loop_closures": [{"link", "stations",
+//              "translation_m", "rotation_deg"}], "loop_translation_mean_m",
+//              "loop_translation_max_m", "loop_rotation_mean_deg", "loop_rotation_max_deg",
+//              "residual_translation_mean_m", "residual_translation_max_m", "unplaced": [names],
+//              "parts": [[names]], "solves", "converged", "covariance", "solver",
+//              "seconds_features", "seconds_links", "seconds_adjustment"}}
+#include <nlohmann/json_fwd.hpp>
+
+#include <vector>
+
+#include "registration/network/network_registration.hpp"
+
+namespace plumb {
+
+/// 0: every station placed and no kept link flagged; 3: placed, a kept link flagged (check
+/// visually); 2: a station could not be placed.
+int networkExitCode(const NetworkResult& result);
+
+/// Station i's transform: file frame -> registered frame (pose x file_pose^-1), if placed.
+std::optional<RigidTransform> stationTransform(const NetworkResult& result, const std::vector<Station>& stations,
+                                               std::size_t i);
+
+nlohmann::json networkReportToJson(const NetworkResult& result, const std::vector<Station>& stations);
+
+/// One line per station and per link, then the network figures: what plumb-cli prints.
+std::string networkReportToText(const NetworkResult& result, const std::vector<Station>& stations);
+
+}  // namespace plumb

@@ -1,0 +1,49 @@
+#include "registration/network/station.hpp"
+
+#include <chrono>
+#include <map>
+
+#include "common/error.hpp"
+
+namespace plumb {
+
+std::vector<Station> stationsOf(const Dataset& data, const std::string& file) {
+  std::vector<Station> out;
+  for (std::size_t i = 0; i < data.scans.size(); ++i) {
+    const Scan& scan = data.scans[i];
+    Station s;
+    s.name = scan.name.empty() ? "scan-" + std::to_string(i) : scan.name;
+    s.file = file;
+    s.scan_index = i;
+    s.file_pose = scan.pose;
+    s.has_pose = scan.has_pose;
+    Dataset one;
+    one.source = data.source;
+    one.format = data.format;
+    one.scans.push_back(scan);
+    one.scans[0].pose = RigidTransform();  // the station's own frame
+    if (one.pointCount() == 0) throw FileError(file, "scan " + std::to_string(i) + " ('" + s.name + "') holds no points");
+    s.input = makeRegistrationInput(one, RigidTransform());
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+void makeStationNamesUnique(std::vector<Station>& stations) {
+  std::map<std::string, int> count;
+  for (const auto& s : stations) ++count[s.name];
+  for (auto& s : stations)
+    if (count[s.name] > 1) s.name = std::filesystem::path(s.file).stem().string() + "/" + s.name;
+  std::map<std::string, int> seen;
+  for (auto& s : stations)
+    if (const int k = seen[s.name]++; k > 0) s.name += "#" + std::to_string(k + 1);
+}
+
+void detectStationFeatures(Station& station, const PipelineParams& params) {
+  const auto t0 = std::chrono::steady_clock::now();
+  station.input.features = extractFeatures(station.input.side(), params, false);
+  station.layout = layoutDescriptor(*station.input.features);
+  station.seconds_features = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace plumb

@@ -1,0 +1,38 @@
+#pragma once
+// A station of a network: one scan (an E57 data3D, or a single-scan file) in its own frame,
+// with its features and layout descriptor, and where it came from. Its pose in the file is
+// kept only to write the result (the network finds every pose from the links).
+#include <string>
+#include <vector>
+
+#include "model/dataset.hpp"
+#include "registration/auto/registration_input.hpp"
+#include "registration/network/layout_descriptor.hpp"
+
+namespace plumb {
+
+struct Station {
+  std::string name;             ///< unique in the network
+  std::string file;             ///< the input it came from
+  std::size_t scan_index = 0;   ///< data3D index in that file
+  RigidTransform file_pose;     ///< station frame -> file frame, as read
+  bool has_pose = false;        ///< the file gave a pose (a static scanner at its origin)
+  RegistrationInput input;      ///< points (station frame) and, once detected, features
+  LayoutDescriptor layout;
+  double seconds_features = 0.0;
+};
+
+/// One station per scan of `data` (read from `file`): points in the scan's own frame; a scan
+/// with a pose is a static station whose scanner sits at its frame's origin. Throws FileError
+/// naming the file and scan when a scan holds no points.
+std::vector<Station> stationsOf(const Dataset& data, const std::string& file);
+
+/// Station names made unique: a name used twice gets its file's stem as a prefix
+/// ("indoor/tls-0"), then a number if still not unique.
+void makeStationNamesUnique(std::vector<Station>& stations);
+
+/// Detects the station's planes and openings (extractFeatures, as the pipeline does) and its
+/// layout descriptor.
+void detectStationFeatures(Station& station, const PipelineParams& params);
+
+}  // namespace plumb
