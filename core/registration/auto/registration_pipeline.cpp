@@ -174,12 +174,24 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
 
 namespace {
 
-const PointCloud* refinementTarget(const RegistrationSide& target, const PipelineParams& p,
-                                   PointCloud& storage) {
-  if (!target.isModel()) return target.cloud;
-  if (target.model_samples) return target.model_samples;
+/// The refinement target, prepared once for every candidate: a scan's points; a model's
+/// triangles (point-to-plane with refinement.model-surface = triangles), else points sampled
+/// on the model (given with the side, or sampled here into `storage`).
+std::unique_ptr<RefineTarget> refinementTarget(const RegistrationSide& target, const PipelineParams& p,
+                                               const RefineParams& rp, PointCloud& storage,
+                                               std::vector<std::string>& log) {
+  if (!target.isModel()) return target.cloud ? std::make_unique<RefineTarget>(*target.cloud, rp) : nullptr;
+  if (rp.model_surface == RefineParams::ModelSurface::Triangles &&
+      rp.method == RefineParams::Method::PointToPlane) {
+    log.push_back("refinement: against the model's triangles (closest point on the triangles the "
+                  "source's stations see)");
+    return std::make_unique<RefineTarget>(target.model->mesh, rp);
+  }
+  log.push_back("refinement: against points sampled on the model every " +
+                std::to_string(p.model_sample_spacing) + " m");
+  if (target.model_samples) return std::make_unique<RefineTarget>(*target.model_samples, rp);
   storage = sampleMeshSurface(target.model->mesh, p.model_sample_spacing, p.seed);
-  return &storage;
+  return std::make_unique<RefineTarget>(storage, rp);
 }
 
 /// Indoor/outdoor (openings): the indoor wall faces lie one wall thickness behind the façade
@@ -274,14 +286,15 @@ std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const Refi
 /// refined fit wins, otherwise it stays Ambiguous.
 void refineCandidates(const RegistrationSide& source, const RegistrationSide& target,
                       const PipelineParams& p, PipelineResult& out, Progress* progress) {
-  PointCloud sampled;
-  const PointCloud* tc = refinementTarget(target, p, sampled);
   const PointCloud* sc = source.cloud;
-  if (!sc || !tc) return;
+  if (!sc) return;
   auto rp = p.refinement;
   limitToWallThickness(out.global, rp, out.log);
   GlobalRegistrationResult& g = out.global;
-  const RefineTarget prepared(*tc, rp);  // once for every candidate
+  PointCloud sampled;
+  const std::unique_ptr<RefineTarget> target_ready = refinementTarget(target, p, rp, sampled, out.log);
+  if (!target_ready) return;
+  const RefineTarget& prepared = *target_ready;  // once for every candidate
   const bool compare = g.runner_up && p.candidates.refine_runner_up;
   std::vector<RefinedHypothesis> h =
       refineHypotheses(*sc, prepared, rp, out, target.isModel(), p, compare, progress);
