@@ -320,6 +320,13 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
     g.message += "; resolved on refined points: " + sel.message;
   }
   out.refinement = std::move(h[sel.chosen].refined);
+  if (out.refinement->surface == "front-facing triangles")
+    out.log.push_back("refinement: the source has no sensor origins, so the model triangles it "
+                      "saw are unknown: matched against every triangle whose front faces the "
+                      "point (" + std::to_string(out.refinement->target_points) + " triangles)");
+  else if (out.refinement->surface == "visible triangles")
+    out.log.push_back("refinement: matched against the " + std::to_string(out.refinement->target_points) +
+                      " model triangles the source's stations see");
 }
 
 /// The global hypotheses as candidates when they were not refined (refinement off, or the

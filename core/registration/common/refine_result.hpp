@@ -33,6 +33,7 @@ struct RefineResult {
   /// triangles" (a model, visibility from the source's sensor origins) or "front-facing
   /// triangles" (a model, the source has no sensor origins).
   std::string surface = "points";
+  double visibility_seconds = 0.0;  ///< spent finding the visible triangles (a model target)
   /// Normal matrix sum J^T J of the final point-to-plane problem, J = [(p x n)/L, n], rotation
   /// scaled by the length L (RMS radius of the inliers about their centroid) so eigenvalues are
   /// comparable, and expressed about that centroid.

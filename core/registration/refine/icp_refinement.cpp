@@ -141,16 +141,23 @@ Cloud::Ptr usedSourcePoints(const PointCloud& source, const RigidTransform& init
 /// stations under that pose (found again at each call), or the front-facing triangles.
 class ModelSurfaceAt {
  public:
-  ModelSurfaceAt(const refine_detail::TriangleTarget& target, const refine_detail::SourceRays& rays)
-      : target_(target), rays_(rays) {
+  ModelSurfaceAt(const refine_detail::TriangleTarget& target, const refine_detail::SourceRays& rays,
+                 bool per_stage, int stages)
+      : target_(target), rays_(rays), per_stage_(per_stage), stages_(stages) {
     if (rays_.origins.empty()) current_ = target_.frontFacingSurface();
   }
   const refine_detail::TargetSurface& operator()(const LocalPose& pose) {
-    if (rays_.origins.empty()) return *current_;
+    if (rays_.origins.empty() || (visible_.rays > 0 && !per_stage_)) return *current_;
+    if (calls_++ == 0 && stages_ > 1) {  // the coarsest stage: every triangle
+      current_ = target_.everySurface();
+      return *current_;
+    }
     visible_ = refine_detail::visibleTriangles(target_.caster(), rays_, pose.R, pose.t);
     current_ = target_.visibleSurface(visible_);
+    seconds_ += visible_.seconds;
     return *current_;
   }
+  double seconds() const { return seconds_; }
   std::size_t triangles() const {
     return rays_.origins.empty() ? target_.triangleCount() : visible_.triangles.size();
   }
@@ -159,8 +166,12 @@ class ModelSurfaceAt {
  private:
   const refine_detail::TriangleTarget& target_;
   const refine_detail::SourceRays& rays_;
+  bool per_stage_;
+  int stages_;
+  int calls_ = 0;
   refine_detail::VisibleSet visible_;
   std::unique_ptr<refine_detail::TargetSurface> current_;
+  double seconds_ = 0.0;
 };
 
 /// res.transform from the local pose: x -> origin + pose(initial(x) - origin); a refinement
@@ -187,7 +198,7 @@ RefineResult refineOnTriangles(const PointCloud& source, const RefineTarget::Dat
   const Cloud::Ptr src = usedSourcePoints(source, initial, d.origin, p, &rays);
   res.source_points = src->size();
   if (src->size() < 10) throw InputError("refinement: too few points");
-  ModelSurfaceAt surface(*d.triangles, rays);
+  ModelSurfaceAt surface(*d.triangles, rays, p.visibility_per_stage, p.stages);
   const LoopOutcome loop = refine_detail::runPointToPlane(
       *src, [&surface](const LocalPose& pose) -> const refine_detail::TargetSurface& { return surface(pose); },
       p, progress);
@@ -196,6 +207,7 @@ RefineResult refineOnTriangles(const PointCloud& source, const RefineTarget::Dat
   refine_detail::measureFit(*src, surface(loop.pose), loop.pose, d.origin, p, res);
   res.target_points = surface.triangles();
   res.surface = surface.name();
+  res.visibility_seconds = surface.seconds();
   finish(res, loop.pose, d.origin, initial, p);
   return res;
 }

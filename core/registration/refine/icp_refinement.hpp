@@ -58,6 +58,9 @@ struct RefineParams {
   /// every direction unconstrained): the pipeline turns it off for the runner-up candidates
   /// it only compares.
   bool slide_test = true;
+  /// Model triangles: find the visible triangles again at each stage (true) or once, under the
+  /// initial placement (false). Not a user setting: bench_surface_refine compares the two.
+  bool visibility_per_stage = true;
   static const ParamSchema<RefineParams>& schema();
 };
 

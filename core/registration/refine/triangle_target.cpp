@@ -90,6 +90,10 @@ std::unique_ptr<TargetSurface> TriangleTarget::visibleSurface(const VisibleSet& 
   return std::make_unique<TriangleSurface>(*caster_, visible.triangles, false);
 }
 
+std::unique_ptr<TargetSurface> TriangleTarget::everySurface() const {
+  return std::make_unique<TriangleSurface>(*caster_, MeshClosestPoints::all(triangleCount()), false);
+}
+
 std::unique_ptr<TargetSurface> TriangleTarget::frontFacingSurface() const {
   return std::make_unique<TriangleSurface>(*caster_, MeshClosestPoints::all(triangleCount()), true);
 }

@@ -63,6 +63,9 @@ class TriangleTarget {
   std::unique_ptr<TargetSurface> visibleSurface(const VisibleSet& visible) const;
   /// Every triangle, a correspondence kept only when the point is in front of its triangle.
   std::unique_ptr<TargetSurface> frontFacingSurface() const;
+  /// Every triangle, either side (the first, coarsest stage: the start may be far enough off
+  /// for the visibility under it to be wrong).
+  std::unique_ptr<TargetSurface> everySurface() const;
   const RayCaster& caster() const { return *caster_; }
   std::size_t triangleCount() const;
 

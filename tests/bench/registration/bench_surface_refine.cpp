@@ -3,12 +3,15 @@
 // "house" preset, each moved by random levelled poses (acceptance_scenarios.hpp), refined
 // against the model with refinement.model-surface = samples and = triangles:
 //   truth     the refinement started at the truth (it must stay there),
-//   offset    started 0.3 deg / 3 cm off the truth (random axis and direction),
+//   offset    started 0.3 deg / 3 cm and 1 deg / 10 cm off the truth (random axis and
+//             direction); triangles also with the visible set found once (under the start)
+//             instead of at each stage,
 //   pipeline  the whole registration (auto), unless --no-pipeline.
 // Prints per station and surface the median and max rotation error (deg), translation error
 // at the source centroid (mm) and the median time per refinement / registration (s).
 //
-//   bench_surface_refine [--poses N] [--models duplex,house] [--no-pipeline] [--huber M]
+//   bench_surface_refine [--poses N] [--models duplex,house] [--stations 0,2] [--no-pipeline]
+//                        [--huber M] [--detail] [--surface samples|triangles]
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -115,8 +118,18 @@ const Surface kSurfaces[] = {{"samples", RefineParams::ModelSurface::Samples},
                              {"triangles", RefineParams::ModelSurface::Triangles}};
 
 struct Totals {
-  Errors truth[2], off[2], pipe[2];
+  Errors truth[2], off[2], far[2], far_once, pipe[2];
+  std::vector<double> visibility_seconds;
 };
+
+/// `gt` moved by `d` about the point gt(c).
+RigidTransform startNear(const RigidTransform& gt, const Eigen::Vector3d& c, const RigidTransform& d) {
+  const Eigen::Vector3d gc = gt.apply(c);
+  return RigidTransform(Eigen::Matrix3d::Identity(), gc) * d * RigidTransform(Eigen::Matrix3d::Identity(), -gc) * gt;
+}
+
+bool detail = false;  ///< --detail: every pipeline case with its candidates and log
+std::string only_surface;  ///< --surface NAME: only that surface
 
 void runStation(const Model& m, std::size_t k, int poses, bool pipeline, const PipelineParams& base,
                 Totals& tot) {
@@ -124,6 +137,7 @@ void runStation(const Model& m, std::size_t k, int poses, bool pipeline, const P
   std::printf("\n== %s station %zu (%.1f, %.1f, %.1f): %zu points\n", m.name.c_str(), k,
               m.stations[k].x(), m.stations[k].y(), m.stations[k].z(), cloud.size());
   for (int si = 0; si < 2; ++si) {
+    if (!only_surface.empty() && only_surface != kSurfaces[si].name) continue;
     PipelineParams p = base;
     p.refinement.model_surface = kSurfaces[si].kind;
     auto t0 = std::chrono::steady_clock::now();
@@ -132,7 +146,7 @@ void runStation(const Model& m, std::size_t k, int poses, bool pipeline, const P
                                     : RefineTarget(m.samples, p.refinement);
     const double prep = secondsSince(t0);
     std::mt19937_64 rng(77 + k);
-    Errors truth, off, pipe;
+    Errors truth, off, far, far_once, pipe;
     std::string surface;
     for (const RigidTransform& pose : randomPoses(poses, 500 + k)) {
       PointCloud moved = cloud;
@@ -143,14 +157,22 @@ void runStation(const Model& m, std::size_t k, int poses, bool pipeline, const P
       const RefineResult a = refineRegistration(moved, target, gt, p.refinement);
       truth.add(poseError(a.transform, gt, c), secondsSince(t0));
       surface = a.surface + ", " + std::to_string(a.target_points) + " used";
-      // The offset about the source centroid: x -> gt(x), then moved about gt(c).
-      const RigidTransform d = offset(rng, 0.3, 0.03);
-      const Eigen::Vector3d gc = gt.apply(c);
-      const RigidTransform start = RigidTransform(Eigen::Matrix3d::Identity(), gc) * d *
-                                   RigidTransform(Eigen::Matrix3d::Identity(), -gc) * gt;
+      if (a.visibility_seconds > 0) tot.visibility_seconds.push_back(a.visibility_seconds);
+      const RigidTransform small = startNear(gt, c, offset(rng, 0.3, 0.03));
       t0 = std::chrono::steady_clock::now();
-      const RefineResult b = refineRegistration(moved, target, start, p.refinement);
+      const RefineResult b = refineRegistration(moved, target, small, p.refinement);
       off.add(poseError(b.transform, gt, c), secondsSince(t0));
+      const RigidTransform large = startNear(gt, c, offset(rng, 1.0, 0.10));
+      t0 = std::chrono::steady_clock::now();
+      const RefineResult f = refineRegistration(moved, target, large, p.refinement);
+      far.add(poseError(f.transform, gt, c), secondsSince(t0));
+      if (kSurfaces[si].kind == RefineParams::ModelSurface::Triangles) {
+        RefineParams once = p.refinement;
+        once.visibility_per_stage = false;
+        t0 = std::chrono::steady_clock::now();
+        const RefineResult g = refineRegistration(moved, target, large, once);
+        far_once.add(poseError(g.transform, gt, c), secondsSince(t0));
+      }
       if (!pipeline) continue;
       RegistrationSide src, tgt;
       src.cloud = &moved;
@@ -162,17 +184,32 @@ void runStation(const Model& m, std::size_t k, int poses, bool pipeline, const P
       const double s = secondsSince(t0);
       if (!r.success()) {
         ++pipe.failed;
-        std::printf("  pipeline %s FAILED: %s\n", kSurfaces[si].name, r.report.verdict.c_str());
+        std::printf("  pipeline %s: %s\n", kSurfaces[si].name, r.report.status.c_str());
         continue;
       }
-      pipe.add(poseError(r.transform(), gt, c), s);
+      const PoseError e = poseError(r.transform(), gt, c);
+      pipe.add(e, s);
+      if (!withinTolerance(e) || detail) {
+        std::printf("  pipeline %s returned %.4f deg %.1f mm (%s):", kSurfaces[si].name, e.rotation_deg,
+                    1000 * e.translation_m, r.report.status.c_str());
+        for (const auto& cand : r.candidates)
+          std::printf(" [%s %s: overlap %.4f RMS %.4f fit cost %.4f]", cand.role.c_str(), cand.label.c_str(),
+                      cand.overlap, cand.point_rms, cand.fit_cost);
+        std::printf("\n");
+        for (const auto& line : r.log)
+          if (detail) std::printf("    %s\n", line.c_str());
+      }
     }
     std::printf(" surface %s (%s; target prepared in %.3f s)\n", kSurfaces[si].name, surface.c_str(), prep);
     printRow("refine from the truth", truth);
     printRow("refine from 0.3 deg / 3 cm off", off);
+    printRow("refine from 1 deg / 10 cm off", far);
+    if (!far_once.rot.empty()) printRow("  the same, visibility once", far_once);
     if (pipeline) printRow("pipeline (auto)", pipe);
     tot.truth[si].append(truth);
     tot.off[si].append(off);
+    tot.far[si].append(far);
+    tot.far_once.append(far_once);
     tot.pipe[si].append(pipe);
   }
 }
@@ -184,11 +221,15 @@ int main(int argc, char** argv) {
   bool pipeline = true;
   std::vector<std::string> models = {"duplex", "house"};
   PipelineParams base = acceptanceParams();
+  std::string stations;  // --stations 0,2: only these station indices
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
     if (a == "--poses") poses = std::stoi(next());
     else if (a == "--no-pipeline") pipeline = false;
+    else if (a == "--detail") detail = true;
+    else if (a == "--surface") only_surface = next();
+    else if (a == "--stations") stations = next();
     else if (a == "--huber") base.refinement.huber = std::stod(next());
     else if (a == "--models") {
       models.clear();
@@ -198,7 +239,8 @@ int main(int argc, char** argv) {
         models.push_back(list.substr(s, e - s));
       }
     } else {
-      std::fprintf(stderr, "usage: bench_surface_refine [--poses N] [--models duplex,house] [--no-pipeline] [--huber M]\n");
+      std::fprintf(stderr, "usage: bench_surface_refine [--poses N] [--models duplex,house] [--stations 0,2] "
+                           "[--no-pipeline] [--huber M] [--detail] [--surface samples|triangles]\n");
       return 1;
     }
   }
@@ -211,14 +253,20 @@ int main(int argc, char** argv) {
     m.samples = sampleMeshSurface(m.model.mesh, base.model_sample_spacing, base.seed);
     std::printf("\n### %s: %zu triangles, %zu samples\n", m.name.c_str(), m.model.mesh.triangles.size(),
                 m.samples.size());
-    for (std::size_t k = 0; k < m.stations.size(); ++k) runStation(m, k, poses, pipeline, base, tot);
+    for (std::size_t k = 0; k < m.stations.size(); ++k)
+      if (stations.empty() || stations.find(std::to_string(k)) != std::string::npos)
+        runStation(m, k, poses, pipeline, base, tot);
   }
   std::printf("\n== all stations\n");
   for (int si = 0; si < 2; ++si) {
     std::printf(" surface %s\n", kSurfaces[si].name);
     printRow("refine from the truth", tot.truth[si]);
     printRow("refine from 0.3 deg / 3 cm off", tot.off[si]);
+    printRow("refine from 1 deg / 10 cm off", tot.far[si]);
+    if (si == 1) printRow("  the same, visibility once", tot.far_once);
     if (pipeline) printRow("pipeline (auto)", tot.pipe[si]);
   }
+  std::printf("visible triangles: %zu refinements, median %.4f s finding them (all stages)\n",
+              tot.visibility_seconds.size(), median(tot.visibility_seconds));
   return 0;
 }
