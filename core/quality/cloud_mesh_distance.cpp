@@ -1,9 +1,5 @@
-// Cloud-to-mesh distances with CGAL's AABB tree (closest point on the triangles). Kept in its
-// own translation unit: the CGAL headers are heavy.
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Simple_cartesian.h>
+// Cloud-to-mesh distances: closest points on the triangles (simulation/mesh_closest_points.hpp,
+// CGAL's AABB tree).
 #include <tbb/parallel_for.h>
 
 #include <cmath>
@@ -11,16 +7,9 @@
 
 #include "common/error.hpp"
 #include "quality/cloud_distance.hpp"
+#include "simulation/mesh_closest_points.hpp"
 
 namespace plumb {
-
-namespace {
-using K = CGAL::Simple_cartesian<double>;
-using Triangle = K::Triangle_3;
-using Iterator = std::vector<Triangle>::const_iterator;
-using Primitive = CGAL::AABB_triangle_primitive<K, Iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
-}  // namespace
 
 DistanceResult cloudToMeshDistances(const PointCloud& source, const RigidTransform& source_to_world,
                                     const TriangleMesh& mesh, const RigidTransform& mesh_to_world,
@@ -29,19 +18,11 @@ DistanceResult cloudToMeshDistances(const PointCloud& source, const RigidTransfo
   reportProgress(progress, 0.0, "distance: AABB tree");
   // Measured in the mesh frame, relative to the mesh's box centre (small coordinates).
   const Eigen::Vector3d centre = mesh.bounds().center();
-  std::vector<Triangle> triangles;
-  triangles.reserve(mesh.triangles.size());
-  auto point = [&](std::uint32_t v) {
-    const Eigen::Vector3d p = mesh.vertices[v] - centre;
-    return K::Point_3(p.x(), p.y(), p.z());
-  };
-  for (const auto& t : mesh.triangles) {
-    Triangle tri(point(t[0]), point(t[1]), point(t[2]));
-    if (!tri.is_degenerate()) triangles.push_back(tri);
-  }
-  if (triangles.empty()) throw InputError("distance: every triangle of the model is degenerate");
-  Tree tree(triangles.begin(), triangles.end());
-  tree.accelerate_distance_queries();
+  std::vector<Eigen::Vector3d> vertices;
+  vertices.reserve(mesh.vertices.size());
+  for (const auto& v : mesh.vertices) vertices.push_back(v - centre);
+  const MeshClosestPoints tree(vertices, mesh.triangles, MeshClosestPoints::all(mesh.triangles.size()));
+  if (tree.size() == 0) throw InputError("distance: every triangle of the model is degenerate");
   checkCanceled(progress);
   const RigidTransform s2m = mesh_to_world.inverse() * source_to_world;
   const Eigen::Matrix3d R = s2m.rotation();
@@ -59,8 +40,9 @@ DistanceResult cloudToMeshDistances(const PointCloud& source, const RigidTransfo
                         for (std::size_t i = range.begin(); i != range.end(); ++i) {
                           if (!source.positions[i].allFinite()) continue;
                           const Eigen::Vector3d q = R * source.positions[i].cast<double>() + t;
-                          const double d =
-                              std::sqrt(tree.squared_distance(K::Point_3(q.x(), q.y(), q.z())));
+                          MeshClosestPoints::Closest c;
+                          tree.closest(q, c);
+                          const double d = (c.point - q).norm();
                           if (d <= params.max_distance) r.distances[i] = float(d);
                         }
                       });

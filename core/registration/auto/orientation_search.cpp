@@ -35,10 +35,13 @@ bool hasAnswer(const GlobalRegistrationResult& g) {
   return g.ok() || g.status == RegistrationStatus::Ambiguous;
 }
 
-/// Whether the global step can use openings (re-detected on the levelled data only then).
-bool usesOpenings(const FeatureSet& target, bool target_is_model, const PipelineParams& p) {
+/// Whether the global step can use openings (re-detected on the levelled data only then): auto
+/// tries them whenever the target carries openings, a scan's or a model's (its IfcWindow /
+/// IfcDoor elements: registerFeatureSets' fallback after segments), so a tilted source reaches
+/// the same methods as a levelled one.
+bool usesOpenings(const FeatureSet& target, const PipelineParams& p) {
   if (p.method == RegistrationMethod::Openings) return true;
-  return p.method == RegistrationMethod::Auto && !target_is_model && !target.openings.empty();
+  return p.method == RegistrationMethod::Auto && !target.openings.empty();
 }
 
 /// The source's features moved by the levelling L; façades and openings detected again on the
@@ -74,7 +77,7 @@ OrientedResult registerLevelledBy(const Eigen::Vector3d& up, const RigidTransfor
                                   const PipelineParams& p, std::vector<std::string>* log,
                                   Progress* progress, const SegmentsOnDemand& segments_on_demand) {
   const FeatureSet levelled =
-      levelledFeatures(source, sf, L, usesOpenings(tf, target_is_model, p), p, progress);
+      levelledFeatures(source, sf, L, usesOpenings(tf, p), p, progress);
   SegmentsOnDemand levelled_segments;
   if (segments_on_demand)
     levelled_segments = [&]() {

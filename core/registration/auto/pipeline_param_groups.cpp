@@ -24,7 +24,10 @@ const ParamSchema<PipelineParams>& PipelineParams::schema() {
                    "Seed of every random step (plane detection, openings hypotheses, model "
                    "samples); the same seed gives the same result")
           .real(&P::model_sample_spacing, "model-sample-spacing", "Model sample spacing", "m",
-                0.005, 1.0, "Spacing of the points sampled on a model for refinement", true)
+                0.005, 1.0,
+                "Spacing of the points sampled on a model for refinement "
+                "(refinement.model-surface = samples, or GICP)",
+                true)
           .real(&P::agreement_rotation_deg, "agreement-rotation", "Planes/openings agreement",
                 "deg", 0.01, 45.0,
                 "auto: planes and openings agree within this rotation (and translation), "

@@ -175,12 +175,24 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
 
 namespace {
 
-const PointCloud* refinementTarget(const RegistrationSide& target, const PipelineParams& p,
-                                   PointCloud& storage) {
-  if (!target.isModel()) return target.cloud;
-  if (target.model_samples) return target.model_samples;
+/// The refinement target, prepared once for every candidate: a scan's points; a model's
+/// triangles (point-to-plane with refinement.model-surface = triangles), else points sampled
+/// on the model (given with the side, or sampled here into `storage`).
+std::unique_ptr<RefineTarget> refinementTarget(const RegistrationSide& target, const PipelineParams& p,
+                                               const RefineParams& rp, PointCloud& storage,
+                                               std::vector<std::string>& log) {
+  if (!target.isModel()) return target.cloud ? std::make_unique<RefineTarget>(*target.cloud, rp) : nullptr;
+  if (rp.model_surface == RefineParams::ModelSurface::Triangles &&
+      rp.method == RefineParams::Method::PointToPlane) {
+    log.push_back("refinement: against the model's triangles (closest point on the triangles the "
+                  "source's stations see)");
+    return std::make_unique<RefineTarget>(target.model->mesh, rp);
+  }
+  log.push_back("refinement: against points sampled on the model every " +
+                std::to_string(p.model_sample_spacing) + " m");
+  if (target.model_samples) return std::make_unique<RefineTarget>(*target.model_samples, rp);
   storage = sampleMeshSurface(target.model->mesh, p.model_sample_spacing, p.seed);
-  return &storage;
+  return std::make_unique<RefineTarget>(storage, rp);
 }
 
 /// Indoor/outdoor (openings): the indoor wall faces lie one wall thickness behind the façade
@@ -245,6 +257,21 @@ CandidateSelection separateByFreeSpace(const RegistrationSide& source,
   return sel;
 }
 
+/// The target points the copy search marks its grid with: the target scan, the samples the
+/// refinement used, the model's given samples, or the model sampled at twice the fine cell
+/// (the grid is dilated by one cell, so that spacing leaves no hole). Null when the copy
+/// search is off.
+const PointCloud* copySearchTarget(const RegistrationSide& target, const PipelineParams& p,
+                                   const PointCloud& refinement_samples, PointCloud& storage) {
+  if (!p.candidates.copy_search || p.candidates.copy_max == 0) return nullptr;
+  if (!target.isModel()) return target.cloud;
+  if (!refinement_samples.empty()) return &refinement_samples;
+  if (target.model_samples) return target.model_samples;
+  storage = sampleMeshSurface(target.model->mesh,
+                              std::max(p.model_sample_spacing, 2 * CopySearchParams{}.fine_cell), p.seed);
+  return &storage;
+}
+
 /// The copies of the placed source in the target (copy_search.hpp), when enabled.
 std::vector<Hypothesis> copiesOf(const PointCloud& sc, const PointCloud& tc,
                                  const RigidTransform& chosen, const PipelineParams& p,
@@ -263,7 +290,7 @@ std::vector<Hypothesis> copiesOf(const PointCloud& sc, const PointCloud& tc,
 /// The global answer refined, then (when `compare`) the runner-up, the further distinct
 /// hypotheses, the best placement elsewhere and the copies of the best-fitting of them
 /// (copy_search.hpp), refined without the slide test (only compared).
-std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const PointCloud& tc,
+std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const PointCloud* tc,
                                                 const RefineTarget& prepared,
                                                 const RefineParams& rp, PipelineResult& out,
                                                 bool target_is_model, const PipelineParams& p,
@@ -287,7 +314,8 @@ std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const Poin
   const auto best = std::max_element(h.begin(), h.end(), [](const auto& a, const auto& b) {
     return a.refined.overlap < b.refined.overlap;
   });
-  for (const Hypothesis& c : copiesOf(sc, tc, best->refined.transform, p, out.log))
+  if (!tc) return h;
+  for (const Hypothesis& c : copiesOf(sc, *tc, best->refined.transform, p, out.log))
     h.push_back({c, refineRegistration(sc, prepared, c.transform, compared, progress)});
   return h;
 }
@@ -299,19 +327,21 @@ std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const Poin
 /// refined fit wins, otherwise it stays Ambiguous.
 void refineCandidates(const RegistrationSide& source, const RegistrationSide& target,
                       const PipelineParams& p, PipelineResult& out, Progress* progress) {
-  PointCloud sampled;
-  const PointCloud* tc = refinementTarget(target, p, sampled);
   const PointCloud* sc = source.cloud;
-  if (!sc || !tc) return;
+  if (!sc) return;
   auto rp = p.refinement;
   limitToWallThickness(out.global, rp, out.log);
   GlobalRegistrationResult& g = out.global;
-  const RefineTarget prepared(*tc, rp);  // once for every candidate
+  PointCloud sampled;
+  const std::unique_ptr<RefineTarget> target_ready = refinementTarget(target, p, rp, sampled, out.log);
+  if (!target_ready) return;
+  const RefineTarget& prepared = *target_ready;  // once for every candidate
+  PointCloud copy_samples;
+  const PointCloud* tc = copySearchTarget(target, p, sampled, copy_samples);
   // Compare when there is a runner-up, or copies of the placement may be searched.
-  const bool compare =
-      p.candidates.refine_runner_up && (g.runner_up || p.candidates.copy_search);
+  const bool compare = p.candidates.refine_runner_up && (g.runner_up || tc);
   std::vector<RefinedHypothesis> h =
-      refineHypotheses(*sc, *tc, prepared, rp, out, target.isModel(), p, compare, progress);
+      refineHypotheses(*sc, tc, prepared, rp, out, target.isModel(), p, compare, progress);
   const bool global_chose = g.ok();
   const Eigen::Vector3d centroid = sc->bounds().center();
   const CandidateSelection sel = separateByFreeSpace(
@@ -334,6 +364,13 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
     g.message += "; resolved on refined points: " + sel.message;
   }
   out.refinement = std::move(h[sel.chosen].refined);
+  if (out.refinement->surface == "front-facing triangles")
+    out.log.push_back("refinement: the source has no sensor origins, so the model triangles it "
+                      "saw are unknown: matched against every triangle whose front faces the "
+                      "point (" + std::to_string(out.refinement->target_points) + " triangles)");
+  else if (out.refinement->surface == "visible triangles")
+    out.log.push_back("refinement: matched against the " + std::to_string(out.refinement->target_points) +
+                      " model triangles the source's stations see");
 }
 
 /// The global hypotheses as candidates when they were not refined (refinement off, or the

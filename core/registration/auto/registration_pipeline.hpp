@@ -55,8 +55,9 @@ struct RegistrationSide {
   std::optional<Eigen::Vector3d> viewpoint;
   /// Precomputed features (skips extraction when set).
   const FeatureSet* features = nullptr;
-  /// Model only: points already sampled on its surface (sampleMeshSurface) for refinement,
-  /// reused across registrations against the same model; sampled on demand when null.
+  /// Model only: points already sampled on its surface (sampleMeshSurface) for a refinement
+  /// on samples (refinement.model-surface = samples, or GICP), reused across registrations
+  /// against the same model; sampled on demand when null.
   const PointCloud* model_samples = nullptr;
   bool isModel() const { return model != nullptr; }
 };
@@ -82,7 +83,8 @@ struct PipelineParams {
   /// Memory budget: when an input is read whole or subsampled while streaming
   /// (registration/auto/bounded_input.hpp). Not used by registerData itself.
   MemoryParams memory;
-  /// Spacing of the points sampled on a model for refinement, metres, [0.005, 1] (advanced).
+  /// Spacing of the points sampled on a model for refinement, metres, [0.005, 1] (advanced);
+  /// used with refinement.model-surface = samples or GICP only.
   double model_sample_spacing = 0.05;
   /// The runner-up refined and compared with the answer (candidate_refinement.hpp); settles
   /// an Ambiguous global step on refined points (beyond the papers).

@@ -28,7 +28,12 @@ struct RefineResult {
   /// ones (0: every point exactly on the target). Compares refined candidate placements.
   double fit_cost = 1.0;
   std::size_t source_points = 0;  ///< used (after thinning)
-  std::size_t target_points = 0;
+  std::size_t target_points = 0;  ///< used: thinned target points, or visible triangles
+  /// What the source was matched against: "points" (a scan or model samples), "visible
+  /// triangles" (a model, visibility from the source's sensor origins) or "front-facing
+  /// triangles" (a model, the source has no sensor origins).
+  std::string surface = "points";
+  double visibility_seconds = 0.0;  ///< spent finding the visible triangles (a model target)
   /// Normal matrix sum J^T J of the final point-to-plane problem, J = [(p x n)/L, n], rotation
   /// scaled by the length L (RMS radius of the inliers about their centroid) so eigenvalues are
   /// comparable, and expressed about that centroid.

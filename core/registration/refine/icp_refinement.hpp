@@ -1,8 +1,9 @@
 #pragma once
 // Local refinement after every global method (docs/ALGORITHMS.md §8): trimmed point-to-plane ICP
 // (PCL kd-tree and normals, linearised least squares after Low 2004) or PCL GICP, run
-// coarse-to-fine over a shrinking correspondence distance. For a BIM target the caller passes
-// points sampled on the model (sampleMeshSurface) with the mesh normals.
+// coarse-to-fine over a shrinking correspondence distance. For a BIM target: point-to-triangle
+// correspondences on the model triangles visible from the scan's stations (RefineTarget from a
+// mesh, triangle_target.hpp), or points sampled on the model (sampleMeshSurface).
 // The result (RefineResult, registration/common/refine_result.hpp) carries the 6x6 normal matrix
 // of the final point-to-plane problem, from which the quality report derives the weakly
 // constrained degrees of freedom.
@@ -24,6 +25,19 @@ namespace plumb {
 struct RefineParams {
   enum class Method { PointToPlane, Gicp };
   Method method = Method::PointToPlane;
+  /// What a model target is refined against: its triangles (closest point on the triangles
+  /// the scan's stations see, with the triangle normal; point-to-plane only) or points sampled
+  /// on its surface every model-sample-spacing (the behaviour before issue 14; GICP always
+  /// uses the samples). Default: samples, because every verdict threshold (docs/VERDICT.md)
+  /// was measured with them; the triangles are far more accurate on real models (0.001 deg
+  /// instead of 0.05-0.07 deg on duplex.ifc, bench_surface_refine) and become the default once
+  /// the verdict suites have been run with them.
+  enum class ModelSurface { Triangles, Samples };
+  ModelSurface model_surface = ModelSurface::Samples;
+  /// Huber threshold of the point-to-plane residual, metres, [0, 1]: correspondences with a
+  /// larger residual get the weight threshold/|r| (point_to_plane.hpp); 0: no weights (the
+  /// trimming alone).
+  double huber = 0.0;
   /// Voxel grid used to thin both clouds, metres, [0, 1] (0 keeps every point).
   double voxel_size = 0.05;
   /// Source points used (regular subset after voxel thinning), [100, 1e7].
@@ -47,6 +61,9 @@ struct RefineParams {
   /// every direction unconstrained): the pipeline turns it off for the runner-up candidates
   /// it only compares.
   bool slide_test = true;
+  /// Model triangles: find the visible triangles again at each stage (true) or once, under the
+  /// initial placement (false). Not a user setting: bench_surface_refine compares the two.
+  bool visibility_per_stage = true;
   static const ParamSchema<RefineParams>& schema();
 };
 
@@ -62,6 +79,11 @@ class RefineTarget {
  public:
   /// Throws InputError for an empty cloud.
   RefineTarget(const PointCloud& target, const RefineParams& params);
+  /// A model surface: point-to-triangle correspondences on the triangles the source's
+  /// stations see (rays from its sensor origins, recomputed at each stage); without sensor
+  /// origins, every triangle whose front faces the point (RefineResult::surface says which).
+  /// Throws InputError for a mesh without triangles.
+  RefineTarget(const TriangleMesh& mesh, const RefineParams& params);
   ~RefineTarget();
   RefineTarget(const RefineTarget&) = delete;
   RefineTarget& operator=(const RefineTarget&) = delete;

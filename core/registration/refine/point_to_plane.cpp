@@ -49,6 +49,11 @@ void trimCorrespondences(std::vector<PlaneCorrespondence>& c, double trim_fracti
   }
 }
 
+void huberWeights(std::vector<PlaneCorrespondence>& c, double delta) {
+  if (!(delta > 0)) return;
+  for (auto& k : c) k.w = std::abs(k.r) <= delta ? 1.0 : delta / std::abs(k.r);
+}
+
 Vector6d pointToPlaneJacobian(const PlaneCorrespondence& c) {
   Vector6d j;
   j << c.p.cross(c.n), c.n;
@@ -60,8 +65,8 @@ NormalEquations accumulateNormalEquations(const std::vector<PlaneCorrespondence>
   NormalEquations eq;
   for (const auto& k : c) {
     const Vector6d j = pointToPlaneJacobian(k);
-    eq.H += j * j.transpose();
-    eq.g += j * k.r;
+    eq.H += k.w * (j * j.transpose());
+    eq.g += j * (k.w * k.r);
   }
   return eq;
 }

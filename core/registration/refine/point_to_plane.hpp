@@ -19,6 +19,7 @@ using Matrix6d = Eigen::Matrix<double, 6, 6>;
 struct PlaneCorrespondence {
   Eigen::Vector3d p, q, n;
   double r;
+  double w = 1.0;  ///< robust weight of the correspondence (huberWeights)
 };
 
 /// Trimmed ICP: keeps the max(6, trim_fraction x size) correspondences of smallest |r| (in no
@@ -31,11 +32,16 @@ struct PlaneCorrespondence {
 void trimCorrespondences(std::vector<PlaneCorrespondence>& c, double trim_fraction,
                          bool per_direction);
 
+/// Huber weights (Huber 1964; the IRLS weight of the Huber loss): w = 1 for |r| <= delta,
+/// delta / |r| beyond, so a residual beyond delta pulls with a constant force rather than one
+/// growing with its size. delta in metres; <= 0 leaves every weight at 1.
+void huberWeights(std::vector<PlaneCorrespondence>& c, double delta);
+
 /// Jacobian of r with respect to (w, dt) for x -> x + w x x + dt: J = [p x n; n] (Low 2004,
 /// small-angle rotation).
 Vector6d pointToPlaneJacobian(const PlaneCorrespondence& c);
 
-/// Normal equations of sum (r + J·xi)^2: H = sum J J^T, g = sum J r.
+/// Normal equations of sum w (r + J·xi)^2: H = sum w J J^T, g = sum w J r.
 struct NormalEquations {
   Matrix6d H = Matrix6d::Zero();
   Vector6d g = Vector6d::Zero();
