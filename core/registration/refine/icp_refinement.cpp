@@ -137,8 +137,10 @@ Cloud::Ptr usedSourcePoints(const PointCloud& source, const RigidTransform& init
   return src;
 }
 
-/// The surface a model target offers for a pose: the triangles visible from the source's
-/// stations under that pose (found again at each call), or the front-facing triangles.
+/// The surface a model target offers for a pose: every triangle at the first call (the
+/// coarsest stage, whose start may be too far off for its visibility to hold), then the
+/// triangles visible from the source's stations under that pose (found again at each call, or
+/// once with visibility_per_stage off); without sensor origins, the front-facing triangles.
 class ModelSurfaceAt {
  public:
   ModelSurfaceAt(const refine_detail::TriangleTarget& target, const refine_detail::SourceRays& rays,

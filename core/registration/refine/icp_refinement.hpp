@@ -79,9 +79,10 @@ class RefineTarget {
  public:
   /// Throws InputError for an empty cloud.
   RefineTarget(const PointCloud& target, const RefineParams& params);
-  /// A model surface: point-to-triangle correspondences on the triangles the source's
-  /// stations see (rays from its sensor origins, recomputed at each stage); without sensor
-  /// origins, every triangle whose front faces the point (RefineResult::surface says which).
+  /// A model surface: point-to-triangle correspondences, in the first (coarsest) stage on
+  /// every triangle, then on the triangles the source's stations see (rays from its sensor
+  /// origins, found again at each stage); without sensor origins, every triangle whose front
+  /// faces the point (RefineResult::surface says which).
   /// Throws InputError for a mesh without triangles.
   RefineTarget(const TriangleMesh& mesh, const RefineParams& params);
   ~RefineTarget();

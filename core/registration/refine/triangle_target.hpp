@@ -1,11 +1,11 @@
 #pragma once
 // The model surface as a refinement target (docs/ALGORITHMS.md §8, issue 14): point-to-triangle
 // correspondences (closest point on the mesh, CGAL AABB tree: simulation/mesh_closest_points.hpp)
-// against the
-// triangles the scan's stations can see. Visibility: from each used source point's sensor
-// origin, placed by the current pose, a ray (Embree, simulation/ray_caster.hpp) through the
-// point; the first triangle hit is seen. Back faces, wall interiors and other rooms are never
-// hit first, so they never attract points. Without sensor origins, every triangle is kept and a
+// against the triangles the scan's stations can see (after a first, coarse stage on every
+// triangle: icp_refinement.cpp). Visibility: from each used source point's sensor origin,
+// placed by the current pose, a ray (Embree, simulation/ray_caster.hpp) through the point; the
+// first triangle hit is seen. Back faces, wall interiors and other rooms are never hit first, so
+// they never attract points. Without sensor origins, every triangle is kept and a
 // correspondence counts only when the point lies in front of its triangle (the normal faces
 // the point, up to kFacingTolerance): a scan of one face of a thin wall cannot match the other.
 #include <Eigen/Core>
