@@ -338,7 +338,9 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
   const RefineTarget& prepared = *target_ready;  // once for every candidate
   PointCloud copy_samples;
   const PointCloud* tc = copySearchTarget(target, p, sampled, copy_samples);
-  // Compare when there is a runner-up, or copies of the placement may be searched.
+  // Compare when there is a runner-up, or copies of the placement may be searched. Not for
+  // ICP: its start (an initial pose, manual tie points) is the user's hypothesis, not a search.
+  if (g.method == "icp") tc = nullptr;
   const bool compare = p.candidates.refine_runner_up && (g.runner_up || tc);
   std::vector<RefinedHypothesis> h =
       refineHypotheses(*sc, tc, prepared, rp, out, target.isModel(), p, compare, progress);
