@@ -23,6 +23,15 @@ const ParamSchema<CandidateParams>& CandidateParams::schema() {
                 "Or lower by this ...", true)
           .real(&P::min_unexplained_ratio, "unexplained-ratio", "Clear unexplained ratio", "",
                 1.0, 100.0, "... and it leaves this many times more points unexplained", true)
+          .real(&P::near_whole_overlap, "near-whole", "Near-whole fit", "", 0.0, 1.0,
+                "From this overlap of the better placement, the overlap gap counts only when "
+                "the structure (points on large planes) agrees ...", true)
+          .real(&P::min_structure_gap, "structure-gap", "Structure gap", "", 0.0, 1.0,
+                "... explaining at least this much less of it ...", true)
+          .real(&P::min_structure_ratio, "structure-ratio", "Structure unexplained ratio", "",
+                1.0, 100.0, "... and leaving this many times more of it unexplained", true)
+          .real(&P::structure_min_area, "structure-area", "Structure plane area", "m2", 0.5,
+                100.0, "Planes of the source at least this large are its structure", true)
           .real(&P::min_cost_gap, "cost-gap", "Clear fit cost gap", "", 0.0, 1.0,
                 "Or: its refined fit cost is higher by this ...", true)
           .real(&P::min_cost_ratio, "cost-ratio", "Clear fit cost ratio", "", 1.0, 100.0,
@@ -73,11 +82,22 @@ const char* toString(CandidateRelation r) {
 namespace {
 bool lostOverlap(const RefineResult& r) { return r.inliers < 10; }
 
+/// `x` leaves clearly more of the source's structure unexplained than `y`; true when the
+/// structure was not measured (nothing to contradict the overall overlap).
+bool structureAgrees(const RefineResult& x, const RefineResult& y, const CandidateParams& p) {
+  if (x.structure_overlap < 0 || y.structure_overlap < 0) return true;
+  return y.structure_overlap - x.structure_overlap >= p.min_structure_gap &&
+         (1.0 - x.structure_overlap) >= p.min_structure_ratio * (1.0 - y.structure_overlap);
+}
+
 /// `x` fits clearly worse than `y`: clearly fewer points explained, or a clearly higher cost.
+/// A near-whole absolute gap counts only when the structure agrees (structure_overlap.hpp).
 bool clearlyWorse(const RefineResult& x, const RefineResult& y, const CandidateParams& p) {
   if (lostOverlap(x) && !lostOverlap(y)) return true;
   const double gap = y.overlap - x.overlap;
-  const bool overlap = gap >= p.min_overlap_gap ||
+  const bool near_whole = y.overlap >= p.near_whole_overlap;
+  const bool by_gap = gap >= p.min_overlap_gap && (!near_whole || structureAgrees(x, y, p));
+  const bool overlap = by_gap ||
                        (gap >= p.near_overlap_gap &&
                         (1.0 - x.overlap) >= p.min_unexplained_ratio * (1.0 - y.overlap));
   const bool cost = x.fit_cost - y.fit_cost >= p.min_cost_gap &&
@@ -108,6 +128,7 @@ PlacementCandidate makeCandidate(const Hypothesis& h, const RefineResult* r, std
     c.point_rms = r->rms;
     c.inliers = r->inliers;
     c.fit_cost = r->fit_cost;
+    if (r->structure_overlap >= 0) c.figures.push_back({"structure overlap", r->structure_overlap});
   }
   return c;
 }

@@ -6,6 +6,7 @@
 
 #include "common/error.hpp"
 #include "registration/auto/copy_search.hpp"
+#include "registration/auto/structure_overlap.hpp"
 #include "registration/auto/elsewhere_search.hpp"
 #include "registration/auto/orientation_search.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
@@ -344,6 +345,10 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
   const bool compare = p.candidates.refine_runner_up && (g.runner_up || tc);
   std::vector<RefinedHypothesis> h =
       refineHypotheses(*sc, tc, prepared, rp, out, target.isModel(), p, compare, progress);
+  if (compare)
+    measureStructureOverlap(structurePoints(*sc, out.source_features.planes,
+                                            p.candidates.structure_min_area),
+                            prepared, rp, h);
   const bool global_chose = g.ok();
   const Eigen::Vector3d centroid = sc->bounds().center();
   const CandidateSelection sel = separateByFreeSpace(

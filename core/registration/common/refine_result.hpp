@@ -27,6 +27,10 @@ struct RefineResult {
   /// of the fit that counts both the unexplained points and the residuals of the explained
   /// ones (0: every point exactly on the target). Compares refined candidate placements.
   double fit_cost = 1.0;
+  /// Fraction of the source's structure points (those on its large planes) with an inlier
+  /// match at this transform, in [0, 1]; < 0 when not measured. Not set by the refinement: the
+  /// candidate comparison measures it (registration/auto/structure_overlap.hpp).
+  double structure_overlap = -1.0;
   std::size_t source_points = 0;  ///< used (after thinning)
   std::size_t target_points = 0;  ///< used: thinned target points, or visible triangles
   /// What the source was matched against: "points" (a scan or model samples), "visible

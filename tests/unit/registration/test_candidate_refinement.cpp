@@ -54,6 +54,36 @@ TEST(CandidateRefinement, ClearlyWorseByOverlapOrCostElseClose) {
             CandidateRelation::Close);
 }
 
+TEST(CandidateRefinement, NearWholeGapCountsOnlyWhenTheStructureAgrees) {
+  const CandidateParams p;
+  const auto withStructure = [](RefineResult r, double s) {
+    r.structure_overlap = s;
+    return r;
+  };
+  // Copies of an office storey in another building (bench_verdict, office-floor onto the
+  // big-office model): 0.0105 fewer points explained, but the same walls, floors and ceilings
+  // (structure 0.9075 vs 0.9066): furniture meeting furniture, not evidence.
+  EXPECT_EQ(compareRefined(withStructure(fit(kA, 0.8866, 0.124), 0.9075),
+                           withStructure(fit(kTurned, 0.8761, 0.135), 0.9066), kCentroid, p),
+            CandidateRelation::Close);
+  // Without the structure measured, the overall gap decides as before.
+  EXPECT_EQ(compareRefined(fit(kA, 0.8866, 0.124), fit(kTurned, 0.8761, 0.135), kCentroid, p),
+            CandidateRelation::FirstClearlyBetter);
+  // A scan in its generated BIM against the storey copy: its structure is explained clearly
+  // less (0.9830 vs 0.9866, 1.27 times more left unexplained).
+  EXPECT_EQ(compareRefined(withStructure(fit(kA, 0.9052, 0.101), 0.9866),
+                           withStructure(fit(kTurned, 0.8903, 0.116), 0.9830), kCentroid, p),
+            CandidateRelation::FirstClearlyBetter);
+  // A partial overlap (indoor/outdoor) is not near-whole: the structure is not asked.
+  EXPECT_EQ(compareRefined(withStructure(fit(kA, 0.169, 0.794), 0.100),
+                           withStructure(fit(kTurned, 0.128, 0.832), 0.119), kCentroid, p),
+            CandidateRelation::FirstClearlyBetter);
+  // Many times more points unexplained needs no structure (a duplex unit's mirrored twin).
+  EXPECT_EQ(compareRefined(withStructure(fit(kA, 0.9970, 0.042), 0.9968),
+                           withStructure(fit(kTurned, 0.9899, 0.061), 0.9958), kCentroid, p),
+            CandidateRelation::FirstClearlyBetter);
+}
+
 TEST(CandidateRefinement, SelectionListsEveryCandidateAndFlagsCompetitors) {
   const CandidateParams p;
   std::vector<RefinedHypothesis> h = {{{kA, 60.0, "a"}, fit(kA, 0.905, 0.101)},
