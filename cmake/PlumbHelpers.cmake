@@ -25,7 +25,9 @@ function(plumb_add_test name)
   endif()
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main plumb_test_support)
-  target_compile_options(${name} PRIVATE -Wall -Wextra)
+  # Test code at -O1 in Release: a quarter less compile time than -O2 (measured on the CLI,
+  # E57 and params tests); what the tests exercise is the core, built at -O2.
+  target_compile_options(${name} PRIVATE -Wall -Wextra $<$<CONFIG:Release>:-O1>)
   if(ARG_RUNS_CLI)
     # End-to-end tests of the real executable (tests/support/cli_runner.hpp).
     target_compile_definitions(${name} PRIVATE PLUMB_CLI_PATH="$<TARGET_FILE:plumb-cli>")

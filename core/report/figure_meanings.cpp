@@ -70,6 +70,9 @@ const Table& byPath() {
       {"candidates[].figures.unexplained structure",
        "Share of the large planes' area unexplained at this placement (negative: not "
        "conclusive)"},
+      {"candidates[].figures.structure overlap",
+       "Share of the source's large-plane points (walls, floors, ceilings) this refined "
+       "placement explains; compared when the source fits nearly wholly"},
       {"candidates[].inliers", "Source points matched after refining this placement"},
       {"candidates[].label", "How this placement was built"},
       {"candidates[].overlap_ratio", "Fraction of source points matched after refining it"},

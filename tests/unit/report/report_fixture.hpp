@@ -56,6 +56,8 @@ inline QualityReport fullQualityReport() {
   c.point_rms = 0.0194;
   c.inliers = 10929;
   c.fit_cost = 0.356;
+  c.figures = {{"free-space contradiction ratio", 0.004}, {"unexplained structure", 0.02},
+               {"structure overlap", 0.97}};
   q.candidates = {c, c};
   q.candidates[1].role = "worse";
   return q;

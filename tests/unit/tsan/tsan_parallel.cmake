@@ -1,7 +1,7 @@
 # Run by the CTest test "parallel_tsan" (label tsan): configures a second build tree with
 # ThreadSanitizer (PLUMB_TSAN, -O1 -g1), builds only two test executables that run the core's
 # TBB loops, and runs the tests of those loops:
-#   test_features           voxel grid / region growing / point assignment (segments), MSAC
+#   test_features_tsan      voxel grid / region growing / point assignment (segments), MSAC
 #                           plane search, segment lines per patch, openings' ray casts;
 #   test_registration_icp   the refinement's correspondence search (parallel_for), slide test
 #                           (parallel_deterministic_reduce) and target normals (parallel_for).
@@ -20,7 +20,7 @@ plumb_configure_second_tree(${tree} ${what} -DPLUMB_TSAN=ON)
 # Set before the build: gtest_discover_tests runs each test executable once after linking.
 set(ENV{TSAN_OPTIONS}
     "halt_on_error=1:second_deadlock_stack=1:suppressions=${CMAKE_CURRENT_LIST_DIR}/tsan_suppressions.txt")
-set(tests test_features test_registration_icp)
+set(tests test_features_tsan test_registration_icp)
 plumb_build_in_second_tree(${tree} ${what} ${tests} tsan_canary)
 execute_process(COMMAND ${tree}/tests/unit/tsan/tsan_canary RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
 if(rc EQUAL 0 OR NOT err MATCHES "WARNING: ThreadSanitizer: data race")
@@ -37,6 +37,6 @@ message(STATUS "tsan_canary: its deliberate race is reported")
 # OpenMP (two threads, fixed) inside libpcl_features and libgomp, neither instrumented (TSan
 # misses OpenMP's barriers and reports PCL's own buffers); the other Planes/Openings/Segments
 # tests run the same loops again on other scenes.
-plumb_run_in_second_tree(${tree} test_features ${what}
+plumb_run_in_second_tree(${tree} test_features_tsan ${what}
                          "--gtest_filter=Planes.MsacFindsEveryFaceOfANoisyRoom:Openings.RayTracingFindsTheWindowAndInteriorPoints:Segments.RoomEdgesAreFoundWithinTwoCentimetres:Voxel*")
 plumb_run_in_second_tree(${tree} test_registration_icp ${what} "--gtest_filter=IcpRefinement.*:PointToPlane.*")
