@@ -30,8 +30,6 @@ const ParamSchema<CandidateParams>& CandidateParams::schema() {
                 "... explaining at least this much less of it ...", true)
           .real(&P::min_structure_ratio, "structure-ratio", "Structure unexplained ratio", "",
                 1.0, 100.0, "... and leaving this many times more of it unexplained", true)
-          .real(&P::structure_min_area, "structure-area", "Structure plane area", "m2", 0.5,
-                100.0, "Planes of the source at least this large are its structure", true)
           .real(&P::min_cost_gap, "cost-gap", "Clear fit cost gap", "", 0.0, 1.0,
                 "Or: its refined fit cost is higher by this ...", true)
           .real(&P::min_cost_ratio, "cost-ratio", "Clear fit cost ratio", "", 1.0, 100.0,

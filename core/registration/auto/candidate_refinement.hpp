@@ -45,7 +45,8 @@ struct CandidateParams {
   /// Near-whole fits: when the better placement explains at least this fraction of the
   /// source, [0, 1], the overlap gap alone (min_overlap_gap) counts only if the structure
   /// agrees (structure_overlap.hpp): the worse placement explains at least min_structure_gap
-  /// less of the source's large-plane points, [0, 1], ...
+  /// less of the source's large-plane points (planes of at least the free-space check's
+  /// VisibilityParams::structure_min_area), [0, 1], ...
   double near_whole_overlap = 0.8;
   double min_structure_gap = 0.002;
   /// ... and leaves at least this many times more of them unexplained, [1, 100]. Measured
@@ -53,8 +54,6 @@ struct CandidateParams {
   /// between copies of a room give 0.0009 and 1.01 times; a half turn or a storey copy of a
   /// house room, 0.0035-0.012 and 1.26-1.6 times.
   double min_structure_ratio = 1.12;
-  /// Large planes: at least this area, m^2, [0.5, 100].
-  double structure_min_area = 4.0;
   /// its refined fit cost (RefineResult::fit_cost) is higher by at least this, [0, 1], ...
   double min_cost_gap = 0.02;
   /// ... and at least this many times the other's, [1, 100].

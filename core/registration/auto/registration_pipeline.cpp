@@ -273,11 +273,11 @@ const PointCloud* copySearchTarget(const RegistrationSide& target, const Pipelin
   return &storage;
 }
 
-/// The copies of the placed source in the target (copy_search.hpp), when enabled.
+/// The copies of the placed source in the target (copy_search.hpp); `tc` comes from
+/// copySearchTarget, which is null when the search is off.
 std::vector<Hypothesis> copiesOf(const PointCloud& sc, const PointCloud& tc,
                                  const RigidTransform& chosen, const PipelineParams& p,
                                  std::vector<std::string>& log) {
-  if (!p.candidates.copy_search || p.candidates.copy_max == 0) return {};
   CopySearchParams cp;
   cp.cell = p.candidates.copy_cell;
   cp.min_fraction = p.candidates.copy_min_fraction;
@@ -347,7 +347,7 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
       refineHypotheses(*sc, tc, prepared, rp, out, target.isModel(), p, compare, progress);
   if (compare)
     measureStructureOverlap(structurePoints(*sc, out.source_features.planes,
-                                            p.candidates.structure_min_area),
+                                            p.visibility.structure_min_area),
                             prepared, rp, h);
   const bool global_chose = g.ok();
   const Eigen::Vector3d centroid = sc->bounds().center();
