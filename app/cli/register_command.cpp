@@ -208,10 +208,7 @@ void writeRegistered(const RegisterOptions& o, const Side& src, const RigidTrans
       printWritten(f.path, f.points, f.scans, f.report);
   } else if (auto* d = std::get_if<Dataset>(&src.data)) {
     Dataset moved = *d;
-    for (auto& scan : moved.scans) {
-      scan.pose = T * scan.pose;
-      scan.has_pose = true;
-    }
+    moved.transform(T);
     WriteReport written;
     WriteOptions options;
     options.report = &written;

@@ -49,6 +49,13 @@ PointCloud Dataset::merged(bool with_sensor_origins) const {
   return out;
 }
 
+void Dataset::transform(const RigidTransform& T) {
+  for (auto& scan : scans) {
+    scan.pose = T * scan.pose;
+    scan.has_pose = true;
+  }
+}
+
 Dataset Dataset::fromCloud(PointCloud cloud, std::string name) {
   Dataset d;
   Scan s;

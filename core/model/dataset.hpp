@@ -36,6 +36,9 @@ struct Dataset {
   /// Static scans without per-point sensor origins get sensor_origins set from their pose
   /// when `with_sensor_origins` is true.
   PointCloud merged(bool with_sensor_origins = false) const;
+  /// Moves the whole dataset by `T`: every scan's pose becomes T * pose (exact, in double; the
+  /// points stay in their scan frames).
+  void transform(const RigidTransform& T);
   /// A single-scan dataset wrapping a cloud (identity pose).
   static Dataset fromCloud(PointCloud cloud, std::string name = "scan");
 };

@@ -15,10 +15,7 @@ RigidTransform randomPerturbation(double yaw_max_deg, double shift_max_m, std::u
 }
 
 RigidTransform perturbDataset(Dataset& data, const RigidTransform& perturbation) {
-  for (auto& scan : data.scans) {
-    scan.pose = perturbation * scan.pose;
-    scan.has_pose = true;
-  }
+  data.transform(perturbation);
   return perturbation.inverse();
 }
 

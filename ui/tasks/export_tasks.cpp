@@ -33,10 +33,7 @@ Task* exportRegisteredDataset(AppContext& app, const Layer& layer, const QString
   Task* task = app.tasks.run(QObject::tr("Exporting %1").arg(layer.name()),
                              [&app, data, T, path](Progress& progress) -> Task::Apply {
                                Dataset moved = *data;
-                               for (auto& scan : moved.scans) {
-                                 scan.pose = T * scan.pose;
-                                 scan.has_pose = true;
-                               }
+                               moved.transform(T);
                                WriteReport report;
                                WriteOptions options;
                                options.report = &report;

@@ -225,6 +225,26 @@ TEST(Dataset, MergedScansWithGridPosesKeepSubMillimetre) {
   EXPECT_LT((d.bounds().min - m.bounds().min).norm(), 0.01);
 }
 
+TEST(Dataset, TransformMovesEveryScanPoseExactly) {
+  // A registration result applied to a two-station dataset in Lambert-93: poses composed in
+  // double, points untouched, a scan without a pose gets one.
+  Dataset d;
+  d.scans.resize(2);
+  d.scans[0].pose = RigidTransform::fromYaw(0.4, {651000.1234, 6860000.5678, 40.25});
+  d.scans[0].has_pose = true;
+  d.scans[1].cloud.positions = {{1.5f, -2.25f, 0.5f}};
+  const RigidTransform T = RigidTransform::fromYaw(-1.1, {12.0625, -3.5, 0.125});
+  const Dataset before = d;
+  d.transform(T);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const RigidTransform expected = T * before.scans[i].pose;
+    EXPECT_TRUE(d.scans[i].has_pose);
+    EXPECT_LT((d.scans[i].pose.translation() - expected.translation()).norm(), 1e-9);
+    EXPECT_LT(RigidTransform::rotationErrorDeg(d.scans[i].pose, expected), 1e-9);
+    EXPECT_EQ(d.scans[i].cloud.positions, before.scans[i].cloud.positions);
+  }
+}
+
 TEST(PointCloud, AppendKeepsLasFieldsPresentOnOneSideOnly) {
   // The LAS reader leaves an all-zero field out, so a merge of a scan that has point source
   // IDs with one that has none must keep them (0 for the other scan), not drop the column.
