@@ -1,16 +1,17 @@
-// plumb-cli network INPUTS... [--reference NAME] [-o REGISTERED.e57] [--report REPORT.json]
+// plumb-cli network INPUTS... [--reference NAME | --model BIM] [-o REGISTERED.e57] [--report REPORT.json]
 //   [--transforms DIR] [--set GROUP.KEY=VALUE]... [--seed N] [--print-params]
 // Registers the stations of a campaign as one network (issue 15, docs/NETWORK.md): each data3D
 // of each E57 input, and each scan of any other point file, is a station with its own pose.
 // Candidate pairs are registered with the pipeline, then a robust pose-graph adjustment
 // (Ceres, Cauchy loss) places every station relative to the reference (default: the first
-// station), which keeps its pose in its file. Links that disagree with the network are flagged
-// and dropped.
+// station), which keeps its pose in its file; with --model, every station is also registered
+// onto the BIM, which is then the reference (the stations come out in the model frame). Links
+// that disagree with the network are flagged and dropped.
 // Outputs: -o a multi-scan E57 of the stations with their adjusted poses (not merged);
 // --transforms DIR one <station>.json per station (its file frame -> the registered frame);
 // --report the JSON report (network_report.hpp), written also when the network fails.
 // Exit: 0 every station placed; 3 placed but a kept link disagrees (check visually); 2 a
-// station could not be placed: the parts are reported, -o and --transforms are not written
+// station could not be placed, or is ambiguous (two loop-checked placements): the parts are reported, -o and --transforms are not written
 // (existing files stay untouched); 1 bad input or parameters.
 // Parameters: --set pair-selection.KEY, link-weights.KEY, pose-graph.KEY, or any registration
 // parameter (GROUP.KEY / KEY as in plumb-cli register) for the links.
@@ -34,7 +35,7 @@ namespace {
 
 struct NetworkOptions {
   std::vector<std::string> inputs, settings;
-  std::string reference, output, report, transforms, seed;
+  std::string reference, model, output, report, transforms, seed;
   bool print_params = false;
 };
 
@@ -67,11 +68,12 @@ std::vector<Station> loadStations(const NetworkOptions& o, std::vector<Dataset>&
   for (const auto& path : o.inputs) {
     LoadedData data = readFile(path);
     if (!std::holds_alternative<Dataset>(data))
-      throw FileError(path, "is a model: BIM constraints are not part of `network` yet; give scan files");
+      throw FileError(path, "is a model: give it with --model (every station is then registered onto it)");
     datasets.push_back(std::move(std::get<Dataset>(data)));
     for (auto& s : stationsOf(datasets.back(), path)) stations.push_back(std::move(s));
   }
   makeStationNamesUnique(stations);
+  if (!o.model.empty()) stations.push_back(modelStation(readModel(o.model), o.model));  // last: the reference
   return stations;
 }
 
@@ -105,9 +107,9 @@ void writeResults(const NetworkOptions& o, const NetworkResult& r, const std::ve
   if (!o.transforms.empty()) {
     std::filesystem::create_directories(o.transforms);
     for (std::size_t i = 0; i < stations.size(); ++i)
-      writeTransformFile(std::filesystem::path(o.transforms) / fileNameOf(stations[i].name),
+      if (!stations[i].is_model) writeTransformFile(std::filesystem::path(o.transforms) / fileNameOf(stations[i].name),
                          *stationTransform(r, stations, i));
-    std::cout << "wrote " << stations.size() << " transforms to " << o.transforms << "\n";
+    std::cout << "wrote " << stations.size() - (o.model.empty() ? 0 : 1) << " transforms to " << o.transforms << "\n";
   }
 }
 
@@ -121,9 +123,13 @@ int run(const NetworkOptions& o) {
   checkOutputs(o);
   std::vector<Dataset> datasets;
   std::vector<Station> stations = loadStations(o, datasets);
-  const std::size_t reference = o.reference.empty() ? 0 : findStation(stations, o.reference);
+  if (!o.model.empty() && !o.reference.empty())
+    throw InputError("network: --model and --reference exclude each other (with a model, the model is the reference)");
+  const std::size_t reference = !o.model.empty()     ? stations.size() - 1
+                                : o.reference.empty() ? 0
+                                                      : findStation(stations, o.reference);
   if (stations.size() < 2) throw InputError("network: the inputs hold " + std::to_string(stations.size()) +
-                                            " station(s); a network needs at least two");
+                                            " station(s); a network needs at least two (or one and --model)");
   const bool tty = isatty(2);
   Progress progress([tty](double f, std::string_view stage) {
     if (tty) std::cerr << "\r[" << int(f * 100) << "%] " << stage << "\033[K" << std::flush;
@@ -139,10 +145,20 @@ int run(const NetworkOptions& o) {
   std::cout << networkReportToText(r, stations);
   const int code = networkExitCode(r);
   if (code == 2) {
-    std::cerr << "plumb-cli: network incomplete: " << r.unplaced.size() << " station(s) could not be placed:";
-    for (std::size_t i : r.unplaced) std::cerr << " " << stations[i].name;
-    std::cerr << " (no accepted link joins them to the reference " << stations[reference].name << ")"
-              << (o.output.empty() && o.transforms.empty() ? "" : "; no output written") << "\n";
+    std::cerr << "plumb-cli: network incomplete:";
+    if (!r.unplaced.empty()) {
+      std::cerr << " " << r.unplaced.size() << " station(s) could not be placed:";
+      for (std::size_t i : r.unplaced) std::cerr << " " << stations[i].name;
+      std::cerr << " (no accepted link joins them to the reference " << stations[reference].name << ")";
+    }
+    if (!r.ambiguous.empty()) {
+      std::cerr << (r.unplaced.empty() ? " " : "; ") << r.ambiguous.size() << " station(s) ambiguous:";
+      for (std::size_t i : r.ambiguous) std::cerr << " " << stations[i].name;
+      std::cerr << " (identical rooms or a symmetric building: the links or the BIM place them in more than one"
+                   " way; add a station that sees what tells them apart, or control: see \"ambiguous_why\" and"
+                   " \"competing\" in the report)";
+    }
+    std::cerr << (o.output.empty() && o.transforms.empty() ? "" : "; no output written") << "\n";
     return code;
   }
   if (code == 3) std::cerr << "plumb-cli: check visually (exit 3): a kept link disagrees with the network (see FLAGGED)\n";
@@ -157,6 +173,10 @@ void addNetworkCommand(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("network", "Register the stations of a campaign as one network (pose graph)");
   cmd->add_option("INPUTS", o->inputs, "Scan files; each data3D of an E57 is a station")->check(CLI::ExistingFile);
   cmd->add_option("--reference", o->reference, "Station that keeps its pose (default: the first)");
+  cmd->add_option("--model", o->model,
+                  "BIM (IFC, OBJ, PLY mesh...): every station is also registered onto it, and the stations "
+                  "come out in the model's frame")
+      ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", o->output, "Write the registered stations as one multi-scan E57 with their poses");
   cmd->add_option("--report", o->report, "Write the network report (JSON)");
   cmd->add_option("--transforms", o->transforms, "Write each station's transform (<station>.json) to this directory");

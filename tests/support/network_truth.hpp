@@ -1,7 +1,8 @@
 #pragma once
 // Station errors of a network registration against a simulation's truth.json (plumb-cli
 // simulate --perturb-stations): the registered frame is the reference station's file frame,
-// so station i's true pose there is G_ref^-1 * true_pose_i (G: file frame -> model frame).
+// so station i's true pose there is G_ref^-1 * true_pose_i (G: file frame -> model frame); with
+// --model it is the model frame, where the true pose is true_pose_i.
 // Shared by the network integration test and bench_network.
 #include <nlohmann/json.hpp>
 
@@ -35,7 +36,9 @@ inline std::vector<StationError> stationErrors(const nlohmann::json& truth, cons
                                                const std::map<std::string, std::optional<RigidTransform>>& poses) {
   std::map<std::string, nlohmann::json> scans;
   for (const auto& s : truth["scans"]) scans[s["scan"].get<std::string>()] = s;
-  const RigidTransform to_registered = matrixOf(scans.at(reference)["transform"]).inverse();
+  // With a model as the reference (network --model), the registered frame is the model frame.
+  const RigidTransform to_registered =
+      scans.count(reference) ? matrixOf(scans.at(reference)["transform"]).inverse() : RigidTransform();
   std::vector<StationError> out;
   for (const auto& [name, pose] : poses) {
     StationError e;
@@ -56,6 +59,7 @@ inline std::vector<StationError> reportErrors(const nlohmann::json& truth, const
   std::map<std::string, std::optional<RigidTransform>> poses;
   std::map<std::string, Eigen::Vector3d> sigma;
   for (const auto& s : report["stations"]) {
+    if (s.value("model", false)) continue;  // the BIM node
     const std::string name = s["name"];
     poses[name] = s["placed"].get<bool>() ? std::optional<RigidTransform>(matrixOf(s["pose"])) : std::nullopt;
     if (s.contains("sigma_position_m"))

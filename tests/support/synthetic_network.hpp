@@ -68,6 +68,14 @@ inline void addStackedClique(SyntheticNetwork& net, const std::vector<std::size_
     }
 }
 
+/// The adjustment's parameters of these tests: drop thresholds 5 cm and 0.2 deg.
+inline PoseGraphParams graphParams() {
+  PoseGraphParams p;
+  p.drop_translation = 0.05;
+  p.drop_rotation = 0.2;
+  return p;
+}
+
 /// Largest position error of the placed stations (m); unplaced stations count as infinite.
 inline double maxPositionError(const std::vector<std::optional<RigidTransform>>& poses,
                                const std::vector<RigidTransform>& truth) {

@@ -19,13 +19,22 @@ Link registerLink(const Station& a, const Station& b, const CandidatePair& pair,
   link.b = pair.b;
   link.reason = pair.reason;
   link.similarity = pair.similarity;
-  const PipelineResult r = registerData(b.input.side(), a.input.side(), params.link);
+  // A scan onto the BIM, never the BIM onto a scan: the pipeline's model target path (its
+  // planes, openings, copy search) is the one calibrated (docs/VERDICT.md).
+  // The station's features are detected again there, with the segments a model target needs
+  // (its stored features have none), so the link is exactly plumb-cli register onto the model.
+  const bool onto_model = b.is_model;
+  RegistrationSide station = a.input.side();
+  station.features = nullptr;
+  const PipelineResult r = onto_model ? registerData(station, b.input.side(), params.link)
+                                      : registerData(b.input.side(), a.input.side(), params.link);
   link.level = r.report.level;
   link.verdict = r.report.verdict;
+  link.status = r.report.status;
   link.method = r.method_used;
   link.warnings = r.report.warnings;
   link.registered = r.success();
-  link.transform = r.transform();
+  link.transform = onto_model ? r.transform().inverse() : r.transform();
   link.overlap = r.report.overlap_ratio;
   link.point_rms = r.report.point_rms;
   link.weakest_resistance = *std::min_element(r.report.direction_resistance.begin(), r.report.direction_resistance.end());

@@ -21,6 +21,7 @@ struct Link {
   bool accepted = false;     ///< used in the adjustment (registered, and verdict accepted)
   VerdictLevel level = VerdictLevel::Failed;
   std::string verdict, method;
+  std::string status;  ///< the pipeline's status ("success", "ambiguous", "too few features", ...)
   std::vector<std::string> warnings;
   double overlap = 0.0;             ///< fraction of b's points matched
   double point_rms = 0.0;           ///< m
@@ -31,7 +32,8 @@ struct Link {
   double seconds = 0.0;
 };
 
-/// Registers station b onto station a with params.link and weighs the result.
+/// Registers station b onto station a with params.link and weighs the result (when b is the
+/// model, a onto the model, the transform inverted).
 Link registerLink(const Station& a, const Station& b, const CandidatePair& pair, const NetworkParams& params);
 
 /// sigma_t = max(min_sigma, rms_factor * point_rms) / sqrt(min(1, weakest / full_resistance));

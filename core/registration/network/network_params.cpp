@@ -55,7 +55,10 @@ const ParamSchema<PoseGraphParams>& PoseGraphParams::schema() {
           .real(&P::triangle_tolerance, "triangle-tolerance", "Triangle tolerance", "m", 1e-4, 10.0,
                 "A triangle of links closes within this (orders the initial spanning tree)", true)
           .integer(&P::max_iterations, "max-iterations", "Max iterations", "", 1, 10000,
-                   "Solver iterations", true);
+                   "Solver iterations", true)
+          .boolean(&P::check_competing, "check-competing", "Check competing placements",
+                   "Re-solve with each dropped link taken as true; stations a loop-checked alternative "
+                   "places differently are ambiguous (not placed)");
   return s;
 }
 

@@ -64,6 +64,10 @@ struct PoseGraphParams {
   double triangle_tolerance = 0.05;
   /// Solver iterations, [1, 10000].
   int max_iterations = 200;
+  /// After the adjustment, re-solve the network once per dropped link with that link taken as
+  /// true (competing_placements.hpp): stations a loop-checked alternative places differently
+  /// (beyond the drop thresholds) are ambiguous, reported and not placed.
+  bool check_competing = true;
   static const ParamSchema<PoseGraphParams>& schema();
 };
 

@@ -1,5 +1,6 @@
 #include "registration/network/network_registration.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <set>
 
@@ -34,14 +35,41 @@ void registerPairs(const std::vector<Station>& stations, const std::vector<Candi
   }
 }
 
+/// Scan stations: all but a model, which is last.
+std::size_t scanStations(const std::vector<Station>& stations) {
+  return !stations.empty() && stations.back().is_model ? stations.size() - 1 : stations.size();
+}
+
+/// Layout similarity of every node pair; the model is similar to nothing (it is paired with
+/// every scan station anyway).
+std::vector<std::vector<double>> nodeSimilarity(const std::vector<Station>& stations) {
+  std::vector<LayoutDescriptor> layouts;
+  for (const auto& s : stations) layouts.push_back(s.layout);
+  auto similarity = similarityMatrix(layouts);
+  for (std::size_t i = scanStations(stations); i < stations.size(); ++i)
+    for (std::size_t j = 0; j < stations.size(); ++j)
+      if (j != i) similarity[i][j] = similarity[j][i] = 0.0;
+  return similarity;
+}
+
+/// Layout and sequence pairs among the scan stations, then every scan station with the model.
+std::vector<CandidatePair> firstPairs(const std::vector<Station>& stations,
+                                      const std::vector<std::vector<double>>& similarity,
+                                      const PairSelectionParams& params) {
+  const std::size_t n = scanStations(stations);
+  std::vector<std::vector<double>> scans(n);
+  for (std::size_t i = 0; i < n; ++i) scans[i].assign(similarity[i].begin(), similarity[i].begin() + long(n));
+  std::vector<CandidatePair> pairs = initialPairs(scans, params);
+  for (std::size_t i = 0; i < n && n < stations.size(); ++i) pairs.push_back({i, n, 0.0, "model"});
+  return pairs;
+}
+
 /// Pair rounds: the initial pairs, then expansions while the accepted links leave parts apart.
 void registerLinks(const std::vector<Station>& stations, const NetworkParams& params, NetworkResult& out,
                    Progress* progress) {
-  std::vector<LayoutDescriptor> layouts;
-  for (const auto& s : stations) layouts.push_back(s.layout);
-  const auto similarity = similarityMatrix(layouts);
+  const auto similarity = nodeSimilarity(stations);
   std::set<std::pair<std::size_t, std::size_t>> tried;
-  std::vector<CandidatePair> pairs = initialPairs(similarity, params.pairs);
+  std::vector<CandidatePair> pairs = firstPairs(stations, similarity, params.pairs);
   while (!pairs.empty()) {
     ++out.rounds;
     registerPairs(stations, pairs, params, out, tried, progress);
@@ -51,15 +79,47 @@ void registerLinks(const std::vector<Station>& stations, const NetworkParams& pa
   }
 }
 
+}  // namespace
+
+std::vector<std::size_t> copiesUnchecked(const std::vector<Station>& stations, const NetworkResult& r) {
+  if (stations.empty() || !stations.back().is_model) return {};
+  const std::size_t model = stations.size() - 1;
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < model; ++i) {
+    if (!r.adjustment.poses[i]) continue;
+    bool copies = false, checked = false;
+    for (const auto& l : r.links)
+      if (l.a == i && l.b == model) copies = l.status == "ambiguous" && !l.accepted;
+    for (std::size_t k = 0; k < r.adjusted.size(); ++k) {
+      const Link& l = r.links[r.adjusted[k]];
+      const LinkOutcome& o = r.adjustment.links[k];
+      if ((l.a == i || l.b == i) && !o.dropped && !o.bridge) checked = true;
+    }
+    if (copies && !checked) out.push_back(i);
+  }
+  return out;
+}
+
+namespace {
+
 void adjust(const std::vector<Station>& stations, const NetworkParams& params, NetworkResult& out) {
   std::vector<AdjustmentLink> links;
   for (std::size_t k = 0; k < out.links.size(); ++k) {
     const Link& l = out.links[k];
     if (!l.accepted) continue;
     out.adjusted.push_back(k);
-    links.push_back({l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg, l.reason == "sequence"});
+    links.push_back({l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg, l.reason == "sequence",
+                     stations[l.a].is_model || stations[l.b].is_model});
   }
-  out.adjustment = adjustNetwork(stations.size(), links, out.reference, stations[out.reference].file_pose, params.graph);
+  const RigidTransform& reference_pose = stations[out.reference].file_pose;
+  out.adjustment = adjustNetwork(stations.size(), links, out.reference, reference_pose, params.graph);
+  if (params.graph.check_competing)
+    out.competing = findCompetingPlacements(stations.size(), links, out.reference, reference_pose, params.graph,
+                                            out.adjustment);
+  out.copies_unchecked = copiesUnchecked(stations, out);
+  std::set<std::size_t> ambiguous(out.competing.ambiguous.begin(), out.competing.ambiguous.end());
+  ambiguous.insert(out.copies_unchecked.begin(), out.copies_unchecked.end());
+  out.ambiguous.assign(ambiguous.begin(), ambiguous.end());
   for (std::size_t i = 0; i < stations.size(); ++i)
     if (!out.adjustment.poses[i]) out.unplaced.push_back(i);
   std::vector<GraphEdge> kept;
@@ -71,6 +131,10 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, N
 }
 
 }  // namespace
+
+bool NetworkResult::placed(std::size_t i) const {
+  return adjustment.poses.at(i).has_value() && !std::binary_search(ambiguous.begin(), ambiguous.end(), i);
+}
 
 std::size_t findStation(const std::vector<Station>& stations, const std::string& name) {
   std::string names;
@@ -86,6 +150,10 @@ NetworkResult registerNetwork(const std::vector<Station>& stations, std::size_t 
   validateNetworkParams(params);
   if (stations.size() < 2) throw InputError("a network needs at least two stations, got " + std::to_string(stations.size()));
   if (reference >= stations.size()) throw InputError("the reference station index is out of range");
+  for (std::size_t i = 0; i + 1 < stations.size(); ++i)
+    if (stations[i].is_model) throw InputError("the model must be the last node of a network, and only one");
+  if (stations.back().is_model && reference != stations.size() - 1)
+    throw InputError("with a model, the model is the reference: its frame is the output frame");
   NetworkResult out;
   out.reference = reference;
   out.all_pairs = stations.size() * (stations.size() - 1) / 2;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/progress.hpp"
+#include "registration/network/competing_placements.hpp"
 #include "registration/network/link.hpp"
 #include "registration/network/robust_adjustment.hpp"
 #include "registration/network/station.hpp"
@@ -24,8 +25,21 @@ struct NetworkResult {
   double seconds_features = 0.0, seconds_links = 0.0, seconds_adjustment = 0.0;
   std::vector<std::size_t> unplaced;   ///< stations not joined to the reference
   std::vector<std::vector<std::size_t>> parts;  ///< the accepted links' connected parts
-  bool complete() const { return unplaced.empty(); }
+  /// Alternatives with each dropped link taken as true; its `ambiguous` stations have two
+  /// loop-checked placements (competing_placements.hpp).
+  CompetingPlacements competing;
+  /// Stations the BIM places in several copies (their registration onto it was ambiguous)
+  /// that only links no loop checks (bridges) place: one unchecked link chose the copy.
+  std::vector<std::size_t> copies_unchecked;
+  /// Sorted union of competing.ambiguous and copies_unchecked: adjusted, but not placed.
+  std::vector<std::size_t> ambiguous;
+  bool placed(std::size_t i) const;  ///< adjusted and not ambiguous
+  bool complete() const { return unplaced.empty() && ambiguous.empty(); }
 };
+
+/// Placed stations whose registration onto the BIM (the last station, when it is a model)
+/// failed as ambiguous and whose kept links are all bridges (NetworkResult::copies_unchecked).
+std::vector<std::size_t> copiesUnchecked(const std::vector<Station>& stations, const NetworkResult& result);
 
 /// Index of the station named `name`; throws InputError listing the names when none is.
 std::size_t findStation(const std::vector<Station>& stations, const std::string& name);

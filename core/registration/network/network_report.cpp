@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -22,7 +23,7 @@ nlohmann::json linkJson(const NetworkResult& r, const std::vector<Station>& st, 
   const Link& l = r.links[k];
   nlohmann::json j = {{"a", st[l.a].name}, {"b", st[l.b].name}, {"reason", l.reason},
                       {"similarity", l.similarity}, {"method", l.method},
-                      {"verdict_level", verdictLevelName(l.level)}, {"verdict", l.verdict},
+                      {"verdict_level", verdictLevelName(l.level)}, {"verdict", l.verdict}, {"status", l.status},
                       {"warnings", l.warnings}, {"overlap", l.overlap}, {"point_rms_m", l.point_rms},
                       {"weakest_resistance", l.weakest_resistance}, {"sigma_translation_m", l.sigma_translation},
                       {"sigma_rotation_deg", l.sigma_rotation_deg}, {"accepted", l.accepted},
@@ -46,9 +47,15 @@ nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& s
   nlohmann::json links = nlohmann::json::array();
   for (std::size_t k = 0; k < r.links.size(); ++k)
     if (r.links[k].a == i || r.links[k].b == i) links.push_back(k);
+  const bool ambiguous = std::binary_search(r.ambiguous.begin(), r.ambiguous.end(), i);
   nlohmann::json j = {{"name", st[i].name}, {"file", st[i].file}, {"scan", st[i].scan_index},
-                      {"placed", r.adjustment.poses[i].has_value()}, {"links", links}};
-  if (const auto& p = r.adjustment.poses[i]) {
+                      {"placed", r.placed(i)}, {"ambiguous", ambiguous}, {"model", st[i].is_model},
+                      {"links", links}};
+  if (ambiguous)
+    j["ambiguous_why"] = std::binary_search(r.competing.ambiguous.begin(), r.competing.ambiguous.end(), i)
+                             ? "competing: loop-checked links place it in two ways"
+                             : "copies: the BIM fits it in several places and only links no loop checks chose one";
+  if (const auto& p = r.adjustment.poses[i]) {  // an ambiguous station keeps the adopted pose, for inspection
     j["pose"] = matrixJson(*p);
     j["transform"] = matrixJson(*stationTransform(r, st, i));
     j["sigma_position_m"] = vec(r.adjustment.sigma_position[i]);
@@ -80,6 +87,17 @@ nlohmann::json loopsJson(const NetworkResult& r, const std::vector<Station>& st,
   return loops;
 }
 
+nlohmann::json competingJson(const NetworkResult& r, const std::vector<Station>& st) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& c : r.competing.alternatives)
+    out.push_back({{"link", r.adjusted[c.link]}, {"corroborated", c.corroborated}, {"competes", c.competes},
+                   {"links_dropped", c.dropped}, {"sequence_links_dropped", c.dropped_sequence},
+                   {"model_links_dropped", c.dropped_anchors},
+                   {"stations_moved", names(st, c.stations)}, {"max_translation_m", c.max_translation},
+                   {"max_rotation_deg", c.max_rotation_deg}});
+  return out;
+}
+
 nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& st) {
   MeanMax lt, lr, res;
   nlohmann::json loops = loopsJson(r, st, lt, lr);
@@ -99,7 +117,9 @@ nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& s
           {"loop_translation_mean_m", lt.mean()}, {"loop_translation_max_m", lt.max},
           {"loop_rotation_mean_deg", lr.mean()}, {"loop_rotation_max_deg", lr.max},
           {"residual_translation_mean_m", res.mean()}, {"residual_translation_max_m", res.max},
-          {"unplaced", names(st, r.unplaced)}, {"parts", parts}, {"solves", r.adjustment.solves},
+          {"unplaced", names(st, r.unplaced)}, {"ambiguous", names(st, r.ambiguous)},
+          {"copies_unchecked", names(st, r.copies_unchecked)},
+          {"competing", competingJson(r, st)}, {"parts", parts}, {"solves", r.adjustment.solves},
           {"converged", r.adjustment.converged}, {"covariance", r.adjustment.covariance_ok},
           {"solver", r.adjustment.message}, {"seconds_features", r.seconds_features},
           {"seconds_links", r.seconds_links}, {"seconds_adjustment", r.seconds_adjustment}};
@@ -115,7 +135,7 @@ int networkExitCode(const NetworkResult& r) {
 }
 
 std::optional<RigidTransform> stationTransform(const NetworkResult& r, const std::vector<Station>& st, std::size_t i) {
-  if (!r.adjustment.poses[i]) return std::nullopt;
+  if (!r.adjustment.poses[i]) return std::nullopt;  // ambiguous stations keep it (the report shows it)
   return *r.adjustment.poses[i] * st[i].file_pose.inverse();
 }
 
@@ -137,6 +157,7 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
   for (const auto& l : j["links"]) {
     o << "link " << l["a"].get<std::string>() << " - " << l["b"].get<std::string>() << ": "
       << l["verdict_level"].get<std::string>() << " (" << l["method"].get<std::string>() << ")";
+    if (!l["accepted"].get<bool>() && l["status"] != "success") o << " " << l["status"].get<std::string>();
     if (l["accepted"].get<bool>())
       o << std::setprecision(1) << ", overlap " << 100 * l["overlap"].get<double>() << "%, RMS "
         << 1000 * l["point_rms_m"].get<double>() << " mm, residual " << 1000 * l.value("residual_translation_m", 0.0)
@@ -148,6 +169,10 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
   }
   for (const auto& s : j["stations"]) {
     o << "station " << s["name"].get<std::string>() << ": ";
+    if (s["ambiguous"].get<bool>()) {
+      o << "AMBIGUOUS (" << s["ambiguous_why"].get<std::string>() << ")\n";
+      continue;
+    }
     if (!s["placed"].get<bool>()) {
       o << "NOT PLACED (no accepted link joins it to the reference)\n";
       continue;
@@ -162,6 +187,14 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
     << " links accepted, " << n["links_dropped"].size() << " dropped; " << n["loop_closures"].size()
     << " loops, closure mean " << 1000 * n["loop_translation_mean_m"].get<double>() << " mm, max "
     << 1000 * n["loop_translation_max_m"].get<double>() << " mm\n";
+  for (const auto& c : n["competing"]) {
+    if (!c["competes"].get<bool>()) continue;
+    const auto& l = j["links"][c["link"].get<std::size_t>()];
+    o << "competing: with link " << l["a"].get<std::string>() << " - " << l["b"].get<std::string>()
+      << " taken as true, loops confirm a second placement moving " << c["stations_moved"].size()
+      << " station(s) by up to " << c["max_translation_m"].get<double>() << " m / "
+      << c["max_rotation_deg"].get<double>() << " deg\n";
+  }
   return o.str();
 }
 

@@ -2,10 +2,12 @@
 // The JSON report of a network registration (docs/NETWORK.md "Report"):
 // {"format": "plumb-network-report", "version": 1, "complete": bool, "exit_code": n,
 //  "reference": name,
-//  "stations": [{"name", "file", "scan", "placed", "pose": {"matrix"}, "transform": {"matrix"}
+//  "stations": [{"name", "file", "scan", "placed", "ambiguous", "ambiguous_why" (when ambiguous),
+//                "model" (the BIM node, last),
+//                "pose": {"matrix"}, "transform": {"matrix"}
 //                (file frame -> registered frame), "sigma_position_m": [x,y,z],
 //                "sigma_rotation_deg": [x,y,z], "links": [link indices]}],
-//  "links": [{"a", "b", "reason", "similarity", "method", "verdict_level", "verdict",
+//  "links": [{"a", "b", "reason", "similarity", "method", "verdict_level", "verdict", "status",
 //             "warnings", "overlap", "point_rms_m", "weakest_resistance", "sigma_translation_m",
 //             "sigma_rotation_deg", "accepted", "residual_translation_m", "residual_rotation_deg",
 //             "residual_sigma", "flagged", "dropped", "bridge" (a kept link no loop checks),
@@ -16,6 +18,10 @@
 //              "translation_m", "rotation_deg"}], "loop_translation_mean_m",
 //              "loop_translation_max_m", "loop_rotation_mean_deg", "loop_rotation_max_deg",
 //              "residual_translation_mean_m", "residual_translation_max_m", "unplaced": [names],
+//              "ambiguous": [names], "copies_unchecked": [names], "competing": [{"link",
+//              "corroborated", "competes", "links_dropped", "sequence_links_dropped",
+//              "model_links_dropped", "stations_moved": [names],
+//              "max_translation_m", "max_rotation_deg"}] (one per dropped link taken as true),
 //              "parts": [[names]], "solves", "converged", "covariance", "solver",
 //              "seconds_features", "seconds_links", "seconds_adjustment"}}
 #include <nlohmann/json_fwd.hpp>
@@ -27,7 +33,7 @@
 namespace plumb {
 
 /// 0: every station placed and no kept link flagged; 3: placed, a kept link flagged (check
-/// visually); 2: a station could not be placed.
+/// visually); 2: a station could not be placed or is ambiguous (competing_placements.hpp).
 int networkExitCode(const NetworkResult& result);
 
 /// Station i's transform: file frame -> registered frame (pose x file_pose^-1), if placed.

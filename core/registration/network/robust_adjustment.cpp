@@ -12,13 +12,16 @@ std::vector<GraphEdge> graphEdges(const std::vector<AdjustmentLink>& links, cons
   return edges;
 }
 
-/// Kept links (local indices) ordered for the initial tree: sequence links first, then most
+/// Kept links (local indices) ordered for the initial tree: forced links, then links to the BIM,
+/// then sequence links, then most
 /// closing triangles minus failing ones, then the smallest sigma.
 std::vector<std::size_t> treeOrder(const std::vector<AdjustmentLink>& links, const std::vector<std::size_t>& kept,
-                                   const std::vector<TriangleSupport>& support) {
+                                   const std::vector<TriangleSupport>& support, const std::vector<bool>& forced) {
   std::vector<std::size_t> order(kept.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+    if (forced[kept[x]] != forced[kept[y]]) return bool(forced[kept[x]]);
+    if (links[kept[x]].anchor != links[kept[y]].anchor) return links[kept[x]].anchor;
     if (links[kept[x]].sequence != links[kept[y]].sequence) return links[kept[x]].sequence;
     const int sx = support[x].closing - support[x].failing, sy = support[y].closing - support[y].failing;
     if (sx != sy) return sx > sy;
@@ -62,10 +65,10 @@ double dropRatio(const EdgeResidual& r, const PoseGraphParams& p) {
 std::vector<std::size_t> solveOnce(std::size_t stations, const std::vector<AdjustmentLink>& links,
                                    const std::vector<std::size_t>& kept, std::size_t reference,
                                    const RigidTransform& reference_pose, const PoseGraphParams& params,
-                                   NetworkAdjustment& out) {
+                                   const std::vector<bool>& forced, NetworkAdjustment& out) {
   const auto edges = graphEdges(links, kept);
   const auto support = triangleSupport(stations, edges, params.triangle_tolerance, params.drop_rotation);
-  const auto tree = spanningTree(stations, edges, treeOrder(links, kept, support));
+  const auto tree = spanningTree(stations, edges, treeOrder(links, kept, support, forced));
   out.poses = chainPoses(stations, edges, tree, reference, reference_pose);
   const PoseGraphSolution s = solvePoseGraph(problemFor(links, kept, out.poses, reference, params));
   ++out.solves;
@@ -86,12 +89,14 @@ std::vector<std::size_t> solveOnce(std::size_t stations, const std::vector<Adjus
   return tree;
 }
 
-/// Position in kept of the link furthest beyond the drop thresholds; kept.size() if none is.
+/// Position in kept of the link furthest beyond the drop thresholds (forced links excepted);
+/// kept.size() if none is.
 std::size_t worstBeyondDrop(const std::vector<std::size_t>& kept, const NetworkAdjustment& out,
-                            const PoseGraphParams& params) {
+                            const PoseGraphParams& params, const std::vector<bool>& forced) {
   std::size_t worst = kept.size();
   double worst_ratio = 1.0;
   for (std::size_t i = 0; i < kept.size(); ++i) {
+    if (forced[kept[i]]) continue;
     const double ratio = dropRatio(out.links[kept[i]].residual, params);
     if (ratio > worst_ratio) worst_ratio = ratio, worst = i;
   }
@@ -118,17 +123,19 @@ void summarise(std::size_t stations, const std::vector<AdjustmentLink>& links, c
 
 NetworkAdjustment adjustNetwork(std::size_t stations, const std::vector<AdjustmentLink>& links,
                                 std::size_t reference, const RigidTransform& reference_pose,
-                                const PoseGraphParams& params) {
+                                const PoseGraphParams& params, const std::vector<std::size_t>& forced_links) {
   NetworkAdjustment out;
   out.links.resize(links.size());
+  std::vector<bool> forced(links.size(), false);
+  for (std::size_t k : forced_links) forced.at(k) = true;
   std::vector<std::size_t> kept(links.size());
   for (std::size_t k = 0; k < kept.size(); ++k) kept[k] = k;
   const auto all_support = triangleSupport(stations, graphEdges(links, kept), params.triangle_tolerance,
                                            params.drop_rotation);
   for (std::size_t k = 0; k < links.size(); ++k) out.links[k].triangles = all_support[k];
   while (true) {
-    const auto tree = solveOnce(stations, links, kept, reference, reference_pose, params, out);
-    const std::size_t worst = params.auto_drop ? worstBeyondDrop(kept, out, params) : kept.size();
+    const auto tree = solveOnce(stations, links, kept, reference, reference_pose, params, forced, out);
+    const std::size_t worst = params.auto_drop ? worstBeyondDrop(kept, out, params, forced) : kept.size();
     if (worst == kept.size()) {
       summarise(stations, links, kept, tree, reference, reference_pose, params, out);
       return out;

@@ -1,6 +1,6 @@
 #pragma once
 // The robust network adjustment (docs/NETWORK.md): initial poses from a spanning tree of the
-// links (sequence links first, then by triangle support, then by weight), the pose graph solved with a Cauchy
+// links (links to the BIM first, then sequence links, then by triangle support, then by weight), the pose graph solved with a Cauchy
 // loss (pose_graph.hpp), then the link whose residual disagrees most with the network beyond
 // the drop thresholds is dropped and the network solved again, until no link is beyond them.
 // Stations the kept links do not connect to the reference are not placed (reported, not forced).
@@ -21,6 +21,9 @@ struct AdjustmentLink {
   /// Stations shot one after the other (sequence neighbours): such links come first in the
   /// initial spanning tree (shot order is evidence the geometry of identical rooms cannot fake).
   bool sequence = false;
+  /// A station registered onto the BIM: absolute evidence, checked against copies of the
+  /// station elsewhere in the building by the pipeline's copy search.
+  bool anchor = false;
 };
 
 struct LinkOutcome {
@@ -47,8 +50,10 @@ struct NetworkAdjustment {
   std::string message;  ///< the last solver summary
 };
 
+/// `forced`: links (indices into `links`) taken as true: first in the initial tree and never
+/// dropped (competing_placements.hpp asks what the network says if a dropped link was right).
 NetworkAdjustment adjustNetwork(std::size_t stations, const std::vector<AdjustmentLink>& links,
                                 std::size_t reference, const RigidTransform& reference_pose,
-                                const PoseGraphParams& params);
+                                const PoseGraphParams& params, const std::vector<std::size_t>& forced = {});
 
 }  // namespace plumb

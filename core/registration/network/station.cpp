@@ -1,6 +1,7 @@
 #include "registration/network/station.hpp"
 
 #include <chrono>
+#include <filesystem>
 #include <map>
 
 #include "common/error.hpp"
@@ -27,6 +28,15 @@ std::vector<Station> stationsOf(const Dataset& data, const std::string& file) {
     out.push_back(std::move(s));
   }
   return out;
+}
+
+Station modelStation(const BimModel& model, const std::string& file) {
+  Station s;
+  s.name = "model:" + std::filesystem::path(file).stem().string();
+  s.file = file;
+  s.is_model = true;
+  s.input = makeRegistrationInput(model, RigidTransform());
+  return s;
 }
 
 void makeStationNamesUnique(std::vector<Station>& stations) {

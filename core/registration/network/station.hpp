@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "model/bim_model.hpp"
 #include "model/dataset.hpp"
 #include "registration/auto/registration_input.hpp"
 #include "registration/network/layout_descriptor.hpp"
@@ -20,7 +21,14 @@ struct Station {
   RegistrationInput input;      ///< points (station frame) and, once detected, features
   LayoutDescriptor layout;
   double seconds_features = 0.0;
+  /// The BIM (modelStation): a fixed node whose frame is the output frame; every scan station
+  /// is registered onto it. At most one, last in the station list.
+  bool is_model = false;
 };
+
+/// The BIM as a network node: its own frame is the model frame (file pose identity).
+/// Throws FileError when the model has no triangles.
+Station modelStation(const BimModel& model, const std::string& file);
 
 /// One station per scan of `data` (read from `file`): points in the scan's own frame; a scan
 /// with a pose is a static station whose scanner sits at its frame's origin. Throws FileError

@@ -1,4 +1,4 @@
-// bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic]
+// bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic] [--bim]
 // Simulates a campaign of the preset (a station in every ground-floor room and interior
 // doorway, shot as a walk: each next station the nearest one not yet scanned; --smoke: two
 // furnished rooms of 4 x 5 and 4.5 x 5 m plus a station in a corner of each room), perturbs every
@@ -8,16 +8,20 @@
 // rotation and position error against the truth for the network and for the best spanning-
 // tree chain of the same links, loop closures, and the time of each step. Exits 1 when a
 // station is unplaced or off by more than 0.02 deg / 5 mm (the acceptance targets).
+// --bim: every station is also registered onto the building's model, which is the reference
+// (errors in the model frame).
 // --synthetic: the adjustment alone on synthetic pose graphs (tests/support/synthetic_network):
 // 40 stations on a ring with chords, 1 mm / 0.005 deg noise on every link and one planted wrong
 // link (4 m, 180 deg); per seed: wrong link dropped, largest error of the network and of the
 // best spanning-tree chain of the same kept links, and the share of errors within 3 sigma.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <string>
 
 #include "registration/network/network_registration.hpp"
+#include "registration/network/network_report.hpp"
 #include "simulation/building_generator.hpp"
 #include "simulation/doorway_stations.hpp"
 #include "simulation/presets.hpp"
@@ -35,6 +39,7 @@ struct Options {
   std::uint64_t first_seed = 1;
   bool smoke = false;
   bool synthetic = false;
+  bool bim = false;  ///< also register every station onto the building's model (the reference)
 };
 
 struct Campaign {
@@ -64,20 +69,27 @@ Campaign simulate(const GeneratedBuilding& b, const Options& o, std::uint64_t se
 struct Worst {
   double rotation_deg = 0.0, translation_m = 0.0;
   int unplaced = 0;
+  int wrong = 0;  ///< placed stations off by more than 0.2 deg or 5 cm (the drop thresholds)
 };
 
-/// Largest error of `poses` against the truth, in the reference station's file frame.
-Worst worstError(const std::vector<std::optional<RigidTransform>>& poses, const SimulatedDataset& d, std::size_t ref) {
-  const RigidTransform to_registered = d.scan_truths[ref].inverse();
+/// Largest error of the placed `poses` against the truth, in the reference station's file
+/// frame; `ambiguous` stations count as not placed.
+Worst worstError(const std::vector<std::optional<RigidTransform>>& poses, const SimulatedDataset& d, std::size_t ref,
+                 const std::vector<std::size_t>& ambiguous = {}) {
+  const bool model_frame = ref >= d.true_poses.size();  // the model is the reference
+  const RigidTransform to_registered = model_frame ? RigidTransform() : d.scan_truths[ref].inverse();
   Worst w;
-  for (std::size_t i = 0; i < poses.size(); ++i) {
-    if (!poses[i]) {
+  for (std::size_t i = 0; i < d.true_poses.size(); ++i) {
+    if (!poses[i] || std::find(ambiguous.begin(), ambiguous.end(), i) != ambiguous.end()) {
       ++w.unplaced;
       continue;
     }
     const RigidTransform expected = to_registered * d.true_poses[i];
-    w.rotation_deg = std::max(w.rotation_deg, RigidTransform::rotationErrorDeg(expected, *poses[i]));
-    w.translation_m = std::max(w.translation_m, RigidTransform::translationError(expected, *poses[i]));
+    const double r = RigidTransform::rotationErrorDeg(expected, *poses[i]);
+    const double t = RigidTransform::translationError(expected, *poses[i]);
+    w.rotation_deg = std::max(w.rotation_deg, r);
+    w.translation_m = std::max(w.translation_m, t);
+    w.wrong += r > 0.2 || t > 0.05;
   }
   return w;
 }
@@ -86,27 +98,29 @@ bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
   const Campaign c = simulate(b, o, seed);
   NetworkParams params;
   std::vector<Station> stations = stationsOf(c.indoor.data, "indoor.e57");
+  if (o.bim) stations.push_back(modelStation(b.model, "model.ifc"));
   for (auto& s : stations) detectStationFeatures(s, params.link);
-  const NetworkResult r = registerNetwork(stations, 0, params);
-  const Worst net = worstError(r.adjustment.poses, c.indoor, 0);
-  const Worst chain = worstError(r.adjustment.chain_poses, c.indoor, 0);
+  const std::size_t ref = o.bim ? stations.size() - 1 : 0;
+  const NetworkResult r = registerNetwork(stations, ref, params);
+  const Worst net = worstError(r.adjustment.poses, c.indoor, ref, r.ambiguous);
+  const Worst chain = worstError(r.adjustment.chain_poses, c.indoor, ref);
   double loop_max = 0.0, loop_sum = 0.0;
   for (const auto& l : r.adjustment.loops) loop_max = std::max(loop_max, l.translation), loop_sum += l.translation;
   const double loop_mean = r.adjustment.loops.empty() ? 0.0 : loop_sum / double(r.adjustment.loops.size());
-  std::printf("%-12s %4llu %4zu %5zu/%-5zu %4zu %4zu %8.4f %8.2f %8.4f %8.2f %5zu %7.2f %7.2f %7.1f %7.1f %7.1f %6.2f %5d\n",
+  std::printf("%-12s %4llu %4zu %5zu/%-5zu %4zu %4zu %8.4f %8.2f %8.4f %8.2f %5zu %7.2f %7.2f %7.1f %7.1f %7.1f %6.2f %5d %5zu %5d %4d\n",
               b.spec.name.c_str(), static_cast<unsigned long long>(seed), stations.size(), r.links.size(), r.all_pairs,
               r.adjusted.size(), r.adjustment.dropped_order.size(), net.rotation_deg, 1000 * net.translation_m,
               chain.rotation_deg, 1000 * chain.translation_m, r.adjustment.loops.size(), 1000 * loop_mean,
               1000 * loop_max, c.seconds_simulation, r.seconds_features, r.seconds_links, r.seconds_adjustment,
-              net.unplaced);
+              net.unplaced, r.ambiguous.size(), net.wrong, networkExitCode(r));
   std::fflush(stdout);
   return net.unplaced == 0 && net.rotation_deg <= 0.02 && net.translation_m <= 0.005;
 }
 
 /// The adjustment alone on synthetic graphs; returns false when a wrong link is kept.
 bool runSynthetic(const Options& o) {
-  std::printf("%-10s %4s %4s %5s %7s %9s %9s %7s %8s\n", "graph", "seed", "stn", "links", "dropped", "net_mm",
-              "chain_mm", "in_3sig", "adj_ms");
+  std::printf("%-10s %4s %4s %5s %7s %9s %9s %7s %8s %5s\n", "graph", "seed", "stn", "links", "dropped", "net_mm",
+              "chain_mm", "in_3sig", "adj_ms", "ambig");
   bool ok = true;
   for (int k = 0; k < o.seeds; ++k) {
     const std::uint64_t seed = o.first_seed + static_cast<std::uint64_t>(k);
@@ -115,17 +129,18 @@ bool runSynthetic(const Options& o) {
     const auto t0 = std::chrono::steady_clock::now();
     const auto adj = adjustNetwork(net.truth.size(), net.links, 0, net.truth[0], p);
     const double ms = 1000 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const auto competing = findCompetingPlacements(net.truth.size(), net.links, 0, net.truth[0], p, adj);
     const bool dropped = adj.dropped_order.size() == 1 && adj.dropped_order[0] == net.wrong_link;
     int covered = 0;
     for (std::size_t i = 1; i < net.truth.size(); ++i) {
       const Eigen::Vector3d e = adj.poses[i]->translation() - net.truth[i].translation();
       for (int c = 0; c < 3; ++c) covered += std::abs(e[c]) <= 3 * adj.sigma_position[i][c];
     }
-    std::printf("%-10s %4llu %4zu %5zu %7s %9.2f %9.2f %6.1f%% %8.1f\n", "ring40", static_cast<unsigned long long>(seed),
+    std::printf("%-10s %4llu %4zu %5zu %7s %9.2f %9.2f %6.1f%% %8.1f %5zu\n", "ring40", static_cast<unsigned long long>(seed),
                 net.truth.size(), net.links.size(), dropped ? "wrong" : "OTHER",
                 1000 * test::maxPositionError(adj.poses, net.truth), 1000 * test::maxPositionError(adj.chain_poses, net.truth),
-                100.0 * covered / (3.0 * double(net.truth.size() - 1)), ms);
-    ok = ok && dropped;
+                100.0 * covered / (3.0 * double(net.truth.size() - 1)), ms, competing.ambiguous.size());
+    ok = ok && dropped && competing.ambiguous.empty();
   }
   return ok;
 }
@@ -146,10 +161,11 @@ Options parse(int argc, char** argv) {
     const std::string a = argv[i];
     if (a == "--smoke") o.smoke = true, o.seeds = 1;
     else if (a == "--synthetic") o.synthetic = true;
+    else if (a == "--bim") o.bim = true;
     else if (a == "--preset" && i + 1 < argc) o.preset = argv[++i];
     else if (a == "--seeds" && i + 1 < argc) o.seeds = std::stoi(argv[++i]);
     else if (a == "--first-seed" && i + 1 < argc) o.first_seed = std::stoull(argv[++i]);
-    else throw std::runtime_error("usage: bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic]");
+    else throw std::runtime_error("usage: bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic] [--bim]");
   }
   return o;
 }
@@ -163,9 +179,12 @@ int main(int argc, char** argv) {
     const GeneratedBuilding b = generateBuilding(o.smoke ? smokeBuilding() : buildingPreset(o.preset));
     std::printf("# stations in every room and doorway, each perturbed by yaw +-180 deg, shift <= 20 m; errors vs truth\n");
     std::printf("# targets: rotation <= 0.02 deg, position <= 5 mm; chain = best spanning tree of the same links\n");
-    std::printf("%-12s %4s %4s %11s %4s %4s %8s %8s %8s %8s %5s %7s %7s %7s %7s %7s %6s %5s\n", "preset", "seed", "stn",
-                "pairs/all", "acc", "drop", "net_deg", "net_mm", "chn_deg", "chn_mm", "loops", "loop_mm", "loopmax",
-                "sim_s", "feat_s", "link_s", "adj_s", "unpl");
+    std::printf("# unpl: not placed (ambiguous included); ambig: ambiguous (two loop-checked placements, or BIM\n"
+                "# copies only unchecked links chose from); stn counts the model with --bim;\n"
+                "# wrong: placed but off by > 0.2 deg or 5 cm (a confident wrong placement when exit is 0 or 3)\n");
+    std::printf("%-12s %4s %4s %11s %4s %4s %8s %8s %8s %8s %5s %7s %7s %7s %7s %7s %6s %5s %5s %5s %4s\n", "preset", "seed",
+                "stn", "pairs/all", "acc", "drop", "net_deg", "net_mm", "chn_deg", "chn_mm", "loops", "loop_mm", "loopmax",
+                "sim_s", "feat_s", "link_s", "adj_s", "unpl", "ambig", "wrong", "exit");
     bool ok = true;
     for (int k = 0; k < o.seeds; ++k) ok = runSeed(b, o, o.first_seed + static_cast<std::uint64_t>(k)) && ok;
     std::printf("%s\n", ok ? "all stations within target" : "TARGET MISSED");

@@ -87,6 +87,45 @@ TEST(CliNetwork, StationWithoutLinksIsReportedAndNothingIsWritten) {
   EXPECT_EQ(test::readAll(dir / "registered.e57"), "old");
 }
 
+TEST(CliNetwork, WithTheModelEveryStationComesOutInTheModelFrame) {
+  const auto dir = simulateCampaign(6);
+  const auto r = test::plumbCli(dir, "network sim/indoor.e57 --model sim/model.ply -o registered.e57 --report net.json "
+                                     "--transforms tf");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto report = test::readJsonFile(dir / "net.json");
+  EXPECT_EQ(report["reference"], "model:model");
+  ASSERT_EQ(report["stations"].size(), 6u);
+  EXPECT_TRUE(report["stations"][5]["model"].get<bool>());
+  int model_links = 0, model_links_kept = 0;
+  for (const auto& l : report["links"]) {
+    if (l["reason"] != "model") continue;
+    ++model_links;
+    EXPECT_EQ(l["b"], "model:model");
+    model_links_kept += l["accepted"].get<bool>() && !l["dropped"].get<bool>();
+  }
+  EXPECT_EQ(model_links, 5) << "every station is registered onto the model";
+  EXPECT_GE(model_links_kept, 3);
+  const auto errors = test::reportErrors(test::readJsonFile(dir / "sim/truth.json"), report);
+  ASSERT_EQ(errors.size(), 5u);
+  for (const auto& e : errors) {  // in the model frame: the true poses themselves
+    EXPECT_TRUE(e.placed) << e.name;
+    EXPECT_LT(e.rotation_deg, 0.02) << e.name;
+    EXPECT_LT(e.translation_m, 0.005) << e.name;
+  }
+  const Dataset out = readDataset(dir / "registered.e57");
+  EXPECT_EQ(out.scans.size(), 5u) << "the stations, not the model";
+  std::size_t transforms = 0;
+  for ([[maybe_unused]] const auto& f : std::filesystem::directory_iterator(dir / "tf")) ++transforms;
+  EXPECT_EQ(transforms, 5u);
+}
+
+TEST(CliNetwork, ModelAndReferenceExcludeEachOther) {
+  const auto dir = simulateCampaign(6);
+  const auto r = test::plumbCli(dir, "network sim/indoor.e57 --model sim/model.ply --reference tls-0");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--model and --reference"), std::string::npos) << r.err;
+}
+
 TEST(CliNetwork, UnknownReferenceIsAnErrorNamingTheStations) {
   const auto dir = simulateCampaign(5);
   const auto r = test::plumbCli(dir, "network sim/indoor.e57 --reference nowhere");

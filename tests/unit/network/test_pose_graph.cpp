@@ -6,13 +6,6 @@
 namespace plumb {
 namespace {
 
-PoseGraphParams graphParams() {
-  PoseGraphParams p;
-  p.drop_translation = 0.05;
-  p.drop_rotation = 0.2;
-  return p;
-}
-
 TEST(PoseGraph, ExactLinksGiveTheTruePosesFromAPerturbedStart) {
   const auto net = test::ringNetwork(8, 6.0, 3, 1e-9, 1e-9, 3, false);
   PoseGraphProblem pg;
@@ -40,7 +33,7 @@ TEST(PoseGraph, EdgeResidualMeasuresDisagreement) {
 
 TEST(RobustAdjustment, WrongLinkIsFlaggedDroppedAndStationsBeatTheChain) {
   const auto net = test::ringNetwork(12, 10.0, 4, 0.001, 0.005, 11, true);
-  const auto adj = adjustNetwork(net.truth.size(), net.links, 0, net.truth[0], graphParams());
+  const auto adj = adjustNetwork(net.truth.size(), net.links, 0, net.truth[0], test::graphParams());
   ASSERT_EQ(adj.dropped_order.size(), 1u);
   EXPECT_EQ(adj.dropped_order[0], net.wrong_link);
   EXPECT_TRUE(adj.links[net.wrong_link].flagged);
@@ -61,7 +54,7 @@ TEST(RobustAdjustment, SequenceLinksOutvoteAStackedCliqueOfIdenticalRooms) {
   for (std::size_t k = 0; k < 12; ++k) net.links[k].sequence = true;  // the ring: shot in order
   const std::size_t first_wrong = net.links.size();
   test::addStackedClique(net, {0, 3, 6, 9}, 0.0005, 0.002);  // 6 wrong links, all agreeing
-  const auto adj = adjustNetwork(net.truth.size(), net.links, 0, net.truth[0], graphParams());
+  const auto adj = adjustNetwork(net.truth.size(), net.links, 0, net.truth[0], test::graphParams());
   for (std::size_t k = first_wrong; k < net.links.size(); ++k) {
     EXPECT_TRUE(adj.links[k].dropped) << k;
     EXPECT_GE(adj.links[k].triangles.closing, 2) << "the clique's triangles close";
@@ -74,7 +67,7 @@ TEST(RobustAdjustment, ReportedSigmasCoverTheTrueErrors) {
   int covered = 0, total = 0;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     const auto net = test::ringNetwork(12, 10.0, 4, 0.001, 0.005, seed, false);
-    const auto adj = adjustNetwork(net.truth.size(), net.links, 0, net.truth[0], graphParams());
+    const auto adj = adjustNetwork(net.truth.size(), net.links, 0, net.truth[0], test::graphParams());
     ASSERT_TRUE(adj.covariance_ok);
     for (std::size_t i = 1; i < net.truth.size(); ++i) {
       const Eigen::Vector3d err = adj.poses[i]->translation() - net.truth[i].translation();
@@ -87,14 +80,14 @@ TEST(RobustAdjustment, ReportedSigmasCoverTheTrueErrors) {
 TEST(RobustAdjustment, DisconnectedStationIsNotPlaced) {
   auto net = test::ringNetwork(6, 5.0, 2, 0.001, 0.005, 5, false);
   net.truth.push_back(RigidTransform::fromYaw(0.3, {20, 0, 0}));  // station 6: no link
-  const auto adj = adjustNetwork(net.truth.size(), net.links, 0, net.truth[0], graphParams());
+  const auto adj = adjustNetwork(net.truth.size(), net.links, 0, net.truth[0], test::graphParams());
   EXPECT_FALSE(adj.poses[6].has_value());
   for (std::size_t i = 0; i < 6; ++i) EXPECT_TRUE(adj.poses[i].has_value()) << i;
 }
 
 TEST(RobustAdjustment, WithoutAutoDropTheWrongLinkIsOnlyFlagged) {
   const auto net = test::ringNetwork(12, 10.0, 4, 0.001, 0.005, 11, true);
-  PoseGraphParams p = graphParams();
+  PoseGraphParams p = test::graphParams();
   p.auto_drop = false;
   const auto adj = adjustNetwork(net.truth.size(), net.links, 0, net.truth[0], p);
   EXPECT_TRUE(adj.dropped_order.empty());

@@ -1,0 +1,70 @@
+#include "registration/network/competing_placements.hpp"
+
+#include <algorithm>
+#include <set>
+
+namespace plumb {
+namespace {
+
+std::size_t droppedSequenceLinks(const std::vector<AdjustmentLink>& links, const NetworkAdjustment& adj) {
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < links.size(); ++k) n += adj.links[k].dropped && links[k].sequence;
+  return n;
+}
+
+std::size_t droppedAnchorLinks(const std::vector<AdjustmentLink>& links, const NetworkAdjustment& adj) {
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < links.size(); ++k) n += adj.links[k].dropped && links[k].anchor;
+  return n;
+}
+
+/// Stations both solutions place, whose poses differ beyond the drop thresholds.
+void compareStations(const NetworkAdjustment& adopted, const NetworkAdjustment& alternative,
+                     const PoseGraphParams& params, CompetingPlacement& out) {
+  for (std::size_t i = 0; i < adopted.poses.size(); ++i) {
+    if (!adopted.poses[i] || !alternative.poses[i]) continue;
+    const double t = RigidTransform::translationError(*adopted.poses[i], *alternative.poses[i]);
+    const double r = RigidTransform::rotationErrorDeg(*adopted.poses[i], *alternative.poses[i]);
+    if (t <= params.drop_translation && r <= params.drop_rotation) continue;
+    out.stations.push_back(i);
+    out.max_translation = std::max(out.max_translation, t);
+    out.max_rotation_deg = std::max(out.max_rotation_deg, r);
+  }
+}
+
+CompetingPlacement alternativeFor(std::size_t link, std::size_t stations, const std::vector<AdjustmentLink>& links,
+                                  std::size_t reference, const RigidTransform& reference_pose,
+                                  const PoseGraphParams& params, const NetworkAdjustment& adopted) {
+  const NetworkAdjustment alt = adjustNetwork(stations, links, reference, reference_pose, params, {link});
+  CompetingPlacement c;
+  c.link = link;
+  c.corroborated = !alt.links[link].bridge;
+  c.dropped = alt.dropped_order.size();
+  c.dropped_sequence = droppedSequenceLinks(links, alt);
+  c.dropped_anchors = droppedAnchorLinks(links, alt);
+  compareStations(adopted, alt, params, c);
+  // The adopted solution wins outright when it gives up fewer links to the BIM, or as many and
+  // fewer sequence links.
+  const std::size_t anchors = droppedAnchorLinks(links, adopted), sequence = droppedSequenceLinks(links, adopted);
+  const bool dominated = anchors < c.dropped_anchors || (anchors == c.dropped_anchors && sequence < c.dropped_sequence);
+  c.competes = c.corroborated && !dominated && !c.stations.empty();
+  return c;
+}
+
+}  // namespace
+
+CompetingPlacements findCompetingPlacements(std::size_t stations, const std::vector<AdjustmentLink>& links,
+                                            std::size_t reference, const RigidTransform& reference_pose,
+                                            const PoseGraphParams& params, const NetworkAdjustment& adopted) {
+  CompetingPlacements out;
+  std::set<std::size_t> ambiguous;
+  for (std::size_t link : adopted.dropped_order) {
+    out.alternatives.push_back(alternativeFor(link, stations, links, reference, reference_pose, params, adopted));
+    const CompetingPlacement& c = out.alternatives.back();
+    if (c.competes) ambiguous.insert(c.stations.begin(), c.stations.end());
+  }
+  out.ambiguous.assign(ambiguous.begin(), ambiguous.end());
+  return out;
+}
+
+}  // namespace plumb
