@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace plumb::ui {
@@ -64,6 +66,28 @@ Rgb categoryColor(std::size_t i) {
       {237, 201, 72}, {176, 122, 161}, {255, 157, 167}, {156, 117, 95}, {186, 176, 172},
   }};
   return kPalette[i % kPalette.size()];
+}
+
+Rgb ifcTypeColor(const std::string& type) {
+  if (type.empty()) return {200, 200, 200};
+  static const std::map<std::string, Rgb> kTypes = {
+      {"IfcWall", {214, 200, 170}},         {"IfcWallStandardCase", {214, 200, 170}},
+      {"IfcWallElementedCase", {214, 200, 170}}, {"IfcCurtainWall", {120, 170, 210}},
+      {"IfcSlab", {150, 150, 160}},         {"IfcRoof", {178, 90, 70}},
+      {"IfcWindow", {110, 180, 235}},       {"IfcPlate", {140, 195, 225}},
+      {"IfcDoor", {150, 100, 55}},          {"IfcColumn", {120, 120, 145}},
+      {"IfcBeam", {125, 140, 115}},         {"IfcMember", {150, 150, 115}},
+      {"IfcStair", {225, 160, 80}},         {"IfcStairFlight", {225, 160, 80}},
+      {"IfcRamp", {225, 160, 80}},          {"IfcRailing", {85, 85, 85}},
+      {"IfcCovering", {230, 225, 205}},     {"IfcFooting", {140, 128, 118}},
+      {"IfcFurnishingElement", {105, 160, 85}}, {"IfcFurniture", {105, 160, 85}},
+      {"IfcSpace", {232, 232, 250}},        {"IfcBuildingElementProxy", {200, 120, 200}},
+      {"IfcOpeningElement", {250, 250, 250}},
+  };
+  if (const auto it = kTypes.find(type); it != kTypes.end()) return it->second;
+  std::uint32_t h = 2166136261u;  // FNV-1a: the same type name, the same colour, everywhere
+  for (const unsigned char c : type) h = (h ^ c) * 16777619u;
+  return categoryColor(h);
 }
 
 std::pair<double, double> robustRange(std::span<const float> values, double lo, double hi) {

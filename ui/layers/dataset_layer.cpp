@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "ui/layers/color_ramp.hpp"
 #include "ui/layers/feature_layer.hpp"
 #include "ui/layers/scan_layer.hpp"
 #include "ui/tasks/task_manager.hpp"
@@ -178,6 +179,30 @@ std::vector<PropertyRow> DatasetLayer::describe() const {
     rows.emplace_back("Rotation (deg)", QString::number(transform_.rotationAngleDeg(), 'f', 4));
   }
   return rows;
+}
+
+}  // namespace plumb::ui
+
+namespace plumb::ui {
+
+std::vector<LegendEntry> DatasetLayer::legend() const {
+  if (style_.mode != PointColorMode::Scan) return {};
+  std::vector<LegendEntry> out;
+  for (const ScanLayer* s : scans()) out.push_back({s->name(), categoryColor(s->colourIndex())});
+  return out;
+}
+
+void DatasetLayer::setFirstColourIndex(std::size_t first) {
+  for (ScanLayer* s : scans()) s->setColourIndex(first + s->scanIndex());
+  if (style_.mode == PointColorMode::Scan) colours_stale_ = true;
+}
+
+bool DatasetLayer::hasColors() const {
+  return std::any_of(data_->scans.begin(), data_->scans.end(), [](const Scan& s) { return s.cloud.hasColors(); });
+}
+
+bool DatasetLayer::hasIntensity() const {
+  return std::any_of(data_->scans.begin(), data_->scans.end(), [](const Scan& s) { return s.cloud.hasIntensity(); });
 }
 
 }  // namespace plumb::ui

@@ -80,6 +80,14 @@ class DatasetLayer : public Layer {
   bool takeStaleColours();
 
   std::vector<PropertyRow> describe() const override;
+  /// In the Scan colour mode, each scan with its colour.
+  std::vector<LegendEntry> legend() const override;
+  /// The Scan colour of the first scan: scans are numbered across the scene (Scene::addDataset),
+  /// so two single-scan datasets get two colours.
+  void setFirstColourIndex(std::size_t first);
+  /// Whether any scan has RGB colours / intensities (what the colour modes can show).
+  bool hasColors() const;
+  bool hasIntensity() const;
 
  private:
   void applyTransform();

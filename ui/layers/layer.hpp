@@ -19,6 +19,12 @@ enum class LayerKind { Dataset, Scan, Model, Features, Result };
 /// One row of the properties panel.
 using PropertyRow = std::pair<QString, QString>;
 
+/// One entry of a layer's colour legend (properties panel): what a colour in the view means.
+struct LegendEntry {
+  QString label;
+  Rgb8 colour{};
+};
+
 class Layer {
  public:
   Layer(LayerKind kind, QString name);
@@ -45,6 +51,8 @@ class Layer {
   virtual Bounds bounds() const;
   /// Rows for the properties panel.
   virtual std::vector<PropertyRow> describe() const;
+  /// The colours the layer is drawn with and what they mean (empty: a ramp or its own colours).
+  virtual std::vector<LegendEntry> legend() const { return {}; }
   /// Level of detail: show the reduced representation while the camera moves.
   virtual void setReducedDetail(bool /*reduced*/) {}
 

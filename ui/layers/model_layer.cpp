@@ -24,7 +24,7 @@ namespace plumb::ui {
 namespace {
 
 /// Mesh in coordinates relative to `local_origin` (float precision kept), one colour per
-/// triangle from its element's IFC type.
+/// triangle from its element's IFC type (ifcTypeColor: the same in every model).
 vtkSmartPointer<vtkPolyData> meshPolyData(const BimModel& model,
                                           const Eigen::Vector3d& local_origin) {
   const TriangleMesh& mesh = model.mesh;
@@ -38,7 +38,6 @@ vtkSmartPointer<vtkPolyData> meshPolyData(const BimModel& model,
   vtkNew<vtkCellArray> polys;
   polys->AllocateExact(static_cast<vtkIdType>(mesh.triangles.size()),
                        static_cast<vtkIdType>(3 * mesh.triangles.size()));
-  std::map<std::string, std::size_t> type_index;
   auto colors = makeColorArray(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
@@ -47,8 +46,7 @@ vtkSmartPointer<vtkPolyData> meshPolyData(const BimModel& model,
     std::string type;
     if (t < model.triangle_element.size() && model.triangle_element[t] < model.elements.size())
       type = model.elements[model.triangle_element[t]].type;
-    const auto [it, inserted] = type_index.emplace(type, type_index.size());
-    const Rgb c = type.empty() ? Rgb{200, 200, 200} : categoryColor(it->second);
+    const Rgb c = ifcTypeColor(type);
     colors->SetTypedTuple(static_cast<vtkIdType>(t), c.data());
   }
   auto poly = vtkSmartPointer<vtkPolyData>::New();
@@ -123,6 +121,14 @@ std::vector<PropertyRow> ModelLayer::describe() const {
     if (++i == 12) break;
   }
   return rows;
+}
+
+std::vector<LegendEntry> ModelLayer::legend() const {
+  std::vector<LegendEntry> out;
+  for (const auto& [type, count] : model_->elementTypeCounts())
+    out.push_back({QString::fromStdString(type.empty() ? "untyped" : type) + " (" + QString::number(count) + ")",
+                   ifcTypeColor(type)});
+  return out;
 }
 
 void ModelLayer::applyVisibility(bool effective) { actor_->SetVisibility(effective); }

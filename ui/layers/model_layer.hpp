@@ -33,6 +33,8 @@ class ModelLayer : public Layer {
   std::vector<vtkProp*> props() const override;
   Bounds bounds() const override;
   std::vector<PropertyRow> describe() const override;
+  /// Each IFC type of the model with its colour (ifcTypeColor) and element count.
+  std::vector<LegendEntry> legend() const override;
 
  protected:
   void applyVisibility(bool effective) override;

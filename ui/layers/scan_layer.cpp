@@ -114,8 +114,10 @@ void ScanLayer::setStyle(const PointStyle& style, double z_min, double z_max) {
 }
 
 ScanColorJob ScanLayer::colorJob(const PointStyle& style, double z_min, double z_max) const {
-  return makeScanColorJob(data_, scan_index_, dataset_transform_, style, z_min, z_max,
-                          distances_, distance_max_);
+  ScanColorJob job = makeScanColorJob(data_, scan_index_, dataset_transform_, style, z_min, z_max,
+                                      distances_, distance_max_);
+  job.coloring.scan_index = colour_index_;
+  return job;
 }
 
 void ScanLayer::applyColors(std::vector<Rgba> permuted) {

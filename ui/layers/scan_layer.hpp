@@ -37,6 +37,9 @@ class ScanLayer : public Layer {
 
   const Scan& scan() const { return data_->scans[scan_index_]; }
   std::size_t scanIndex() const { return scan_index_; }
+  /// The Scan colour mode's colour (categoryColor of this index): its number in the scene.
+  std::size_t colourIndex() const { return colour_index_; }
+  void setColourIndex(std::size_t index) { colour_index_ = index; }
   /// Size of the moving subset (drawn while the camera moves).
   std::size_t lodPointCount() const { return moving_count_; }
   /// Changes the moving subset's size (clamped to [1, size]).
@@ -87,6 +90,7 @@ class ScanLayer : public Layer {
                  vtkPolyDataMapper* mapper, std::size_t points);
   std::shared_ptr<const Dataset> data_;
   std::size_t scan_index_;
+  std::size_t colour_index_ = scan_index_;
   Eigen::Vector3d origin_;
   RigidTransform dataset_transform_;
   PermutedPoints points_;  ///< the scan's points in random order (positions, colours)

@@ -48,8 +48,12 @@ DatasetLayer& Scene::addDataset(std::shared_ptr<const Dataset> data) {
 
 DatasetLayer& Scene::addDataset(std::shared_ptr<const Dataset> data, PreparedDataset prepared) {
   ensureOrigin(prepared.bounds);
-  return static_cast<DatasetLayer&>(adopt(
+  const std::size_t scans = data->scans.size();
+  auto& layer = static_cast<DatasetLayer&>(adopt(
       std::make_unique<DatasetLayer>(std::move(data), origin(), std::move(prepared)), nullptr));
+  layer.setFirstColourIndex(next_scan_colour_);  // Scan colours: numbered across the scene
+  next_scan_colour_ += scans;
+  return layer;
 }
 
 void Scene::requestStyle(DatasetLayer& layer, const PointStyle& style) {
@@ -150,6 +154,7 @@ void Scene::clear() {
   }
   layers_.clear();
   origin_.reset();
+  next_scan_colour_ = 0;
   emit layersChanged();
 }
 

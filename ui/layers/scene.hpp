@@ -118,6 +118,9 @@ class Scene : public QObject {
   std::size_t lod_budget_;
   std::size_t still_budget_ = kFullDetail;
   TaskManager* tasks_ = nullptr;
+  /// Scan colour of the next dataset's first scan (Scan colour mode): never reused, so a
+  /// colour stays with its scan when other layers are removed.
+  std::size_t next_scan_colour_ = 0;
 };
 
 }  // namespace plumb::ui

@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QStandardItemModel>
 
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/scene.hpp"
@@ -48,6 +49,7 @@ void PointStyleEditor::setLayer(DatasetLayer* layer) {
   if (!layer_) return;
   loading_ = true;
   const PointStyle& s = layer_->style();
+  enableModes();
   mode_->setCurrentIndex(static_cast<int>(s.mode));
   field_->clear();
   for (const auto& name : layer_->scalarFieldNames()) field_->addItem(QString::fromStdString(name));
@@ -59,6 +61,21 @@ void PointStyleEditor::setLayer(DatasetLayer* layer) {
   loading_ = false;
 }
 
+void PointStyleEditor::enableModes() {
+  // Modes the data cannot show are greyed out with the reason, instead of silently drawing
+  // elevation in their place.
+  auto* model = qobject_cast<QStandardItemModel*>(mode_->model());
+  auto set = [&](PointColorMode mode, bool available, const QString& why) {
+    QStandardItem* item = model->item(static_cast<int>(mode));
+    item->setEnabled(available);
+    item->setToolTip(available ? QString() : why);
+  };
+  set(PointColorMode::Rgb, layer_->hasColors(), tr("This file has no RGB colours"));
+  set(PointColorMode::Intensity, layer_->hasIntensity(), tr("This file has no intensities"));
+  set(PointColorMode::ScalarField, !layer_->scalarFieldNames().empty(), tr("This file has no scalar fields"));
+  set(PointColorMode::Distance, layer_->hasDistances(), tr("Register this dataset first: distances to the target"));
+}
+
 void PointStyleEditor::apply() {
   if (loading_ || !layer_) return;
   PointStyle s;
@@ -67,6 +84,7 @@ void PointStyleEditor::apply() {
   s.point_size = size_->value();
   // Point size at once; colours computed in a background task (the old ones stay meanwhile).
   scene_.requestStyle(*layer_, s);
+  emit styleApplied();
 }
 
 }  // namespace plumb::ui

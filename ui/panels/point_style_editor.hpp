@@ -18,8 +18,13 @@ class PointStyleEditor : public QWidget {
   explicit PointStyleEditor(Scene& scene, QWidget* parent = nullptr);
   void setLayer(DatasetLayer* layer);
 
+ signals:
+  /// A new style was requested (the legend may change).
+  void styleApplied();
+
  private:
   void apply();
+  void enableModes();
   Scene& scene_;
   DatasetLayer* layer_ = nullptr;
   QComboBox* mode_;

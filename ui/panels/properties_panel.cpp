@@ -1,6 +1,9 @@
 #include "ui/panels/properties_panel.hpp"
 
+#include <QColor>
 #include <QHeaderView>
+#include <QIcon>
+#include <QPixmap>
 #include <QLabel>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -29,10 +32,17 @@ PropertiesPanel::PropertiesPanel(Scene& scene, QWidget* parent)
   table_->horizontalHeader()->setStretchLastSection(true);
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  connect(points_, &PointStyleEditor::styleApplied, this, [this] {
+    if (Layer* layer = current_.get()) {
+      showRows(layer->name(), layer->describe());
+      appendLegend(layer->legend());
+    }
+  });
   showLayer(nullptr);
 }
 
 void PropertiesPanel::showLayer(Layer* layer) {
+  current_ = layer ? LayerRef(*layer) : LayerRef();
   auto* dataset = layer && layer->kind() == LayerKind::Dataset ? static_cast<DatasetLayer*>(layer)
                                                                : nullptr;
   auto* model = layer && layer->kind() == LayerKind::Model ? static_cast<ModelLayer*>(layer)
@@ -43,6 +53,22 @@ void PropertiesPanel::showLayer(Layer* layer) {
   mesh_->setVisible(model != nullptr);
   showRows(layer ? layer->name() : tr("No layer selected"),
            layer ? layer->describe() : std::vector<PropertyRow>{});
+  if (layer) appendLegend(layer->legend());
+}
+
+void PropertiesPanel::appendLegend(const std::vector<LegendEntry>& legend) {
+  for (const auto& entry : legend) {
+    const int row = table_->rowCount();
+    table_->insertRow(row);
+    const QColor colour(entry.colour[0], entry.colour[1], entry.colour[2]);
+    QPixmap swatch(12, 12);
+    swatch.fill(colour);
+    auto* label = new QTableWidgetItem(QIcon(swatch), entry.label);
+    label->setToolTip(tr("Colour in the view"));
+    table_->setItem(row, 0, label);
+    table_->setItem(row, 1, new QTableWidgetItem(colour.name()));
+  }
+  table_->resizeColumnToContents(0);
 }
 
 void PropertiesPanel::showRows(const QString& title, const std::vector<PropertyRow>& rows) {

@@ -27,6 +27,9 @@ class PropertiesPanel : public QWidget {
   std::vector<PropertyRow> rows() const;
 
  private:
+  /// One row per legend entry: a colour swatch and its meaning, the colour as #rrggbb.
+  void appendLegend(const std::vector<LegendEntry>& legend);
+  LayerRef current_;  ///< the layer shown
   QLabel* title_;
   QTableWidget* table_;
   PointStyleEditor* points_;

@@ -15,6 +15,7 @@
 #include <QMenuBar>
 #include <QMimeData>
 #include <QSignalSpy>
+#include <QStandardItemModel>
 #include <QTest>
 #include <QUrl>
 
@@ -33,8 +34,10 @@
 #include "support/test_support.hpp"
 #include "ui/actions/file_dialogs.hpp"
 #include "ui/actions/recent_files.hpp"
+#include "ui/layers/color_ramp.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
+#include "ui/layers/model_layer.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/main_window.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
@@ -207,6 +210,78 @@ class GuiInteractionTest : public QObject {
     mode->setCurrentIndex(static_cast<int>(PointColorMode::Rgb));
     QTRY_VERIFY_WITH_TIMEOUT(!layer->coloringPending(), 30000);
     QVERIFY(test::countColor(grabView(app.view), QColor(255, 0, 0)) > 500);
+  }
+
+  void scanColoursAreDistinctAcrossDatasetsWithALegend() {
+    AppContext& app = window_->context();
+    const auto dir = test::scratchDir("gui_interaction_scan_colours");
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    // Two single-scan files side by side: "Scan" mode gave both the first palette colour.
+    window_->openFiles({q(writeGridPly(dir / "left.ply", 41, 255, 0, 0)),
+                        q(writeGridPly(dir / "right.ply", 41, 255, 0, 0, 10.0))});
+    QTRY_VERIFY_WITH_TIMEOUT(app.scene.layers().size() == 2 && app.tasks.runningCount() == 0, 30000);
+    auto* mode = app.properties.findChild<QComboBox*>("colorMode");
+    QVERIFY(mode);
+    for (const auto& l : app.scene.layers()) {
+      app.layers.setCurrentLayer(l.get());
+      mode->setCurrentIndex(static_cast<int>(PointColorMode::Scan));
+      QTRY_VERIFY_WITH_TIMEOUT(!static_cast<DatasetLayer*>(l.get())->coloringPending(), 30000);
+    }
+    applyStandardView(app.view.renderer(), StandardView::Top);
+    const QImage image = grabView(app.view);
+    saveScreenshot(app.view, artefact("scan_colours_two_datasets.png"));
+    const Rgb first = categoryColor(0), second = categoryColor(1);
+    const int a = test::countColor(image, QColor(first[0], first[1], first[2]));
+    const int b = test::countColor(image, QColor(second[0], second[1], second[2]));
+    QVERIFY2(a > 300 && b > 300, qPrintable(QString("%1 and %2 pixels").arg(a).arg(b)));
+    // The legend of the selected (second) dataset names its scan and colour.
+    const auto rows = app.properties.rows();
+    const QString hex = QColor(second[0], second[1], second[2]).name();
+    QVERIFY2(std::any_of(rows.begin(), rows.end(), [&](const PropertyRow& r) { return r.second == hex; }),
+             qPrintable(hex));
+    // RGB is offered for these files, intensity is not (greyed out with the reason).
+    auto* items = qobject_cast<QStandardItemModel*>(mode->model());
+    QVERIFY(items->item(static_cast<int>(PointColorMode::Rgb))->isEnabled());
+    QVERIFY(!items->item(static_cast<int>(PointColorMode::Intensity))->isEnabled());
+    QVERIFY(!items->item(static_cast<int>(PointColorMode::Intensity))->toolTip().isEmpty());
+    QVERIFY(!items->item(static_cast<int>(PointColorMode::Distance))->isEnabled());
+  }
+
+  void ifcTypesHaveTheSameColourInEveryModelWithALegend() {
+    AppContext& app = window_->context();
+    auto cube = [](std::vector<std::string> types) {
+      auto model = std::make_shared<BimModel>();
+      for (int i = 0; i < 8; ++i)
+        model->mesh.vertices.emplace_back((i & 1) * 4.0, ((i >> 1) & 1) * 4.0, ((i >> 2) & 1) * 4.0);
+      model->mesh.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                               {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+      for (const auto& t : types) model->elements.push_back({t, t, ""});
+      for (std::size_t k = 0; k < 12; ++k) model->triangle_element.push_back(k % types.size());
+      return model;
+    };
+    // The same types in a different order in the file: walls were blue in one, orange in the other.
+    ModelLayer& one = app.scene.addModel(cube({"IfcWall", "IfcDoor", "IfcSlab"}));
+    ModelLayer& two = app.scene.addModel(cube({"IfcSlab", "IfcDoor", "IfcWall", "IfcMyProxyType"}));
+    auto colourOf = [](const ModelLayer& layer, const QString& type) {
+      for (const auto& e : layer.legend())
+        if (e.label.startsWith(type + " (")) return e.colour;
+      return Rgb8{};
+    };
+    for (const QString type : {"IfcWall", "IfcDoor", "IfcSlab"}) {
+      QCOMPARE(colourOf(one, type), colourOf(two, type));
+      QCOMPARE(colourOf(one, type), ifcTypeColor(type.toStdString()));
+    }
+    QVERIFY(colourOf(one, "IfcWall") != colourOf(one, "IfcDoor"));
+    QVERIFY(colourOf(one, "IfcWall") != colourOf(one, "IfcSlab"));
+    QCOMPARE(ifcTypeColor("IfcMyProxyType"), ifcTypeColor("IfcMyProxyType"));  // stable, not by order
+    QCOMPARE(two.legend().size(), std::size_t{4});
+    // The properties panel lists the legend with the colours.
+    app.layers.setCurrentLayer(&two);
+    const Rgb wall = ifcTypeColor("IfcWall");
+    const auto rows = app.properties.rows();
+    QVERIFY(std::any_of(rows.begin(), rows.end(), [&](const PropertyRow& r) {
+      return r.first.startsWith("IfcWall (") && r.second == QColor(wall[0], wall[1], wall[2]).name();
+    }));
   }
 
   void savesAndOpensProjectsAndScreenshotsThroughTheMenu() {
