@@ -1,4 +1,4 @@
-// plumb-cli network INPUTS... [--reference NAME | --model BIM] [-o REGISTERED.e57] [--report REPORT.json]
+// plumb-cli network INPUTS... [--reference NAME | --model BIM] [-o REGISTERED.e57] [--report R.json|R.html]...
 //   [--transforms DIR] [--set GROUP.KEY=VALUE]... [--seed N] [--print-params]
 // Registers the stations of a campaign as one network (issue 15, docs/NETWORK.md): each data3D
 // of each E57 input, and each scan of any other point file, is a station with its own pose.
@@ -9,7 +9,8 @@
 // that disagree with the network are flagged and dropped.
 // Outputs: -o a multi-scan E57 of the stations with their adjusted poses (not merged);
 // --transforms DIR one <station>.json per station (its file frame -> the registered frame);
-// --report the JSON report (network_report.hpp), written also when the network fails.
+// --report R.json / R.html the JSON report (network_report.hpp) or the HTML report to hand over
+// (report/network_html.hpp), written also when the network fails; repeatable.
 // Exit: 0 every station placed; 3 placed but a kept link disagrees (check visually); 2 a
 // station could not be placed, or is ambiguous (two loop-checked placements): the parts are reported, -o and --transforms are not written
 // (existing files stay untouched); 1 bad input or parameters.
@@ -29,13 +30,15 @@
 #include "common/error.hpp"
 #include "io/io.hpp"
 #include "registration/network/network_report.hpp"
+#include "report/network_html.hpp"
+#include "report/report_builder.hpp"
 
 namespace plumb::cli {
 namespace {
 
 struct NetworkOptions {
-  std::vector<std::string> inputs, settings;
-  std::string reference, model, output, report, transforms, seed;
+  std::vector<std::string> inputs, settings, reports;
+  std::string reference, model, output, transforms, seed;
   bool print_params = false;
 };
 
@@ -53,10 +56,11 @@ void checkOutputs(const NetworkOptions& o) {
     if (formatFromExtension(o.output) != FileFormat::E57)
       throw InputError("network: -o must be an .e57 file (one scan per station, with its pose): '" + o.output + "'");
   }
-  if (!o.report.empty()) {
-    if (std::filesystem::path(o.report).extension() != ".json")
-      throw InputError("network: --report must be a .json file: '" + o.report + "'");
-    checkWritableTarget(o.report);
+  for (const auto& report : o.reports) {
+    const auto ext = std::filesystem::path(report).extension();
+    if (ext != ".json" && ext != ".html")
+      throw InputError("network: --report must end in .json or .html: '" + report + "'");
+    checkWritableTarget(report);
   }
   if (!o.transforms.empty() && std::filesystem::exists(o.transforms) && !std::filesystem::is_directory(o.transforms))
     throw InputError("network: --transforms '" + o.transforms + "' exists and is not a directory");
@@ -140,8 +144,14 @@ int run(const NetworkOptions& o) {
   }
   const NetworkResult r = registerNetwork(stations, reference, p, &progress);
   if (tty) std::cerr << "\r\033[K";
-  if (!o.report.empty())
-    writeFileAtomically(o.report, [&](std::ostream& out) { out << networkReportToJson(r, stations).dump(2) << "\n"; });
+  const nlohmann::json json_report = networkReportToJson(r, stations);
+  for (const auto& path : o.reports)
+    writeFileAtomically(path, [&](std::ostream& out) {
+      if (std::filesystem::path(path).extension() == ".html")
+        out << report::networkReportHtml(json_report, report::nowUtc());
+      else
+        out << json_report.dump(2) << "\n";
+    });
   std::cout << networkReportToText(r, stations);
   const int code = networkExitCode(r);
   if (code == 2) {
@@ -178,7 +188,9 @@ void addNetworkCommand(CLI::App& app, Action& action) {
                   "come out in the model's frame")
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", o->output, "Write the registered stations as one multi-scan E57 with their poses");
-  cmd->add_option("--report", o->report, "Write the network report (JSON)");
+  cmd->add_option("--report", o->reports,
+                  "Write the network report: .json for machines, .html to hand over (plan view, tables, "
+                  "residuals, sign-off); repeatable");
   cmd->add_option("--transforms", o->transforms, "Write each station's transform (<station>.json) to this directory");
   cmd->add_option("--set", o->settings,
                   "One parameter, GROUP.KEY=VALUE: pair-selection, link-weights, pose-graph, or a registration "

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "report/figure_meanings.hpp"
+#include "report/html_style.hpp"
 #include "report/svg_plots.hpp"
 
 namespace plumb::report {
@@ -17,17 +18,7 @@ namespace {
 using nlohmann::json;
 using Leaf = std::pair<std::string, json>;
 
-constexpr const char* kStyle = R"(
-body{font-family:sans-serif;max-width:1000px;margin:1em auto;color:#222;line-height:1.35}
-h1{font-size:1.5em;margin-bottom:0}h2{font-size:1.15em;border-bottom:1px solid #bbb;margin-top:1.6em}
-table{border-collapse:collapse;width:100%;font-size:0.9em}
-td,th{border:1px solid #ddd;padding:3px 6px;text-align:left;vertical-align:top}
-th{background:#f2f2f2}td.v{white-space:nowrap;font-family:monospace}
-.verdict{padding:0.6em 1em;border-radius:4px;border:2px solid}
-.usable{background:#e8f5e9;border-color:#2e7d32}.check-visually{background:#fff8e1;border-color:#f9a825}
-.failed{background:#ffebee;border-color:#c62828}figure{margin:1em 0}figcaption{font-size:0.85em;color:#555}
-.sign td{height:2.2em}@media print{h2{page-break-after:avoid}figure{page-break-inside:avoid}}
-)";
+
 
 void flatten(const json& v, const std::string& path, std::vector<Leaf>& out) {
   if (v.is_object()) {
@@ -52,7 +43,7 @@ std::string mm(double metres) { return std::isfinite(metres) ? fixed(metres * 1e
 
 void header(std::ostringstream& h, const RegistrationReport& r) {
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Registration report: "
-    << esc(r.source.file) << " onto " << esc(r.target.file) << "</title><style>" << kStyle
+    << esc(r.source.file) << " onto " << esc(r.target.file) << "</title><style>" << kReportStyle
     << "</style></head><body>\n<h1>Registration report</h1><p>" << esc(r.source.file) << " onto "
     << esc(r.target.file) << "<br>Created " << esc(r.created_utc) << " by Plumb " << esc(r.plumb_version)
     << ", seed " << r.seed << "</p>\n";

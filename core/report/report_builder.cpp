@@ -15,7 +15,6 @@
 #endif
 
 namespace plumb::report {
-namespace {
 
 std::string nowUtc() {
   const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
@@ -25,6 +24,8 @@ std::string nowUtc() {
   std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
   return buf;
 }
+
+namespace {
 
 /// Indices 0, k, 2k... of n points, k chosen so that at most `max` are kept.
 std::vector<std::size_t> strideIndices(std::size_t n, std::size_t max) {

@@ -31,6 +31,9 @@ struct ReportParams {
 /// A failed registration has no transform to show: its report has the verdict, the inputs and
 /// the placements considered, without pictures, distances or residuals.
 /// Throws InputError when the source or the target is missing.
+/// The current time as ISO 8601 UTC ("2026-11-25T01:02:03Z"): when a report was made.
+std::string nowUtc();
+
 RegistrationReport buildRegistrationReport(const ReportInputs& inputs, const PipelineResult& result,
                                            const ReportParams& params = {}, Progress* progress = nullptr);
 

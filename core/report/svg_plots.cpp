@@ -49,6 +49,16 @@ void legend(std::ostringstream& s, const std::vector<ScatterLayer>& layers, int 
   }
 }
 
+/// Equal scales on both axes: metres -> pixels, and the pixel position of the extent's corner.
+struct Frame {
+  double scale, x0, y0;
+};
+Frame pictureFrame(const Eigen::Vector2d& span, int w, int h) {
+  const double scale = std::min((w - 2.0 * kMargin) / span.x(), (h - 2.0 * kMargin) / span.y());
+  return {scale, kMargin + 0.5 * ((w - 2.0 * kMargin) - scale * span.x()),
+          h - kMargin - 0.5 * ((h - 2.0 * kMargin) - scale * span.y())};
+}
+
 }  // namespace
 
 std::string escapeXml(const std::string& text) {
@@ -73,9 +83,7 @@ std::string scatterSvg(const ScatterPicture& p, int w, int h) {
   std::ostringstream s;
   openSvg(s, w, h, p.title);
   const Eigen::Vector2d span = (p.max - p.min).cwiseMax(1e-6);
-  const double scale = std::min((w - 2.0 * kMargin) / span.x(), (h - 2.0 * kMargin) / span.y());
-  const double x0 = kMargin + 0.5 * ((w - 2.0 * kMargin) - scale * span.x());
-  const double y0 = h - kMargin - 0.5 * ((h - 2.0 * kMargin) - scale * span.y());
+  const auto [scale, x0, y0] = pictureFrame(span, w, h);
   for (const auto& layer : p.layers) {
     s << "<g fill=\"" << escapeXml(layer.colour) << "\" fill-opacity=\"0.6\">";
     for (const auto& q : layer.points) {
@@ -120,6 +128,36 @@ std::string barsSvg(const BarPicture& p, int w, int h) {
   s << "<line x1=\"" << kMargin << "\" y1=\"" << h - kMargin << "\" x2=\"" << w - kMargin << "\" y2=\""
     << h - kMargin << "\" stroke=\"black\"/><text x=\"" << kMargin - 4 << "\" y=\"" << kMargin + 4
     << "\" font-size=\"10\" text-anchor=\"end\">" << num(top) << "</text>";
+  axisLabels(s, w, h, p.x_label, p.y_label);
+  s << "</svg>";
+  return s.str();
+}
+
+std::string planSvg(const PlanPicture& p, int w, int h) {
+  std::ostringstream s;
+  openSvg(s, w, h, p.title);
+  const Eigen::Vector2d span = (p.max - p.min).cwiseMax(1e-6);
+  const auto [scale, x0, y0] = pictureFrame(span, w, h);
+  auto x = [&](const Eigen::Vector2d& q) { return num(x0 + (q.x() - p.min.x()) * scale); };
+  auto y = [&](const Eigen::Vector2d& q) { return num(y0 - (q.y() - p.min.y()) * scale); };
+  for (const auto& l : p.lines)
+    s << "<line x1=\"" << x(l.from) << "\" y1=\"" << y(l.from) << "\" x2=\"" << x(l.to) << "\" y2=\"" << y(l.to)
+      << "\" stroke=\"" << escapeXml(l.colour) << "\" stroke-width=\"2\"" << (l.dashed ? " stroke-dasharray=\"5 4\"" : "")
+      << "><title>" << escapeXml(l.title) << "</title></line>";
+  for (const auto& m : p.marks)
+    s << "<circle cx=\"" << x(m.at) << "\" cy=\"" << y(m.at) << "\" r=\"4\" fill=\"" << escapeXml(m.colour)
+      << "\" stroke=\"black\" stroke-width=\"0.6\"/><text x=\"" << x(m.at) << "\" y=\"" << y(m.at)
+      << "\" dx=\"5\" dy=\"-5\" font-size=\"10\">" << escapeXml(m.label) << "</text>";
+  const double bar = niceStep(span.x());
+  s << "<line x1=\"" << kMargin << "\" y1=\"" << h - 24 << "\" x2=\"" << num(kMargin + bar * scale) << "\" y2=\""
+    << h - 24 << "\" stroke=\"black\" stroke-width=\"2\"/><text x=\"" << kMargin << "\" y=\"" << h - 28
+    << "\" font-size=\"11\">" << bar << " m</text>";
+  int ly = 30;
+  for (const auto& [text, colour] : p.legend) {
+    s << "<rect x=\"" << w - 215 << "\" y=\"" << ly - 9 << "\" width=\"10\" height=\"10\" fill=\"" << escapeXml(colour)
+      << "\"/><text x=\"" << w - 200 << "\" y=\"" << ly << "\" font-size=\"11\">" << escapeXml(text) << "</text>";
+    ly += 15;
+  }
   axisLabels(s, w, h, p.x_label, p.y_label);
   s << "</svg>";
   return s.str();

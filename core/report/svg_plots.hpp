@@ -41,6 +41,27 @@ struct BarPicture {
 /// Bars side by side, y from 0 to the largest value.
 std::string barsSvg(const BarPicture& picture, int width = 640, int height = 300);
 
+/// A plan of labelled marks joined by lines (a network of stations and links).
+struct PlanMark {
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();
+  std::string label, colour;
+};
+struct PlanLine {
+  Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();
+  std::string colour, title;  ///< title: tooltip
+  bool dashed = false;
+};
+struct PlanPicture {
+  std::string title, x_label, y_label;
+  Eigen::Vector2d min = Eigen::Vector2d::Zero(), max = Eigen::Vector2d::Ones();  ///< extent shown
+  std::vector<PlanMark> marks;
+  std::vector<PlanLine> lines;
+  std::vector<std::pair<std::string, std::string>> legend;  ///< (text, CSS colour)
+};
+
+/// Lines under marks, equal scales on both axes, a scale bar and a legend.
+std::string planSvg(const PlanPicture& picture, int width = 720, int height = 540);
+
 /// "&amp;" etc.: text safe inside SVG/HTML elements and attribute values.
 std::string escapeXml(const std::string& text);
 

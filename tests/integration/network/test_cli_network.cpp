@@ -6,9 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 
 #include "io/io.hpp"
+#include "report/html_report.hpp"
 #include "support/cli_runner.hpp"
+#include "support/html_figures.hpp"
 #include "support/network_truth.hpp"
 
 namespace plumb {
@@ -31,9 +34,32 @@ std::filesystem::path simulateCampaign(std::uint64_t seed) {
 
 TEST(CliNetwork, EveryStationIsPlacedWithinToleranceOfTruth) {
   const auto dir = simulateCampaign(5);
-  const auto r = test::plumbCli(dir, "network sim/indoor.e57 -o registered.e57 --report net.json --transforms tf");
+  const auto r = test::plumbCli(dir, "network sim/indoor.e57 -o registered.e57 --report net.json --report net.html "
+                                     "--transforms tf");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   const auto report = test::readJsonFile(dir / "net.json");
+  {
+    SCOPED_TRACE("the HTML report to hand over shows the JSON report's values");
+    const std::string html = test::readAll(dir / "net.html");
+    const auto json_leaves = report::flattenReportJson(report.dump());
+    const std::map<std::string, std::string> leaves(json_leaves.begin(), json_leaves.end());
+    const auto cells = test::htmlFigures(html);
+    std::size_t network_figures = 0;
+    for (const auto& [path, value] : cells) {
+      ASSERT_TRUE(leaves.count(path)) << path;
+      EXPECT_EQ(value, leaves.at(path)) << path;
+      network_figures += path.rfind("network.", 0) == 0;
+    }
+    std::size_t network_leaves = 0;
+    for (const auto& [path, value] : json_leaves) network_leaves += path.rfind("network.", 0) == 0;
+    EXPECT_EQ(network_figures, network_leaves) << "every network figure is in the HTML";
+    EXPECT_TRUE(cells.count("stations[4].placed"));
+    EXPECT_NE(html.find("Verdict: usable"), std::string::npos);
+    EXPECT_NE(html.find("<svg"), std::string::npos);  // the plan view
+    for (const auto& s : report["stations"])
+      EXPECT_NE(html.find(">" + s["name"].get<std::string>() + "</text>"), std::string::npos) << "plan label";
+    EXPECT_NE(html.find("Sign-off"), std::string::npos);
+  }
   const auto errors = test::reportErrors(test::readJsonFile(dir / "sim/truth.json"), report);
   ASSERT_EQ(errors.size(), 5u);
   for (const auto& e : errors) {
