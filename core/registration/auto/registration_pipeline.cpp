@@ -165,9 +165,20 @@ GlobalRegistrationResult registerFeatureSets(const FeatureSet& source, const Fea
       return r;
     }
     if (i == 0) first = r;
-    // Segments that found two placements (a repeated room) settle on refined points; other
-    // features of the same symmetric geometry cannot tell them apart either.
-    if (target_is_model && r.status == RegistrationStatus::Ambiguous) break;
+    // A model target: two placements scoring alike (a repeated room) settle on refined points.
+    // Ambiguous planes are cross-checked with the openings first, as a successful plane step
+    // would be: openings that choose one placement decide. Otherwise the ambiguous step is the
+    // answer to settle (not the first method's failure: its candidates would be lost).
+    if (target_is_model && r.status == RegistrationStatus::Ambiguous) {
+      if (order[i] == RegistrationMethod::Planes && openings) {
+        auto o = run(RegistrationMethod::Openings);
+        if (o.ok()) {
+          o.message = "auto: planes were ambiguous (" + r.message + "); openings chose: " + o.message;
+          return o;
+        }
+      }
+      return r;
+    }
   }
   // All failed: report the first (preferred) method's failure, with the others in the log.
   first.message = "auto: every applicable method failed; " + first.message;
@@ -204,6 +215,16 @@ std::unique_ptr<RefineTarget> refinementTarget(const RegistrationSide& target, c
 void limitToWallThickness(const GlobalRegistrationResult& g, RefineParams& rp,
                           std::vector<std::string>& log) {
   if (!g.wall_thickness || !(*g.wall_thickness > 0.0)) return;
+  // An assumed thickness places nothing along the façade normal: limiting the first stage to
+  // half of it keeps candidates that start off along the normal from converging, and the
+  // comparison of candidates then favours whichever started closest (a copy found by the copy
+  // search), not the one that fits.
+  const auto measured = std::find_if(g.figures.begin(), g.figures.end(),
+                                     [](const auto& f) { return f.first == "wall thickness measured"; });
+  if (measured != g.figures.end() && measured->second < 0.5) {
+    log.push_back("refinement: first correspondence distance not limited (the wall thickness is assumed)");
+    return;
+  }
   const double start =
       std::max(rp.final_distance, std::min(rp.start_distance, 0.5 * *g.wall_thickness));
   if (start < rp.start_distance) {

@@ -6,15 +6,11 @@
 namespace plumb {
 namespace {
 
-std::size_t droppedSequenceLinks(const std::vector<AdjustmentLink>& links, const NetworkAdjustment& adj) {
+/// Links of one kind (sequence, anchor: links to the BIM) that `adj` dropped.
+std::size_t droppedLinks(const std::vector<AdjustmentLink>& links, const NetworkAdjustment& adj,
+                         bool AdjustmentLink::*kind) {
   std::size_t n = 0;
-  for (std::size_t k = 0; k < links.size(); ++k) n += adj.links[k].dropped && links[k].sequence;
-  return n;
-}
-
-std::size_t droppedAnchorLinks(const std::vector<AdjustmentLink>& links, const NetworkAdjustment& adj) {
-  std::size_t n = 0;
-  for (std::size_t k = 0; k < links.size(); ++k) n += adj.links[k].dropped && links[k].anchor;
+  for (std::size_t k = 0; k < links.size(); ++k) n += adj.links[k].dropped && links[k].*kind;
   return n;
 }
 
@@ -40,12 +36,13 @@ CompetingPlacement alternativeFor(std::size_t link, std::size_t stations, const 
   c.link = link;
   c.corroborated = !alt.links[link].bridge;
   c.dropped = alt.dropped_order.size();
-  c.dropped_sequence = droppedSequenceLinks(links, alt);
-  c.dropped_anchors = droppedAnchorLinks(links, alt);
+  c.dropped_sequence = droppedLinks(links, alt, &AdjustmentLink::sequence);
+  c.dropped_anchors = droppedLinks(links, alt, &AdjustmentLink::anchor);
   compareStations(adopted, alt, params, c);
   // The adopted solution wins outright when it gives up fewer links to the BIM, or as many and
   // fewer sequence links.
-  const std::size_t anchors = droppedAnchorLinks(links, adopted), sequence = droppedSequenceLinks(links, adopted);
+  const std::size_t anchors = droppedLinks(links, adopted, &AdjustmentLink::anchor);
+  const std::size_t sequence = droppedLinks(links, adopted, &AdjustmentLink::sequence);
   const bool dominated = anchors < c.dropped_anchors || (anchors == c.dropped_anchors && sequence < c.dropped_sequence);
   c.competes = c.corroborated && !dominated && !c.stations.empty();
   return c;
