@@ -71,9 +71,9 @@ Rgb categoryColor(std::size_t i) {
 Rgb ifcTypeColor(const std::string& type) {
   if (type.empty()) return {200, 200, 200};
   static const std::map<std::string, Rgb> kTypes = {
-      {"IfcWall", {214, 200, 170}},         {"IfcWallStandardCase", {214, 200, 170}},
-      {"IfcWallElementedCase", {214, 200, 170}}, {"IfcCurtainWall", {120, 170, 210}},
-      {"IfcSlab", {150, 150, 160}},         {"IfcRoof", {178, 90, 70}},
+      {"IfcWall", {222, 184, 135}},         {"IfcWallStandardCase", {222, 184, 135}},
+      {"IfcWallElementedCase", {222, 184, 135}}, {"IfcCurtainWall", {120, 170, 210}},
+      {"IfcSlab", {190, 185, 175}},         {"IfcRoof", {178, 90, 70}},
       {"IfcWindow", {110, 180, 235}},       {"IfcPlate", {140, 195, 225}},
       {"IfcDoor", {150, 100, 55}},          {"IfcColumn", {120, 120, 145}},
       {"IfcBeam", {125, 140, 115}},         {"IfcMember", {150, 150, 115}},

@@ -21,7 +21,7 @@ Rgb rampColor(RampKind ramp, double t);
 /// A distinct colour for category i (scans, planes, element types).
 Rgb categoryColor(std::size_t i);
 /// Colour of an IFC element type, the same in every model whatever the file's order: a fixed
-/// colour for the common building elements (walls sand, slabs grey, windows light blue, doors
+/// colour for the common building elements (walls tan, slabs light grey, windows light blue, doors
 /// brown...), a stable colour from the type name for the others, light grey for untyped.
 Rgb ifcTypeColor(const std::string& type);
 /// Robust value range: the `lo` and `hi` quantiles (e.g. 0.01, 0.99) of finite values, from a
