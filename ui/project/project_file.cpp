@@ -2,6 +2,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QMainWindow>
 #include <QUndoStack>
 
 #include <nlohmann/json.hpp>
@@ -42,6 +43,11 @@ std::string projectPath(const QDir& dir, const QString& file) {
 
 }  // namespace
 
+void showProjectInTitle(QMainWindow& window, const QString& path) {
+  window.setWindowTitle(path.isEmpty() ? QStringLiteral("Plumb") : QFileInfo(path).fileName() + " - Plumb");
+  window.setWindowFilePath(path);
+}
+
 void saveProject(const AppContext& app, const QString& path) {
   const QDir dir = QFileInfo(path).absoluteDir();
   json layers = json::array();
@@ -70,6 +76,7 @@ void saveProject(const AppContext& app, const QString& path) {
                          {"target", target},
                          {"params", pipelineParamsToJson(app.registration->params())}};
   writeFileAtomically(path.toStdString(), [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+  showProjectInTitle(app.window, path);
 }
 
 namespace {
@@ -194,6 +201,7 @@ void openProject(AppContext& app, const QString& path, ProjectDone done) {
   const auto [source, target] = readRegistration(app, j, file);
   app.undo.clear();
   app.scene.clear();
+  showProjectInTitle(app.window, path);
   app.log.info(QObject::tr("Opening project %1 (%2 files)").arg(path).arg(qsizetype(entries->size())));
   loadEntries(app, entries, [&app, source, target, done](bool ok, const std::vector<Layer*>& layers) {
     if (app.registration) {

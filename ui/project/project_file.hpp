@@ -11,6 +11,8 @@
 #include <functional>
 #include <vector>
 
+class QMainWindow;
+
 namespace plumb::ui {
 
 struct AppContext;
@@ -23,6 +25,9 @@ constexpr int kProjectVersion = 1;
 
 /// Writes the project (atomic). Throws FileError.
 void saveProject(const AppContext& app, const QString& path);
+/// The window title names the project file ("site.plumb.json - Plumb"; "Plumb" when empty).
+/// Opening and saving a project set it.
+void showProjectInTitle(QMainWindow& window, const QString& path);
 /// Clears the scene, loads the project's files in the background, applies their transforms
 /// and the registration setup. `done` runs when every file finished (ok: all loaded).
 /// Throws FileError when the project file itself cannot be read or is invalid, InputError

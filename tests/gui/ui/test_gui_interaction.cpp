@@ -306,9 +306,12 @@ class GuiInteractionTest : public QObject {
     // File > Save project, then File > Open project replaces the scene with it.
     const QString project = q(dir / "scene.plumb.json");
     QFile::remove(project);
+    QCOMPARE(window_->windowTitle(), QString("Plumb"));
     chosen_ = {project};
     menuAction(*window_, "File", "Save project...")->trigger();
     QVERIFY(QFile::exists(project));
+    QCOMPARE(window_->windowTitle(), QString("scene.plumb.json - Plumb"));  // the title names the project
+    window_->setWindowTitle("Plumb");
     app.scene.clear();
     QVERIFY(app.scene.layers().empty());
     chosen_ = {project};
@@ -319,6 +322,7 @@ class GuiInteractionTest : public QObject {
     QCOMPARE(app.scene.layers().size(), std::size_t{1});
     QCOMPARE(static_cast<DatasetLayer*>(app.scene.layers()[0].get())->dataset().pointCount(),
              std::size_t{21 * 21});
+    QCOMPARE(window_->windowTitle(), QString("scene.plumb.json - Plumb"));
   }
 
   void clickingAFeatureShowsItsProperties() {
