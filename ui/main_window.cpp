@@ -14,6 +14,7 @@
 #include "ui/actions/export_cloud_reaction.hpp"
 #include "ui/actions/full_detail_reaction.hpp"
 #include "ui/actions/open_file_reaction.hpp"
+#include "ui/actions/help_reactions.hpp"
 #include "ui/actions/project_reactions.hpp"
 #include "ui/actions/registration_step_reaction.hpp"
 #include "ui/actions/recent_files.hpp"
@@ -159,6 +160,11 @@ void MainWindow::createMenus() {
   new FullDetailReaction(view->addAction(tr("Full detail when still (may be slow)")), app, *lod_);
   view->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  new HelpReaction(help->addAction(tr("&Getting started"), QKeySequence::HelpContents), app,
+                   HelpReaction::Topic::GettingStarted);
+  new HelpReaction(help->addAction(tr("&About Plumb")), app, HelpReaction::Topic::About);
 }
 
 void MainWindow::openFiles(const QStringList& paths) {

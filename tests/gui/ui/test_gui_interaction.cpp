@@ -13,6 +13,7 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QMimeData>
 #include <QSignalSpy>
 #include <QStandardItemModel>
@@ -282,6 +283,25 @@ class GuiInteractionTest : public QObject {
     QVERIFY(std::any_of(rows.begin(), rows.end(), [&](const PropertyRow& r) {
       return r.first.startsWith("IfcWall (") && r.second == QColor(wall[0], wall[1], wall[2]).name();
     }));
+  }
+
+  void helpMenuHasGettingStartedOnF1AndAbout() {
+    QAction* start = menuAction(*window_, "Help", "Getting started");
+    QAction* about = menuAction(*window_, "Help", "About Plumb");
+    QVERIFY(start && about);
+    QCOMPARE(start->shortcut(), QKeySequence(QKeySequence::HelpContents));  // F1
+    start->trigger();
+    auto* box = window_->findChild<QMessageBox*>("gettingStarted");
+    QVERIFY(box && box->isVisible());
+    QVERIFY(!box->isModal());  // the window stays usable beside it
+    QVERIFY(box->text().contains("Detect features"));
+    QVERIFY(box->text().contains("plumb-cli register"));
+    box->close();
+    about->trigger();
+    auto* info = window_->findChild<QMessageBox*>("aboutPlumb");
+    QVERIFY(info && info->isVisible());
+    QVERIFY(info->text().contains(PLUMB_UI_VERSION));
+    info->close();
   }
 
   void savesAndOpensProjectsAndScreenshotsThroughTheMenu() {
