@@ -161,9 +161,9 @@ int run(const NetworkOptions& o) {
       for (std::size_t i : r.unplaced) std::cerr << " " << stations[i].name;
       std::cerr << " (no accepted link joins them to the reference " << stations[reference].name << ")";
     }
-    if (!r.ambiguous.empty()) {
-      std::cerr << (r.unplaced.empty() ? " " : "; ") << r.ambiguous.size() << " station(s) ambiguous:";
-      for (std::size_t i : r.ambiguous) std::cerr << " " << stations[i].name;
+    if (const auto ambiguous = r.ambiguous(); !ambiguous.empty()) {
+      std::cerr << (r.unplaced.empty() ? " " : "; ") << ambiguous.size() << " station(s) ambiguous:";
+      for (std::size_t i : ambiguous) std::cerr << " " << stations[i].name;
       std::cerr << " (identical rooms or a symmetric building: the links or the BIM place them in more than one"
                    " way; add a station that sees what tells them apart, or control: see \"ambiguous_why\" and"
                    " \"competing\" in the report)";

@@ -28,9 +28,15 @@ void compareStations(const NetworkAdjustment& adopted, const NetworkAdjustment& 
   }
 }
 
+/// What the adopted solution gave up: links to the BIM and sequence links it dropped.
+struct GivenUp {
+  std::size_t anchors = 0, sequence = 0;
+};
+
 CompetingPlacement alternativeFor(std::size_t link, std::size_t stations, const std::vector<AdjustmentLink>& links,
                                   std::size_t reference, const RigidTransform& reference_pose,
-                                  const PoseGraphParams& params, const NetworkAdjustment& adopted) {
+                                  const PoseGraphParams& params, const NetworkAdjustment& adopted,
+                                  const GivenUp& adopted_gave_up) {
   const NetworkAdjustment alt = adjustNetwork(stations, links, reference, reference_pose, params, {link});
   CompetingPlacement c;
   c.link = link;
@@ -41,8 +47,7 @@ CompetingPlacement alternativeFor(std::size_t link, std::size_t stations, const 
   compareStations(adopted, alt, params, c);
   // The adopted solution wins outright when it gives up fewer links to the BIM, or as many and
   // fewer sequence links.
-  const std::size_t anchors = droppedLinks(links, adopted, &AdjustmentLink::anchor);
-  const std::size_t sequence = droppedLinks(links, adopted, &AdjustmentLink::sequence);
+  const auto [anchors, sequence] = adopted_gave_up;
   const bool dominated = anchors < c.dropped_anchors || (anchors == c.dropped_anchors && sequence < c.dropped_sequence);
   c.competes = c.corroborated && !dominated && !c.stations.empty();
   return c;
@@ -55,8 +60,11 @@ CompetingPlacements findCompetingPlacements(std::size_t stations, const std::vec
                                             const PoseGraphParams& params, const NetworkAdjustment& adopted) {
   CompetingPlacements out;
   std::set<std::size_t> ambiguous;
+  const GivenUp gave_up{droppedLinks(links, adopted, &AdjustmentLink::anchor),
+                        droppedLinks(links, adopted, &AdjustmentLink::sequence)};
   for (std::size_t link : adopted.dropped_order) {
-    out.alternatives.push_back(alternativeFor(link, stations, links, reference, reference_pose, params, adopted));
+    out.alternatives.push_back(
+        alternativeFor(link, stations, links, reference, reference_pose, params, adopted, gave_up));
     const CompetingPlacement& c = out.alternatives.back();
     if (c.competes) ambiguous.insert(c.stations.begin(), c.stations.end());
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iterator>
 #include <set>
 
 #include "common/error.hpp"
@@ -117,9 +118,6 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, N
     out.competing = findCompetingPlacements(stations.size(), links, out.reference, reference_pose, params.graph,
                                             out.adjustment);
   out.copies_unchecked = copiesUnchecked(stations, out);
-  std::set<std::size_t> ambiguous(out.competing.ambiguous.begin(), out.competing.ambiguous.end());
-  ambiguous.insert(out.copies_unchecked.begin(), out.copies_unchecked.end());
-  out.ambiguous.assign(ambiguous.begin(), ambiguous.end());
   for (std::size_t i = 0; i < stations.size(); ++i)
     if (!out.adjustment.poses[i]) out.unplaced.push_back(i);
   std::vector<GraphEdge> kept;
@@ -132,9 +130,19 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, N
 
 }  // namespace
 
-bool NetworkResult::placed(std::size_t i) const {
-  return adjustment.poses.at(i).has_value() && !std::binary_search(ambiguous.begin(), ambiguous.end(), i);
+bool NetworkResult::isAmbiguous(std::size_t i) const {
+  return std::binary_search(competing.ambiguous.begin(), competing.ambiguous.end(), i) ||
+         std::binary_search(copies_unchecked.begin(), copies_unchecked.end(), i);
 }
+
+std::vector<std::size_t> NetworkResult::ambiguous() const {
+  std::vector<std::size_t> out;
+  std::set_union(competing.ambiguous.begin(), competing.ambiguous.end(), copies_unchecked.begin(),
+                 copies_unchecked.end(), std::back_inserter(out));
+  return out;
+}
+
+bool NetworkResult::placed(std::size_t i) const { return adjustment.poses.at(i).has_value() && !isAmbiguous(i); }
 
 std::size_t findStation(const std::vector<Station>& stations, const std::string& name) {
   std::string names;

@@ -31,10 +31,12 @@ struct NetworkResult {
   /// Stations the BIM places in several copies (their registration onto it was ambiguous)
   /// that only links no loop checks (bridges) place: one unchecked link chose the copy.
   std::vector<std::size_t> copies_unchecked;
-  /// Sorted union of competing.ambiguous and copies_unchecked: adjusted, but not placed.
-  std::vector<std::size_t> ambiguous;
+  /// In competing.ambiguous or copies_unchecked: adjusted, but not placed.
+  bool isAmbiguous(std::size_t i) const;
+  /// The ambiguous stations, sorted (the union of both lists).
+  std::vector<std::size_t> ambiguous() const;
   bool placed(std::size_t i) const;  ///< adjusted and not ambiguous
-  bool complete() const { return unplaced.empty() && ambiguous.empty(); }
+  bool complete() const { return unplaced.empty() && competing.ambiguous.empty() && copies_unchecked.empty(); }
 };
 
 /// Placed stations whose registration onto the BIM (the last station, when it is a model)

@@ -47,7 +47,7 @@ nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& s
   nlohmann::json links = nlohmann::json::array();
   for (std::size_t k = 0; k < r.links.size(); ++k)
     if (r.links[k].a == i || r.links[k].b == i) links.push_back(k);
-  const bool ambiguous = std::binary_search(r.ambiguous.begin(), r.ambiguous.end(), i);
+  const bool ambiguous = r.isAmbiguous(i);
   nlohmann::json j = {{"name", st[i].name}, {"file", st[i].file}, {"scan", st[i].scan_index},
                       {"placed", r.placed(i)}, {"ambiguous", ambiguous}, {"model", st[i].is_model},
                       {"links", links}};
@@ -117,7 +117,7 @@ nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& s
           {"loop_translation_mean_m", lt.mean()}, {"loop_translation_max_m", lt.max},
           {"loop_rotation_mean_deg", lr.mean()}, {"loop_rotation_max_deg", lr.max},
           {"residual_translation_mean_m", res.mean()}, {"residual_translation_max_m", res.max},
-          {"unplaced", names(st, r.unplaced)}, {"ambiguous", names(st, r.ambiguous)},
+          {"unplaced", names(st, r.unplaced)}, {"ambiguous", names(st, r.ambiguous())},
           {"copies_unchecked", names(st, r.copies_unchecked)},
           {"competing", competingJson(r, st)}, {"parts", parts}, {"solves", r.adjustment.solves},
           {"converged", r.adjustment.converged}, {"covariance", r.adjustment.covariance_ok},

@@ -102,7 +102,8 @@ bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
   for (auto& s : stations) detectStationFeatures(s, params.link);
   const std::size_t ref = o.bim ? stations.size() - 1 : 0;
   const NetworkResult r = registerNetwork(stations, ref, params);
-  const Worst net = worstError(r.adjustment.poses, c.indoor, ref, r.ambiguous);
+  const auto ambiguous = r.ambiguous();
+  const Worst net = worstError(r.adjustment.poses, c.indoor, ref, ambiguous);
   const Worst chain = worstError(r.adjustment.chain_poses, c.indoor, ref);
   double loop_max = 0.0, loop_sum = 0.0;
   for (const auto& l : r.adjustment.loops) loop_max = std::max(loop_max, l.translation), loop_sum += l.translation;
@@ -112,7 +113,7 @@ bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
               r.adjusted.size(), r.adjustment.dropped_order.size(), net.rotation_deg, 1000 * net.translation_m,
               chain.rotation_deg, 1000 * chain.translation_m, r.adjustment.loops.size(), 1000 * loop_mean,
               1000 * loop_max, c.seconds_simulation, r.seconds_features, r.seconds_links, r.seconds_adjustment,
-              net.unplaced, r.ambiguous.size(), net.wrong, networkExitCode(r));
+              net.unplaced, ambiguous.size(), net.wrong, networkExitCode(r));
   std::fflush(stdout);
   return net.unplaced == 0 && net.rotation_deg <= 0.02 && net.translation_m <= 0.005;
 }

@@ -99,7 +99,6 @@ TEST(CompetingPlacements, AmbiguousStationsAreNotPlacedAndTheNetworkFails) {
   EXPECT_EQ(networkExitCode(r), 0);
   EXPECT_TRUE(r.placed(1));
   r.competing.ambiguous = {1};
-  r.ambiguous = {1};
   EXPECT_FALSE(r.placed(1));
   EXPECT_TRUE(r.placed(0));
   EXPECT_EQ(networkExitCode(r), 2);
