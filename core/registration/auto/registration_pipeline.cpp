@@ -219,9 +219,7 @@ void limitToWallThickness(const GlobalRegistrationResult& g, RefineParams& rp,
   // half of it keeps candidates that start off along the normal from converging, and the
   // comparison of candidates then favours whichever started closest (a copy found by the copy
   // search), not the one that fits.
-  const auto measured = std::find_if(g.figures.begin(), g.figures.end(),
-                                     [](const auto& f) { return f.first == "wall thickness measured"; });
-  if (measured != g.figures.end() && measured->second < 0.5) {
+  if (!g.wall_thickness_measured) {
     log.push_back("refinement: first correspondence distance not limited (the wall thickness is assumed)");
     return;
   }

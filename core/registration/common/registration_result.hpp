@@ -48,6 +48,9 @@ struct GlobalRegistrationResult {
   /// m, openings method: the façade wall thickness between the indoor faces and the outdoor
   /// façade faces (measured, or assumed: see figures); the refinement must not bridge it.
   std::optional<double> wall_thickness;
+  /// The thickness was measured (openings on non-parallel façades, or planes seen through
+  /// them), not assumed.
+  bool wall_thickness_measured = false;
   /// Method-specific figures for the report, e.g. {"wall thickness (m)", 0.31}.
   std::vector<std::pair<std::string, double>> figures;
 

@@ -269,6 +269,7 @@ void reportThickness(const ThickScore& fin, bool measured, double plane_sim,
                      const OpeningRegistrationParams& p, GlobalRegistrationResult& r) {
   const double thickness = median(fin.thickness);
   r.wall_thickness = thickness;
+  r.wall_thickness_measured = measured;
   r.figures.push_back({"wall thickness (m)", thickness});
   r.figures.push_back({"wall thickness measured", measured ? 1.0 : 0.0});
   r.figures.push_back({"matched openings", double(fin.matched_openings)});
