@@ -18,8 +18,6 @@ namespace {
 using nlohmann::json;
 using Leaf = std::pair<std::string, json>;
 
-
-
 void flatten(const json& v, const std::string& path, std::vector<Leaf>& out) {
   if (v.is_object()) {
     for (auto it = v.begin(); it != v.end(); ++it)
@@ -33,13 +31,7 @@ void flatten(const json& v, const std::string& path, std::vector<Leaf>& out) {
 
 std::string esc(const std::string& s) { return escapeXml(s); }
 
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
-std::string mm(double metres) { return std::isfinite(metres) ? fixed(metres * 1e3, 1) + " mm" : "-"; }
+std::string mm(double metres) { return std::isfinite(metres) ? fixedDigits(metres * 1e3, 1) + " mm" : "-"; }
 
 void header(std::ostringstream& h, const RegistrationReport& r) {
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Registration report: "
@@ -77,12 +69,12 @@ void transform(std::ostringstream& h, const QualityReport& q) {
   h << "<h2>Transform (source to target)</h2><table>";
   for (int i = 0; i < 4; ++i) {
     h << "<tr>";
-    for (int j = 0; j < 4; ++j) h << "<td class=\"v\">" << fixed(m(i, j), j == 3 && i < 3 ? 4 : 9) << "</td>";
+    for (int j = 0; j < 4; ++j) h << "<td class=\"v\">" << fixedDigits(m(i, j), j == 3 && i < 3 ? 4 : 9) << "</td>";
     h << "</tr>";
   }
   const Eigen::Vector3d tr = t.translation();
-  h << "</table><p>Rotation " << fixed(t.rotationAngleDeg(), 4) << " deg; translation ("
-    << fixed(tr.x(), 4) << ", " << fixed(tr.y(), 4) << ", " << fixed(tr.z(), 4) << ") m.</p>\n";
+  h << "</table><p>Rotation " << fixedDigits(t.rotationAngleDeg(), 4) << " deg; translation ("
+    << fixedDigits(tr.x(), 4) << ", " << fixedDigits(tr.y(), 4) << ", " << fixedDigits(tr.z(), 4) << ") m.</p>\n";
 }
 
 void figures(std::ostringstream& h, const std::vector<Leaf>& leaves) {
@@ -133,9 +125,9 @@ void candidates(std::ostringstream& h, const QualityReport& q) {
     const auto& c = q.candidates[i];
     const Eigen::Vector3d t = c.transform.translation();
     h << "<tr><td>" << i + 1 << "</td><td>" << esc(c.role) << "</td><td class=\"v\">"
-      << fixed(c.transform.rotationAngleDeg(), 3) << " deg</td><td class=\"v\">" << fixed(t.x(), 3) << ", "
-      << fixed(t.y(), 3) << ", " << fixed(t.z(), 3) << "</td><td class=\"v\">" << fixed(c.feature_score, 3)
-      << "</td><td class=\"v\">" << (c.refined ? fixed(c.overlap * 100, 1) + " %" : "-")
+      << fixedDigits(c.transform.rotationAngleDeg(), 3) << " deg</td><td class=\"v\">" << fixedDigits(t.x(), 3) << ", "
+      << fixedDigits(t.y(), 3) << ", " << fixedDigits(t.z(), 3) << "</td><td class=\"v\">" << fixedDigits(c.feature_score, 3)
+      << "</td><td class=\"v\">" << (c.refined ? fixedDigits(c.overlap * 100, 1) + " %" : "-")
       << "</td><td class=\"v\">" << (c.refined ? mm(c.point_rms) : "-") << "</td></tr>";
   }
   h << "</table>\n";

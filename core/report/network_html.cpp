@@ -21,8 +21,6 @@ namespace {
 
 using nlohmann::json;
 
-
-
 constexpr const char* kPlaced = "#2e7d32";
 constexpr const char* kAmbiguous = "#f9a825";
 constexpr const char* kKept = "#43a047";
@@ -31,12 +29,6 @@ constexpr const char* kFlagged = "#fb8c00";
 constexpr const char* kDropped = "#e53935";
 
 std::string esc(const std::string& s) { return escapeXml(s); }
-
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
 
 /// A table cell showing `text` for the JSON value at `path` (data-json / data-value).
 std::string cell(const std::string& path, const json& value, const std::string& text) {
@@ -110,7 +102,6 @@ void plan(std::ostringstream& h, const json& r) {
   for (const auto& [name, q] : at) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
   p.min = lo - Eigen::Vector2d(1, 1);
   p.max = hi + Eigen::Vector2d(1, 1);
-  // Coordinates relative to the picture's corner: grid values never reach the SVG text.
   for (const auto& s : r["stations"])
     if (at.count(s["name"]))
       p.marks.push_back({at[s["name"]], s["name"], s.value("ambiguous", false) ? kAmbiguous : kPlaced});
@@ -134,15 +125,15 @@ void stations(std::ostringstream& h, const json& r) {
       << cell(s, base, "ambiguous", yesNo(s.value("ambiguous", json(false))));
     if (s.contains("pose")) {
       const auto& m = s["pose"]["matrix"];
-      for (int k = 0; k < 3; ++k) h << "<td class=\"v\">" << fixed(m[k][3].get<double>(), 4) << "</td>";
+      for (int k = 0; k < 3; ++k) h << "<td class=\"v\">" << fixedDigits(m[k][3].get<double>(), 4) << "</td>";
     } else {
       h << "<td></td><td></td><td></td>";
     }
     if (s.contains("sigma_position_m")) {
       const auto& sp = s["sigma_position_m"];
       h << cell(base + ".sigma_position_m", sp,
-                fixed(1e3 * sp[0].get<double>(), 2) + ", " + fixed(1e3 * sp[1].get<double>(), 2) + ", " +
-                    fixed(1e3 * sp[2].get<double>(), 2));
+                fixedDigits(1e3 * sp[0].get<double>(), 2) + ", " + fixedDigits(1e3 * sp[1].get<double>(), 2) + ", " +
+                    fixedDigits(1e3 * sp[2].get<double>(), 2));
     } else {
       h << "<td></td>";
     }
@@ -166,11 +157,11 @@ void links(std::ostringstream& h, const json& r) {
     const std::string base = "links[" + std::to_string(k) + "]";
     h << "<tr><td>" << esc(l["a"].get<std::string>() + " - " + l["b"].get<std::string>()) << "</td>"
       << cell(l, base, "reason", l["reason"]) << cell(l, base, "verdict_level", l["verdict_level"])
-      << cell(l, base, "overlap", fixed(l["overlap"].get<double>(), 3))
-      << cell(l, base, "point_rms_m", fixed(1e3 * l["point_rms_m"].get<double>(), 2));
+      << cell(l, base, "overlap", fixedDigits(l["overlap"].get<double>(), 3))
+      << cell(l, base, "point_rms_m", fixedDigits(1e3 * l["point_rms_m"].get<double>(), 2));
     if (l.contains("residual_translation_m"))
-      h << cell(l, base, "residual_translation_m", fixed(1e3 * l["residual_translation_m"].get<double>(), 2))
-        << cell(l, base, "residual_rotation_deg", fixed(l["residual_rotation_deg"].get<double>(), 4));
+      h << cell(l, base, "residual_translation_m", fixedDigits(1e3 * l["residual_translation_m"].get<double>(), 2))
+        << cell(l, base, "residual_rotation_deg", fixedDigits(l["residual_rotation_deg"].get<double>(), 4));
     else
       h << "<td></td><td></td>";
     h << "<td>" << esc(linkState(l)) << "</td></tr>";
@@ -188,12 +179,12 @@ void residualHistogram(std::ostringstream& h, const json& r) {
   const int bins = 10;
   BarPicture p;
   p.title = "Residuals of the kept links after adjustment";
-  p.x_label = "residual (0 to " + fixed(top, 2) + " mm, " + std::to_string(bins) + " bins)";
+  p.x_label = "residual (0 to " + fixedDigits(top, 2) + " mm, " + std::to_string(bins) + " bins)";
   p.y_label = "links";
   std::vector<int> count(bins, 0);
   for (double v : mm) ++count[std::min(bins - 1, static_cast<int>(v / top * bins))];
   for (int b = 0; b < bins; ++b)
-    p.bars.push_back({fixed(top * b / bins, 2) + "-" + fixed(top * (b + 1) / bins, 2) + " mm: " +
+    p.bars.push_back({fixedDigits(top * b / bins, 2) + "-" + fixedDigits(top * (b + 1) / bins, 2) + " mm: " +
                           std::to_string(count[b]) + " links",
                       double(count[b]), "#5c6bc0"});
   h << "<h2>Residuals</h2><figure>" << barsSvg(p) << "</figure>\n";

@@ -10,11 +10,8 @@ namespace {
 
 constexpr int kMargin = 44;
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", v);
-  return buf;
-}
+/// Pixel coordinates: a tenth of a pixel.
+std::string num(double v) { return fixedDigits(v, 1); }
 
 /// A round length near a fifth of `span`: 1, 2 or 5 times a power of ten.
 double niceStep(double span) {
@@ -60,6 +57,12 @@ Frame pictureFrame(const Eigen::Vector2d& span, int w, int h) {
 }
 
 }  // namespace
+
+std::string fixedDigits(double value, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, value);
+  return buf;
+}
 
 std::string escapeXml(const std::string& text) {
   std::string out;

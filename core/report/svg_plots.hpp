@@ -62,6 +62,9 @@ struct PlanPicture {
 /// Lines under marks, equal scales on both axes, a scale bar and a legend.
 std::string planSvg(const PlanPicture& picture, int width = 720, int height = 540);
 
+/// `value` with `digits` decimals ("%.*f"): figures in the reports' tables and pictures.
+std::string fixedDigits(double value, int digits);
+
 /// "&amp;" etc.: text safe inside SVG/HTML elements and attribute values.
 std::string escapeXml(const std::string& text);
 
