@@ -197,12 +197,8 @@ void DatasetLayer::setFirstColourIndex(std::size_t first) {
   if (style_.mode == PointColorMode::Scan) colours_stale_ = true;
 }
 
-bool DatasetLayer::hasColors() const {
-  return std::any_of(data_->scans.begin(), data_->scans.end(), [](const Scan& s) { return s.cloud.hasColors(); });
-}
+bool DatasetLayer::hasColors() const { return anyScanHasColors(*data_); }
 
-bool DatasetLayer::hasIntensity() const {
-  return std::any_of(data_->scans.begin(), data_->scans.end(), [](const Scan& s) { return s.cloud.hasIntensity(); });
-}
+bool DatasetLayer::hasIntensity() const { return anyScanHasIntensity(*data_); }
 
 }  // namespace plumb::ui

@@ -29,11 +29,17 @@ Bounds finiteBounds(const Column<Eigen::Vector3f>& positions) {
 
 }  // namespace
 
+bool anyScanHasColors(const Dataset& data) {
+  return std::any_of(data.scans.begin(), data.scans.end(), [](const Scan& s) { return s.cloud.hasColors(); });
+}
+
+bool anyScanHasIntensity(const Dataset& data) {
+  return std::any_of(data.scans.begin(), data.scans.end(), [](const Scan& s) { return s.cloud.hasIntensity(); });
+}
+
 PointStyle initialStyle(const Dataset& data) {
   PointStyle style;
-  if (std::none_of(data.scans.begin(), data.scans.end(),
-                   [](const Scan& s) { return s.cloud.hasColors(); }))
-    style.mode = PointColorMode::Elevation;
+  if (!anyScanHasColors(data)) style.mode = PointColorMode::Elevation;
   return style;
 }
 

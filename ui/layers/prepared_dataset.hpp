@@ -26,6 +26,9 @@ struct PreparedDataset {
 
 /// RGB when any scan has colours, elevation otherwise.
 PointStyle initialStyle(const Dataset& data);
+/// Whether any scan of `data` carries RGB colours / intensities (what the colour modes can show).
+bool anyScanHasColors(const Dataset& data);
+bool anyScanHasIntensity(const Dataset& data);
 /// Builds everything for `data` drawn with initialStyle (deterministic). Thread safe; reports
 /// to `progress` and throws Canceled between scans and passes when it is cancelled.
 PreparedDataset prepareDataset(const std::shared_ptr<const Dataset>& data,
