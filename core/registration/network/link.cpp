@@ -12,6 +12,13 @@ void weighLink(Link& link, const LinkWeightParams& p) {
   link.sigma_rotation_deg = link.sigma_translation / std::max(1.0, link.length_scale) * 180.0 / M_PI;
 }
 
+namespace {
+RegistrationSide withoutFeatures(RegistrationSide side) {
+  side.features = nullptr;
+  return side;
+}
+}  // namespace
+
 Link registerLink(const Station& a, const Station& b, const CandidatePair& pair, const NetworkParams& params) {
   const auto t0 = std::chrono::steady_clock::now();
   Link link;
@@ -24,9 +31,7 @@ Link registerLink(const Station& a, const Station& b, const CandidatePair& pair,
   // The station's features are detected again there, with the segments a model target needs
   // (its stored features have none), so the link is exactly plumb-cli register onto the model.
   const bool onto_model = b.is_model;
-  RegistrationSide station = a.input.side();
-  station.features = nullptr;
-  const PipelineResult r = onto_model ? registerData(station, b.input.side(), params.link)
+  const PipelineResult r = onto_model ? registerData(withoutFeatures(a.input.side()), b.input.side(), params.link)
                                       : registerData(b.input.side(), a.input.side(), params.link);
   link.level = r.report.level;
   link.verdict = r.report.verdict;
