@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "model/column.hpp"
+#include "common/float_cast.hpp"
 #include "model/rigid_transform.hpp"
 
 namespace plumb {
@@ -130,9 +131,9 @@ class PointCloud {
   static void splitLocal(const Eigen::Vector3d& local, Eigen::Vector3f& hi, Eigen::Vector3f& lo);
   /// One component of splitLocal: v - hi is exact in double (hi is v's leading 24 bits).
   static void splitComponent(double v, float& hi, float& lo) {
-    hi = static_cast<float>(v);
+    hi = toFloat(v);
     const double rest = v - static_cast<double>(hi);
-    lo = std::isfinite(rest) ? static_cast<float>(rest) : 0.0f;
+    lo = std::isfinite(rest) ? toFloat(rest) : 0.0f;
   }
   /// Bounds of world positions (NaN positions ignored). Exact: from the float positions plus
   /// offset (one fast float pass) when there are no residuals, else from world(i) in double

@@ -1,4 +1,5 @@
 #include "io/e57/e57_scan_reader.hpp"
+#include "common/float_cast.hpp"
 
 
 #include <algorithm>
@@ -217,7 +218,7 @@ void writePositions(PointCloud& cloud, const Block& b, const Xyz& p, bool exact_
   for (std::size_t j = 0; j < b.sel.size(); ++j) {
     const std::uint32_t i = b.sel[j];
     if (exact_locals) cloud.setLocal(out + j, {p.x[i] - ox, p.y[i] - oy, p.z[i] - oz});
-    else pos[j] = {static_cast<float>(p.x[i] - ox), static_cast<float>(p.y[i] - oy), static_cast<float>(p.z[i] - oz)};
+    else pos[j] = {toFloat(p.x[i] - ox), toFloat(p.y[i] - oy), toFloat(p.z[i] - oz)};
   }
 }
 
@@ -227,7 +228,7 @@ void writeIntensity(PointCloud& cloud, const Block& b, const ScanLayout& l, std:
   float* d = cloud.intensity.data() + out;
   for (std::size_t j = 0; j < b.sel.size(); ++j) {
     const std::uint32_t i = b.sel[j];
-    d[j] = bad && bad[i] != 0 ? std::numeric_limits<float>::quiet_NaN() : static_cast<float>(v[i]);
+    d[j] = bad && bad[i] != 0 ? std::numeric_limits<float>::quiet_NaN() : toFloat(v[i]);
   }
 }
 
@@ -295,7 +296,7 @@ void writeNormals(PointCloud& cloud, const Block& b, const ScanLayout& l, std::s
   const double *nx = l.field(b.cols, NormalX), *ny = l.field(b.cols, NormalY), *nz = l.field(b.cols, NormalZ);
   for (std::size_t j = 0; j < b.sel.size(); ++j) {
     const std::uint32_t i = b.sel[j];
-    cloud.normals[out + j] = {static_cast<float>(nx[i]), static_cast<float>(ny[i]), static_cast<float>(nz[i])};
+    cloud.normals[out + j] = {toFloat(nx[i]), toFloat(ny[i]), toFloat(nz[i])};
   }
 }
 
@@ -305,8 +306,7 @@ void writeOrigins(PointCloud& cloud, const Block& b, const ScanLayout& l, std::s
   const double *sx = l.field(b.cols, SensorX), *sy = l.field(b.cols, SensorY), *sz = l.field(b.cols, SensorZ);
   for (std::size_t j = 0; j < b.sel.size(); ++j) {
     const std::uint32_t i = b.sel[j];
-    cloud.sensor_origins[out + j] = {static_cast<float>(sx[i] - ox), static_cast<float>(sy[i] - oy),
-                                     static_cast<float>(sz[i] - oz)};
+    cloud.sensor_origins[out + j] = {toFloat(sx[i] - ox), toFloat(sy[i] - oy), toFloat(sz[i] - oz)};
   }
 }
 
@@ -337,7 +337,7 @@ void writeScalarFields(PointCloud& cloud, const Block& b, const ScanLayout& l, s
   for (std::size_t k = 0; k < l.roles.others.size(); ++k) {
     const double* v = b.cols[l.roles.others[k]].data();
     float* d = cloud.scalar_fields[k].values.data() + out;
-    for (std::size_t j = 0; j < m; ++j) d[j] = static_cast<float>(v[b.sel[j]]);
+    for (std::size_t j = 0; j < m; ++j) d[j] = toFloat(v[b.sel[j]]);
   }
 }
 

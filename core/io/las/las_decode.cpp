@@ -1,4 +1,5 @@
 #include "io/las/las_decode.hpp"
+#include "common/float_cast.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -8,13 +9,6 @@
 namespace plumb::las {
 
 namespace {
-// double -> float without the undefined behaviour of out-of-range conversions (fuzzed scales).
-inline double inFloatRange(double v) {
-  constexpr double kMax = std::numeric_limits<float>::max();
-  return v < -kMax ? -kMax : (v > kMax ? kMax : v);
-}
-inline float toFloat(double v) { return static_cast<float>(inFloatRange(v)); }
-
 double extraValue(const std::uint8_t* p, int type) {
   switch (type) {
     case 1: return p[0];

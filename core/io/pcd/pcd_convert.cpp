@@ -1,4 +1,5 @@
 #include "io/pcd/pcd_convert.hpp"
+#include "common/float_cast.hpp"
 
 #include <cstring>
 #include <limits>
@@ -25,7 +26,7 @@ float getFloat(const std::uint8_t* p, std::uint8_t datatype) {
     case pcd_type::kInt32: return static_cast<float>(load<std::int32_t>(p));
     case pcd_type::kUint32: return static_cast<float>(load<std::uint32_t>(p));
     case pcd_type::kFloat32: return load<float>(p);
-    case pcd_type::kFloat64: return static_cast<float>(load<double>(p));
+    case pcd_type::kFloat64: return toFloat(load<double>(p));
     default: break;
   }
   return std::numeric_limits<float>::quiet_NaN();

@@ -1,4 +1,5 @@
 #include "io/ply/ply_reader.hpp"
+#include "common/float_cast.hpp"
 
 #include <unistd.h>
 
@@ -78,12 +79,13 @@ inline std::uint8_t toColor(T v) {
   }
 }
 
-/// v converted to T, clamped to T's range (NaN -> 0): out-of-range conversions of file values
-/// to integers are undefined behaviour.
+/// v converted to T: integers clamped to T's range (NaN -> 0), floats beyond range -> +-inf.
+/// Out-of-range conversions of file values are undefined behaviour.
 template <class T>
 T saturate(double v) {
   if constexpr (std::is_floating_point_v<T>) {
-    return static_cast<T>(v);
+    if constexpr (std::is_same_v<T, float>) return toFloat(v);  // found by fuzz_ply
+    else return static_cast<T>(v);
   } else {
     if (std::isnan(v)) return T{0};
     return static_cast<T>(std::clamp(v, static_cast<double>(std::numeric_limits<T>::lowest()),
@@ -114,14 +116,14 @@ void extractBlock(const char* p, std::size_t k, std::size_t stride, const std::v
                                          d[3 * i], r[3 * i]);
           } else {
             for (std::size_t i = 0; i < k; ++i)
-              d[3 * i] = static_cast<float>(static_cast<double>(ply::load<T, Swap>(q + i * stride)) - off);
+              d[3 * i] = toFloat(static_cast<double>(ply::load<T, Swap>(q + i * stride)) - off);
           }
           break;
         }
         case Target::Normal: {
           float* d = c.nrm + base * 3 + s.comp;
           for (std::size_t i = 0; i < k; ++i)
-            d[3 * i] = static_cast<float>(ply::load<T, Swap>(q + i * stride));
+            d[3 * i] = toFloat(static_cast<double>(ply::load<T, Swap>(q + i * stride)));
           break;
         }
         case Target::Color: {
@@ -133,7 +135,7 @@ void extractBlock(const char* p, std::size_t k, std::size_t stride, const std::v
         case Target::Scalar: {
           float* d = (s.target == Target::Intensity ? c.inten : c.scalars[s.scalar]) + base;
           for (std::size_t i = 0; i < k; ++i)
-            d[i] = static_cast<float>(ply::load<T, Swap>(q + i * stride));
+            d[i] = toFloat(static_cast<double>(ply::load<T, Swap>(q + i * stride)));
           break;
         }
         case Target::Extra: {
@@ -153,16 +155,16 @@ void putValue(const Slot& s, const Columns& c, std::size_t i, double v) {
   switch (s.target) {
     case Target::Position:
       if (c.res) PointCloud::splitComponent(v - c.offset[s.comp], c.pos[i * 3 + s.comp], c.res[i * 3 + s.comp]);
-      else c.pos[i * 3 + s.comp] = static_cast<float>(v - c.offset[s.comp]);
+      else c.pos[i * 3 + s.comp] = toFloat(v - c.offset[s.comp]);
       break;
-    case Target::Normal: c.nrm[i * 3 + s.comp] = static_cast<float>(v); break;
+    case Target::Normal: c.nrm[i * 3 + s.comp] = toFloat(v); break;
     case Target::Color:
       c.rgb[i * 3 + s.comp] = ply::withType(s.type, [&](auto tag) {
         return toColor(saturate<decltype(tag)>(v));
       });
       break;
-    case Target::Intensity: c.inten[i] = static_cast<float>(v); break;
-    case Target::Scalar: c.scalars[s.scalar][i] = static_cast<float>(v); break;
+    case Target::Intensity: c.inten[i] = toFloat(v); break;
+    case Target::Scalar: c.scalars[s.scalar][i] = toFloat(v); break;
     case Target::Extra: c.extras[s.scalar][i] = v; break;
     case Target::Skip: break;
   }

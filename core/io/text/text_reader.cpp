@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "common/error.hpp"
+#include "common/float_cast.hpp"
 #include "io/text/text_io.hpp"
 #include "io/text/text_layout.hpp"
 
@@ -320,11 +321,11 @@ void appendPoint(PointCloud& c, const std::vector<Col>& cols, const std::vector<
       case Col::R: rgb[0] = colorByte(v); break;
       case Col::G: rgb[1] = colorByte(v); break;
       case Col::B: rgb[2] = colorByte(v); break;
-      case Col::I: c.intensity.push_back(static_cast<float>(v)); break;
-      case Col::NX: n.x() = static_cast<float>(v); break;
-      case Col::NY: n.y() = static_cast<float>(v); break;
-      case Col::NZ: n.z() = static_cast<float>(v); break;
-      case Col::Scalar: scalar_of[k]->values.push_back(static_cast<float>(v)); break;
+      case Col::I: c.intensity.push_back(toFloat(v)); break;
+      case Col::NX: n.x() = toFloat(v); break;
+      case Col::NY: n.y() = toFloat(v); break;
+      case Col::NZ: n.z() = toFloat(v); break;
+      case Col::Scalar: scalar_of[k]->values.push_back(toFloat(v)); break;
     }
   }
   Eigen::Vector3f hi, lo;

@@ -17,6 +17,16 @@ RegistrationSide withoutFeatures(RegistrationSide side) {
   side.features = nullptr;
   return side;
 }
+
+/// The refined candidates other than the chosen one and those converging onto it or ruled out
+/// by the free space.
+std::vector<LinkAlternative> alternativesOf(const PipelineResult& r) {
+  std::vector<LinkAlternative> out;
+  for (const auto& c : r.report.candidates)
+    if (c.refined && (c.role == "competing" || c.role == "worse"))
+      out.push_back({c.transform, c.role, c.overlap, c.point_rms});
+  return out;
+}
 }  // namespace
 
 Link registerLink(const Station& a, const Station& b, const CandidatePair& pair, const NetworkParams& params) {
@@ -46,6 +56,7 @@ Link registerLink(const Station& a, const Station& b, const CandidatePair& pair,
   link.length_scale = r.refinement ? r.refinement->length_scale : 0.0;
   link.accepted = link.registered && (link.level == VerdictLevel::Usable ||
                                       (link.level == VerdictLevel::CheckVisually && params.weights.accept_check_visually));
+  if (!onto_model) link.alternatives = alternativesOf(r);
   weighLink(link, params.weights);
   link.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return link;

@@ -12,6 +12,15 @@
 
 namespace plumb {
 
+/// Another placement the link's pipeline refined and judged (its PlacementCandidate with role
+/// "competing" or "worse"), listed in the report: what the pair could also have been.
+struct LinkAlternative {
+  RigidTransform transform;  ///< b's frame -> a's frame
+  std::string role;
+  double overlap = 0.0;
+  double point_rms = 0.0;  ///< m
+};
+
 struct Link {
   std::size_t a = 0, b = 0;
   std::string reason;        ///< why the pair was tried (CandidatePair::reason)
@@ -30,6 +39,7 @@ struct Link {
   double sigma_translation = 0.0;   ///< m, weight in the adjustment
   double sigma_rotation_deg = 0.0;  ///< deg
   double seconds = 0.0;
+  std::vector<LinkAlternative> alternatives;  ///< empty for links to the BIM (the model report lists those)
 };
 
 /// Registers station b onto station a with params.link and weighs the result (when b is the

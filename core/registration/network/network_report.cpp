@@ -29,6 +29,11 @@ nlohmann::json linkJson(const NetworkResult& r, const std::vector<Station>& st, 
                       {"sigma_rotation_deg", l.sigma_rotation_deg}, {"accepted", l.accepted},
                       {"seconds", l.seconds}};
   if (l.registered) j["transform"] = matrixJson(l.transform);
+  j["alternatives"] = nlohmann::json::array();
+  for (const auto& alt : l.alternatives)
+    j["alternatives"].push_back({{"role", alt.role}, {"overlap", alt.overlap}, {"point_rms_m", alt.point_rms},
+                                 {"rotation_from_chosen_deg", RigidTransform::rotationErrorDeg(alt.transform, l.transform)},
+                                 {"transform", matrixJson(alt.transform)}});
   const LinkOutcome* o = outcomeOf(r, k);
   j["flagged"] = o && o->flagged;
   j["dropped"] = o && o->dropped;

@@ -12,7 +12,9 @@
 //             "sigma_rotation_deg", "accepted", "residual_translation_m", "residual_rotation_deg",
 //             "residual_sigma", "flagged", "dropped", "bridge" (a kept link no loop checks),
 //             "triangles_closing", "triangles_failing",
-//             "seconds", "transform" (b's frame -> a's frame)}],
+//             "seconds", "transform" (b's frame -> a's frame), "alternatives": [{"role",
+//             "overlap", "point_rms_m", "rotation_from_chosen_deg", "transform"}] (the other
+//             placements the link's pipeline refined)}],
 //  "network": {"stations", "pairs_all", "pairs_registered", "links_accepted", "links_dropped",
 //              "links_flagged", "links_unchecked" (bridges), "rounds", "loop_closures": [{"link", "stations",
 //              "translation_m", "rotation_deg"}], "loop_translation_mean_m",

@@ -18,7 +18,10 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "registration/network/network_registration.hpp"
 #include "registration/network/network_report.hpp"
@@ -40,6 +43,7 @@ struct Options {
   bool smoke = false;
   bool synthetic = false;
   bool bim = false;  ///< also register every station onto the building's model (the reference)
+  std::string report_dir;  ///< when set: each seed's network report, with every station's true error
 };
 
 struct Campaign {
@@ -94,6 +98,22 @@ Worst worstError(const std::vector<std::optional<RigidTransform>>& poses, const 
   return w;
 }
 
+/// The network report of one seed, each station with its adopted pose's error against the truth
+/// ("true_rotation_error_deg", "true_position_error_m"), for analysis.
+void writeReport(const std::string& dir, std::uint64_t seed, const NetworkResult& r, const std::vector<Station>& st,
+                 const SimulatedDataset& d, std::size_t ref) {
+  nlohmann::json j = networkReportToJson(r, st);
+  const bool model_frame = ref >= d.true_poses.size();
+  const RigidTransform to_registered = model_frame ? RigidTransform() : d.scan_truths[ref].inverse();
+  for (std::size_t i = 0; i < d.true_poses.size(); ++i) {
+    if (!r.adjustment.poses[i]) continue;
+    const RigidTransform expected = to_registered * d.true_poses[i];
+    j["stations"][i]["true_rotation_error_deg"] = RigidTransform::rotationErrorDeg(expected, *r.adjustment.poses[i]);
+    j["stations"][i]["true_position_error_m"] = RigidTransform::translationError(expected, *r.adjustment.poses[i]);
+  }
+  std::ofstream(dir + "/seed-" + std::to_string(seed) + ".json") << j.dump(1);
+}
+
 bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
   const Campaign c = simulate(b, o, seed);
   NetworkParams params;
@@ -105,6 +125,7 @@ bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
   const auto ambiguous = r.ambiguous();
   const Worst net = worstError(r.adjustment.poses, c.indoor, ref, ambiguous);
   const Worst chain = worstError(r.adjustment.chain_poses, c.indoor, ref);
+  if (!o.report_dir.empty()) writeReport(o.report_dir, seed, r, stations, c.indoor, ref);
   double loop_max = 0.0, loop_sum = 0.0;
   for (const auto& l : r.adjustment.loops) loop_max = std::max(loop_max, l.translation), loop_sum += l.translation;
   const double loop_mean = r.adjustment.loops.empty() ? 0.0 : loop_sum / double(r.adjustment.loops.size());
@@ -166,7 +187,8 @@ Options parse(int argc, char** argv) {
     else if (a == "--preset" && i + 1 < argc) o.preset = argv[++i];
     else if (a == "--seeds" && i + 1 < argc) o.seeds = std::stoi(argv[++i]);
     else if (a == "--first-seed" && i + 1 < argc) o.first_seed = std::stoull(argv[++i]);
-    else throw std::runtime_error("usage: bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic] [--bim]");
+    else if (a == "--report-dir" && i + 1 < argc) o.report_dir = argv[++i];
+    else throw std::runtime_error("usage: bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic] [--bim] [--report-dir DIR]");
   }
   return o;
 }

@@ -149,5 +149,22 @@ TEST(CopiesUnchecked, AStationTheBimFitsInCopiesNeedsALoopCheckedLink) {
   EXPECT_TRUE(copiesUnchecked(st, r).empty());
 }
 
+TEST(NetworkReport, EachLinkListsTheOtherPlacementsItsPipelineRefined) {
+  std::vector<Station> st(2);
+  st[0].name = "tls-0", st[1].name = "tls-1";
+  NetworkResult r;
+  r.adjustment.poses = {RigidTransform(), RigidTransform()};
+  r.adjustment.sigma_position.assign(2, Eigen::Vector3d::Zero());
+  r.adjustment.sigma_rotation_deg.assign(2, Eigen::Vector3d::Zero());
+  r.links = {linkBetween(0, 1, "success", true)};
+  r.links[0].transform = RigidTransform::fromYaw(0.1, {1, 0, 0});
+  r.links[0].alternatives.push_back({RigidTransform::fromYaw(0.1 + M_PI, {1, 0, 0}), "worse", 0.62, 0.0047});
+  const auto j = networkReportToJson(r, st)["links"][0]["alternatives"];
+  ASSERT_EQ(j.size(), 1u);
+  EXPECT_EQ(j[0]["role"], "worse");
+  EXPECT_DOUBLE_EQ(j[0]["overlap"].get<double>(), 0.62);
+  EXPECT_NEAR(j[0]["rotation_from_chosen_deg"].get<double>(), 180.0, 1e-6);
+}
+
 }  // namespace
 }  // namespace plumb
