@@ -14,6 +14,9 @@ namespace plumb {
 struct Scan {
   std::string name;
   std::string guid;
+  /// GUIDs of the scans these points came from (E57 data3D originalGuids): a written scan is a
+  /// new version with a new GUID, listing the GUID it was read with here.
+  std::vector<std::string> original_guids;
   std::string description;
   RigidTransform pose;  ///< scan frame -> dataset frame (the sensor sits at pose.translation())
   bool has_pose = false;  ///< false when the file carried no pose (pose is identity then)

@@ -396,6 +396,7 @@ Scan scanHeader(const ScanInfo& info, std::size_t index) {
   Scan scan;
   scan.name = info.name.empty() ? "scan " + std::to_string(index) : info.name;
   scan.guid = info.guid;
+  scan.original_guids = info.original_guids;
   scan.description = info.description;
   scan.has_pose = info.has_pose;
   scan.pose = RigidTransform::fromQuaternion(info.rotation, info.translation);

@@ -39,20 +39,18 @@ void E57StreamWriter::writeScan(const Scan& scan, Progress* progress) {
   w.scan.description = scan.description;
   w.scan.pose = scan.pose;
   w.scan.has_pose = scan.has_pose;
-  w.guid = scan.guid.empty() ? e57::newGuid() : scan.guid;
+  // A written scan is a new version of the data (E57: "guid" identifies the current version):
+  // a new GUID, and the one it was read with kept in originalGuids for traceability.
+  w.guid = e57::newGuid();
+  w.original_guids = scan.guid.empty() ? scan.original_guids : std::vector<std::string>{scan.guid};
   const auto fields = e57::describeScan(scan.cloud, state_->options, w);
   w.section_offset = e57::writeCompressedVector(state_->out, fields, w.records, progress);
   points_ += scan.cloud.size();
   state_->written.push_back(std::move(w));
 }
 
-void E57StreamWriter::finish(const std::vector<std::pair<std::string, std::string>>& metadata,
-                             const std::string& coordinate_system) {
-  std::string file_guid;
-  for (const auto& [key, value] : metadata)
-    if (key == "file GUID") file_guid = value;
-  const std::string xml =
-      e57::buildXml(file_guid.empty() ? e57::newGuid() : file_guid, coordinate_system, state_->written);
+void E57StreamWriter::finish(const std::string& coordinate_system) {
+  const std::string xml = e57::buildXml(e57::newGuid(), coordinate_system, state_->written);
   e57::FileHeader header;
   header.xml_physical_offset = state_->out.physicalPosition();
   header.xml_logical_length = xml.size();
@@ -78,7 +76,7 @@ void writeE57(const std::filesystem::path& path, const Dataset& data, const E57W
     }
     done += scan.cloud.size();
   }
-  writer.finish(data.metadata, data.coordinate_system);
+  writer.finish(data.coordinate_system);
   reportProgress(progress, 1.0, "writing E57");
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // E57 writer. Each Scan becomes one data3D entry with its pose (normalised double quaternion +
-// translation), GUID (kept from the scan or generated), name, description (String values
+// translation), a new GUID (the one the scan was read with kept in originalGuids), name, description (String values
 // with bytes XML cannot carry replaced by U+FFFD), cartesianBounds (of the stored, quantized
 // values), and a point prototype of: cartesianX/Y/Z as ScaledInteger with quantum `scaled_precision`
 // (limits from the data, so bits = ceil(log2(range/precision + 1))) or as Float double;
@@ -50,9 +50,9 @@ class E57StreamWriter {
   E57StreamWriter& operator=(const E57StreamWriter&) = delete;
   /// Writes one scan (validated first); the caller may release it afterwards.
   void writeScan(const Scan& scan, Progress* progress = nullptr);
-  /// The XML (file GUID from `metadata` "file GUID" when present) and the header; commits.
-  void finish(const std::vector<std::pair<std::string, std::string>>& metadata,
-              const std::string& coordinate_system);
+  /// The XML (a new file GUID: every written file is a new file, never the source's) and the
+  /// header; commits.
+  void finish(const std::string& coordinate_system);
   std::uint64_t points() const { return points_; }
   std::size_t scans() const;
 

@@ -112,8 +112,13 @@ class XmlParser {
 
   /// Text of a String child: all its text and CDATA pieces joined ("]]>" splits CDATA).
   std::string childString(const pugi::xml_node& parent, const char* name) const {
+    return childText(parent.child(name));
+  }
+
+  /// Text of a String node (text and CDATA pieces joined, trimmed).
+  static std::string childText(const pugi::xml_node& node) {
     std::string out;
-    for (pugi::xml_node t = parent.child(name).first_child(); t; t = t.next_sibling())
+    for (pugi::xml_node t = node.first_child(); t; t = t.next_sibling())
       if (t.type() == pugi::node_pcdata || t.type() == pugi::node_cdata) out += t.value();
     return std::string(trim(out));
   }
@@ -179,6 +184,8 @@ class XmlParser {
     s.path = path;
     if (type(node, path) != "Structure") fail(path, "data3D entry is not a Structure");
     s.guid = childString(node, "guid");
+    for (pugi::xml_node g = node.child("originalGuids").first_child(); g; g = g.next_sibling())
+      if (g.type() == pugi::node_element) s.original_guids.push_back(childText(g));
     s.name = childString(node, "name");
     s.description = childString(node, "description");
     for (const char* part : {"sensorVendor", "sensorModel", "sensorSerialNumber"}) {

@@ -40,6 +40,7 @@ struct Limits {
 struct ScanInfo {
   std::string path;  ///< "/e57Root/data3D/3"
   std::string guid, name, description, sensor;
+  std::vector<std::string> original_guids;
   bool has_pose = false;
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  ///< normalised
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();

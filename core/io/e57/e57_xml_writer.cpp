@@ -157,6 +157,11 @@ void scanXml(Xml& x, const WrittenScan& w) {
   const Scan& scan = w.scan;
   x.open("vectorChild", "type=\"Structure\"");
   x.str("guid", w.guid);
+  if (!w.original_guids.empty()) {
+    x.open("originalGuids", "type=\"Vector\" allowHeterogeneousChildren=\"0\"");
+    for (const std::string& g : w.original_guids) x.str("vectorChild", g);
+    x.close("originalGuids");
+  }
   x.str("name", scan.name);
   if (!scan.description.empty()) x.str("description", scan.description);
   if (scan.has_pose || !scan.pose.isIdentity()) poseXml(x, scan);

@@ -13,7 +13,8 @@ namespace plumb::e57 {
 /// What the writer knows about one written scan.
 struct WrittenScan {
   Scan scan;  ///< name, description, pose (no points: the writer may stream scan after scan)
-  std::string guid;
+  std::string guid;                         ///< new for every written scan
+  std::vector<std::string> original_guids;  ///< the GUID the scan was read with (or its originals)
   std::uint64_t section_offset = 0;  ///< physical
   std::uint64_t records = 0;
   std::vector<FieldSpec> prototype;

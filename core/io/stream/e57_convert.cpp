@@ -36,6 +36,7 @@ class E57ConvertSink final : public ChunkSink {
 
   void begin(const StreamOutline& outline) override {
     source_ = outline.dataset.source;
+    crs_ = outline.dataset.coordinate_system;
     if (!params_.split) open(out_);
   }
   void beginScan(const StreamScan& s) override {
@@ -58,10 +59,10 @@ class E57ConvertSink final : public ChunkSink {
     settleColumns(scan_.cloud, end);
     writer_->writeScan(scan_, progress_);
     scan_.cloud = PointCloud();  // released before the next scan
-    if (params_.split) close({}, "");
+    if (params_.split) close();  // each station's file keeps the coordinate system
   }
-  void end(const StreamOutline& outline) override {
-    if (!params_.split) close(outline.dataset.metadata, outline.dataset.coordinate_system);
+  void end(const StreamOutline&) override {
+    if (!params_.split) close();
   }
   ConvertResult result() { return std::move(result_); }
 
@@ -74,8 +75,8 @@ class E57ConvertSink final : public ChunkSink {
     writer_ = std::make_unique<E57StreamWriter>(path, o);
     file_ = ConvertedFile{path, 0, 0, {}};
   }
-  void close(const std::vector<std::pair<std::string, std::string>>& metadata, const std::string& crs) {
-    writer_->finish(metadata, crs);
+  void close() {
+    writer_->finish(crs_);
     file_.points = writer_->points();
     file_.scans = writer_->scans();
     file_.report.points = file_.points;
@@ -84,6 +85,7 @@ class E57ConvertSink final : public ChunkSink {
   }
 
   std::filesystem::path out_, source_;
+  std::string crs_;  ///< the source's coordinate system, written into every output file
   const ConvertParams& params_;
   Progress* progress_;
   Scan scan_;

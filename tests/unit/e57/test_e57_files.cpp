@@ -241,6 +241,7 @@ TEST(E57Files, OriginalGuids) {
   const Dataset d = read("original_guids.e57");
   ASSERT_EQ(d.scans.size(), 1u);
   EXPECT_EQ(d.scans[0].guid, "{9DD0BCF6-69A8-476D-2A3C-3E05A05DC421}");
+  EXPECT_EQ(d.scans[0].original_guids, (std::vector<std::string>{"guid1", "guid2", "guid3"}));
   expectScan(d.scans[0], 1, V(1, 2, 3), V(1, 2, 3), {});
 }
 

@@ -1,5 +1,6 @@
-// read -> write -> read keeps every point (to the stored precision), poses, names, GUIDs and
-// attributes; written files follow the interoperability rules of docs/E57_FORMAT.md.
+// read -> write -> read keeps every point (to the stored precision), poses, names and
+// attributes; each written scan is a new version (new GUID, the old one in originalGuids) in a
+// new file (new file GUID); written files follow the interoperability rules of docs/E57_FORMAT.md.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,7 +27,9 @@ void expectSameData(const Dataset& a, const Dataset& b, double tol) {
     const Scan& t = b.scans[k];
     SCOPED_TRACE("scan " + std::to_string(k));
     EXPECT_EQ(s.name, t.name);
-    EXPECT_EQ(s.guid, t.guid);
+    EXPECT_NE(s.guid, t.guid) << "a written scan is a new version of the data";
+    EXPECT_EQ(t.guid.size(), 38u);  // "{8-4-4-4-12}"
+    EXPECT_EQ(t.original_guids, s.guid.empty() ? s.original_guids : std::vector<std::string>{s.guid});
     EXPECT_EQ(s.has_pose, t.has_pose);
     EXPECT_LT(RigidTransform::rotationErrorDeg(s.pose, t.pose), 1e-9);
     EXPECT_LT(RigidTransform::translationError(s.pose, t.pose), 1e-9);
@@ -77,7 +80,17 @@ TEST(E57RoundTrip, MultiScanAB) {
   const Dataset r = roundTrip(d, "A_B");
   expectSameData(d, r, kQuantumTol);
   ASSERT_EQ(r.scans.size(), 2u);
-  EXPECT_EQ(r.scans[1].guid, "{3e80c997-fbd5-4b07-ba33-9b79f63247fa}");
+  EXPECT_EQ(r.scans[1].original_guids, std::vector<std::string>{"{3e80c997-fbd5-4b07-ba33-9b79f63247fa}"});
+  // A new file: its GUID is not the source's (issue 17: exports kept the source file's GUID).
+  const auto file_guid = [](const Dataset& x) {
+    for (const auto& [k, v] : x.metadata)
+      if (k == "file GUID") return v;
+    return std::string();
+  };
+  ASSERT_FALSE(file_guid(d).empty());
+  ASSERT_EQ(file_guid(r).size(), 38u);
+  EXPECT_NE(file_guid(r), file_guid(d));
+  EXPECT_NE(file_guid(roundTrip(d, "A_B_again")), file_guid(r)) << "every written file is a new file";
 }
 
 TEST(E57RoundTrip, ScaledIntegerBunnyIsExactAtItsOwnPrecision) {
@@ -159,10 +172,7 @@ TEST(E57RoundTrip, SyntheticGeoreferencedScansWithPoses) {
     s.cloud.grid_rows = rows, s.cloud.grid_columns = cols;
     s.guid = "";
   }
-  for (std::size_t k = 0; k < r.scans.size(); ++k) {
-    EXPECT_EQ(r.scans[k].guid.size(), 38u);  // generated "{8-4-4-4-12}"
-    expected.scans[k].guid = r.scans[k].guid;
-  }
+  for (std::size_t k = 0; k < r.scans.size(); ++k) EXPECT_TRUE(r.scans[k].original_guids.empty());
   // Float local coordinates: the 0.1 mm grid points come back within float rounding.
   expectSameData(expected, r, 1e-5);
 
