@@ -30,6 +30,7 @@
 #include "ui/panels/properties_panel.hpp"
 #include "ui/panels/task_progress_widget.hpp"
 #include "ui/project/project_file.hpp"
+#include "ui/project/unsaved_changes.hpp"
 #include "ui/registration/manual_align_panel.hpp"
 #include "ui/registration/registration_panel.hpp"
 #include "ui/tasks/load_files.hpp"
@@ -199,6 +200,10 @@ void MainWindow::dropEvent(QDropEvent* event) {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!confirmClose(*context_)) {
+    event->ignore();
+    return;
+  }
   context_->tasks.cancelAll();
   QMainWindow::closeEvent(event);
 }

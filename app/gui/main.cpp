@@ -95,6 +95,9 @@ int main(int argc, char** argv) {
   parser.process(app);
   const auto options = startupOptions(parser, command_line);
   if (!options) return 2;
+  // A batch run (--screenshot: tests, documentation) keeps its settings apart from the user's:
+  // it must not rewrite their recent files or remembered folders.
+  if (!options->screenshot.isEmpty()) QCoreApplication::setOrganizationName("Plumb-batch");
 
   plumb::ui::MainWindow window;
   if (!options->screenshot.isEmpty() && !resizeWindow(window, parser.value(command_line.size))) return 2;

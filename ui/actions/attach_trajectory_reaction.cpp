@@ -18,7 +18,7 @@ void AttachTrajectoryReaction::onTriggered() {
     app().log.error(tr("Attach trajectory: select the mobile scan (a point dataset) first"));
     return;
   }
-  const QString path = chooseFileToOpen(&app().window, tr("Attach trajectory to %1").arg(layer->name()),
+  const QString path = chooseFileToOpen(&app().window, FolderKind::Data, tr("Attach trajectory to %1").arg(layer->name()),
                                         tr("Trajectory, t x y z per line (*.txt *.csv *.traj);;All files (*)"));
   if (path.isEmpty()) return;
   startAttachTrajectory(app(), static_cast<DatasetLayer&>(*layer), path);

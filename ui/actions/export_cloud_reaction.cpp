@@ -1,9 +1,11 @@
 #include "ui/actions/export_cloud_reaction.hpp"
 
+#include <QFileInfo>
 #include <QMainWindow>
 
 #include "ui/actions/file_dialogs.hpp"
 #include "ui/app_context.hpp"
+#include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
@@ -14,6 +16,17 @@
 #include "ui/tasks/export_tasks.hpp"
 
 namespace plumb::ui {
+
+namespace {
+/// The file a top-level layer was read from (empty when generated or not a dataset).
+QString sourceFile(const Layer& layer) {
+  if (layer.kind() != LayerKind::Dataset) return {};
+  return QString::fromStdString(static_cast<const DatasetLayer&>(layer).dataset().source.string());
+}
+
+/// The folder of `file` (empty for no file): where exports go when none was chosen yet.
+QString folderOf(const QString& file) { return file.isEmpty() ? QString() : QFileInfo(file).absolutePath(); }
+}  // namespace
 
 Layer* exportLayer(AppContext& app) {
   Layer* layer = app.layers.currentLayer();
@@ -28,9 +41,11 @@ void ExportCloudReaction::onTriggered() {
     app().log.error(tr("Export: select a point dataset"));
     return;
   }
+  const QString source = sourceFile(*layer);
   const QString path = chooseFileToSave(
-      &app().window, tr("Export registered cloud"), layer->name(),
-      tr("E57 with poses (*.e57);;PLY (*.ply);;LAS (*.las)"));
+      &app().window, FolderKind::Export, tr("Export registered cloud"),
+      derivedFileName(source, layer->name(), "registered", "e57"),
+      tr("E57 with poses (*.e57);;PLY (*.ply);;LAS (*.las)"), folderOf(source));
   if (path.isEmpty()) return;
   try {
     exportRegisteredDataset(app(), *layer, path);
@@ -45,9 +60,10 @@ void ExportTransformReaction::onTriggered() {
     app().log.error(tr("Export transform: select a dataset or a model"));
     return;
   }
-  const QString path = chooseFileToSave(&app().window, tr("Export transform"),
-                                                    "transform.json",
-                                                    tr("JSON (*.json);;4x4 text (*.txt)"));
+  const QString source = sourceFile(*layer);
+  const QString path = chooseFileToSave(&app().window, FolderKind::Export, tr("Export transform"),
+                                        derivedFileName(source, layer->name(), "transform", "json"),
+                                        tr("JSON (*.json);;4x4 text (*.txt)"), folderOf(source));
   if (!path.isEmpty()) exportTransform(app(), *layer, path);
 }
 
@@ -58,7 +74,7 @@ void ExportReportReaction::onTriggered() {
     app().log.error(tr("Export report: register first (there is no registration result)"));
     return;
   }
-  const QString path = chooseFileToSave(&app().window, tr("Export registration report"),
+  const QString path = chooseFileToSave(&app().window, FolderKind::Export, tr("Export registration report"),
                                         "registration-report.html",
                                         tr("Report to hand over (*.html);;Quality report (*.json)"));
   if (path.isEmpty()) return;

@@ -9,7 +9,7 @@
 namespace plumb::ui {
 
 void OpenFileReaction::onTriggered() {
-  const QStringList files = chooseFilesToOpen(&app().window, tr("Open survey data"),
+  const QStringList files = chooseFilesToOpen(&app().window, FolderKind::Data, tr("Open survey data"),
                                               supportedFileFilter());
   if (!files.isEmpty()) loadFiles(app(), files);
 }

@@ -1,6 +1,7 @@
 #include "ui/actions/project_reactions.hpp"
 
 #include <QMainWindow>
+#include <QUndoStack>
 
 #include "ui/actions/file_dialogs.hpp"
 #include "ui/app_context.hpp"
@@ -22,7 +23,7 @@ bool OpenProjectReaction::canRun() const { return !app().tasks.holdsLayers(); }
 
 void OpenProjectReaction::onTriggered() {
   const QString path =
-      chooseFileToOpen(&app().window, tr("Open project"), filter());
+      chooseFileToOpen(&app().window, FolderKind::Project, tr("Open project"), filter());
   if (path.isEmpty()) return;
   try {
     openProject(app(), path);
@@ -31,17 +32,22 @@ void OpenProjectReaction::onTriggered() {
   }
 }
 
-void SaveProjectReaction::onTriggered() {
-  QString path = chooseFileToSave(&app().window, tr("Save project"),
-                                              "project.plumb.json", filter());
-  if (path.isEmpty()) return;
+bool saveProjectAs(AppContext& app) {
+  QString path = chooseFileToSave(&app.window, FolderKind::Project, QObject::tr("Save project"),
+                                  "project.plumb.json", filter());
+  if (path.isEmpty()) return false;
   if (!path.endsWith(".json", Qt::CaseInsensitive)) path += ".plumb.json";
   try {
-    saveProject(app(), path);
-    app().log.info(tr("Project saved to %1").arg(path));
+    saveProject(app, path);
+    app.undo.setClean();
+    app.log.info(QObject::tr("Project saved to %1").arg(path));
+    return true;
   } catch (const std::exception& e) {
-    app().log.error(QString::fromUtf8(e.what()));
+    app.log.error(QString::fromUtf8(e.what()));
+    return false;
   }
 }
+
+void SaveProjectReaction::onTriggered() { saveProjectAs(app()); }
 
 }  // namespace plumb::ui

@@ -25,4 +25,8 @@ class SaveProjectReaction : public Reaction {
   void onTriggered() override;
 };
 
+/// Asks where to save the project and saves it; the undo history's clean point moves there (the
+/// applied transforms are saved). False when canceled or the write failed (logged).
+bool saveProjectAs(AppContext& app);
+
 }  // namespace plumb::ui

@@ -10,7 +10,7 @@
 namespace plumb::ui {
 
 void ScreenshotReaction::onTriggered() {
-  QString path = chooseFileToSave(&app().window, tr("Export screenshot"),
+  QString path = chooseFileToSave(&app().window, FolderKind::Export, tr("Export screenshot"),
                                               "plumb.png", tr("PNG image (*.png)"));
   if (path.isEmpty()) return;
   if (!path.endsWith(".png", Qt::CaseInsensitive)) path += ".png";

@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "io/io.hpp"
+#include "io/stream/point_convert.hpp"
 #include "ui/app_context.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
@@ -29,6 +30,7 @@ Task* exportRegisteredDataset(AppContext& app, const Layer& layer, const QString
   if (layer.kind() != LayerKind::Dataset)
     throw InputError("export: '" + layer.name().toStdString() + "' is not a point dataset");
   const auto data = static_cast<const DatasetLayer&>(layer).sharedDataset();
+  refuseSameFile(data->source, path.toStdString());  // an export never replaces its own input
   const RigidTransform T = layerTransform(layer);
   Task* task = app.tasks.run(QObject::tr("Exporting %1").arg(layer.name()),
                              [&app, data, T, path](Progress& progress) -> Task::Apply {
