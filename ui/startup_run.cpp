@@ -16,7 +16,7 @@
 #include "ui/registration/registration_panel.hpp"
 #include "ui/tasks/load_files.hpp"
 #include "ui/view/screenshot.hpp"
-#include "ui/view/standard_view.hpp"
+#include "ui/view/scene_framing.hpp"
 #include "ui/view/vtk_view_widget.hpp"
 
 namespace plumb::ui {
@@ -123,7 +123,7 @@ void StartupRun::finish(bool ok) {
     return;
   }
   AppContext& app = window_.context();
-  resetCamera(app.view.renderer());
+  frameScene(app.scene, app.view);
   // After a registration: frame the registered source (far-reaching outdoor scans would make
   // the building a speck).
   RegistrationPanel& panel = *app.registration;

@@ -5,7 +5,6 @@
 
 #include "ui/actions/file_dialogs.hpp"
 #include "ui/app_context.hpp"
-#include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
@@ -18,12 +17,6 @@
 namespace plumb::ui {
 
 namespace {
-/// The file a top-level layer was read from (empty when generated or not a dataset).
-QString sourceFile(const Layer& layer) {
-  if (layer.kind() != LayerKind::Dataset) return {};
-  return QString::fromStdString(static_cast<const DatasetLayer&>(layer).dataset().source.string());
-}
-
 /// The folder of `file` (empty for no file): where exports go when none was chosen yet.
 QString folderOf(const QString& file) { return file.isEmpty() ? QString() : QFileInfo(file).absolutePath(); }
 }  // namespace
@@ -41,7 +34,7 @@ void ExportCloudReaction::onTriggered() {
     app().log.error(tr("Export: select a point dataset"));
     return;
   }
-  const QString source = sourceFile(*layer);
+  const QString source = layerSource(*layer);
   const QString path = chooseFileToSave(
       &app().window, FolderKind::Export, tr("Export registered cloud"),
       derivedFileName(source, layer->name(), "registered", "e57"),
@@ -60,7 +53,7 @@ void ExportTransformReaction::onTriggered() {
     app().log.error(tr("Export transform: select a dataset or a model"));
     return;
   }
-  const QString source = sourceFile(*layer);
+  const QString source = layerSource(*layer);
   const QString path = chooseFileToSave(&app().window, FolderKind::Export, tr("Export transform"),
                                         derivedFileName(source, layer->name(), "transform", "json"),
                                         tr("JSON (*.json);;4x4 text (*.txt)"), folderOf(source));

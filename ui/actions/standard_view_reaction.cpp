@@ -1,6 +1,7 @@
 #include "ui/actions/standard_view_reaction.hpp"
 
 #include "ui/app_context.hpp"
+#include "ui/view/scene_framing.hpp"
 #include "ui/view/vtk_view_widget.hpp"
 
 namespace plumb::ui {
@@ -9,8 +10,7 @@ StandardViewReaction::StandardViewReaction(QAction* action, AppContext& app, Sta
     : Reaction(action, app), view_(view) {}
 
 void StandardViewReaction::onTriggered() {
-  applyStandardView(app().view.renderer(), view_);
-  app().view.requestRender();
+  frameScene(app().scene, app().view, view_);
 }
 
 }  // namespace plumb::ui

@@ -8,6 +8,7 @@
 
 #include "ui/layers/color_ramp.hpp"
 #include "ui/layers/feature_layer.hpp"
+#include "ui/layers/render_frame.hpp"
 #include "ui/layers/scan_layer.hpp"
 #include "ui/tasks/task_manager.hpp"
 
@@ -40,6 +41,8 @@ DatasetLayer::DatasetLayer(std::shared_ptr<const Dataset> data, const Eigen::Vec
                                          std::move(prepared.scans[i])));
   }
   style_ = prepared.style;  // the prepared colours are this style's
+  exact_bounds_ = prepared.bounds;
+  framing_ = prepared.framing;
   for (ScanLayer* s : scans()) s->setPointSize(style_.point_size);
 }
 
@@ -153,6 +156,14 @@ void DatasetLayer::setShowsTransform(bool show) {
   shows_transform_ = show;
   applyTransform();
 }
+
+Eigen::Matrix4d DatasetLayer::shownTransform() const {
+  return shows_transform_ ? transform_.matrix() : Eigen::Matrix4d::Identity();
+}
+
+Bounds DatasetLayer::bounds() const { return transformBounds(exact_bounds_, shownTransform()); }
+
+Bounds DatasetLayer::framingBounds() const { return transformBounds(framing_, shownTransform()); }
 
 void DatasetLayer::applyTransform() {
   const RigidTransform shown = shows_transform_ ? transform_ : RigidTransform();

@@ -79,6 +79,10 @@ class DatasetLayer : public Layer {
   /// change under Elevation colours); Scene::layerChanged then recolours in the background.
   bool takeStaleColours();
 
+  /// The dataset's exact bounds (those `plumb-cli info` reports) under the shown transform.
+  Bounds bounds() const override;
+  /// Its robust bounds (outliers left out) under the shown transform.
+  Bounds framingBounds() const override;
   std::vector<PropertyRow> describe() const override;
   /// In the Scan colour mode, each scan with its colour.
   std::vector<LegendEntry> legend() const override;
@@ -91,7 +95,9 @@ class DatasetLayer : public Layer {
 
  private:
   void applyTransform();
+  Eigen::Matrix4d shownTransform() const;
   std::shared_ptr<const Dataset> data_;
+  Bounds exact_bounds_, framing_;  ///< dataset frame (PreparedDataset)
   PointStyle style_;
   RigidTransform transform_;
   bool shows_transform_ = true;

@@ -46,6 +46,13 @@ Bounds Layer::bounds() const {
   return b;
 }
 
+Bounds Layer::framingBounds() const {
+  if (children_.empty()) return bounds();
+  Bounds b;
+  for (const auto& c : children_) b.extend(c->framingBounds());
+  return b;
+}
+
 std::vector<PropertyRow> Layer::describe() const {
   std::vector<PropertyRow> rows{{"Name", name_}, {"Kind", layerKindName(kind_)}};
   const Bounds b = bounds();

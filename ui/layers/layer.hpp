@@ -49,6 +49,9 @@ class Layer {
   virtual std::vector<vtkProp*> props() const { return {}; }
   /// World bounds of this layer and its children.
   virtual Bounds bounds() const;
+  /// World box the views frame (Reset camera, standard views, Zoom to layer): the bounds
+  /// without outliers where the layer knows them (robust_bounds.hpp), else bounds().
+  virtual Bounds framingBounds() const;
   /// Rows for the properties panel.
   virtual std::vector<PropertyRow> describe() const;
   /// The colours the layer is drawn with and what they mean (empty: a ramp or its own colours).

@@ -1,5 +1,7 @@
 #include "ui/layers/layer_transform.hpp"
 
+#include "model/robust_bounds.hpp"
+
 #include <QFileInfo>
 
 #include <algorithm>
@@ -36,37 +38,20 @@ QString layerSource(const Layer& layer) {
   return QString::fromStdString(p.string());
 }
 
-/// Box of the 3%..97% quantiles per axis of a sample of a dataset's points (world); the
-/// layer's bounds for other layers.
+/// The 3%..97% quantiles per axis (robustBounds, no margin) of a sample of a dataset's points
+/// (world); the layer's bounds for other layers.
 Bounds bulkBounds(const Layer& layer) {
   if (layer.kind() != LayerKind::Dataset) return layer.bounds();
-  std::array<std::vector<double>, 3> axes;
+  std::vector<Eigen::Vector3d> samples;
   for (const ScanLayer* scan : static_cast<const DatasetLayer&>(layer).scans()) {
     const auto& pts = scan->scan().cloud.positions;
     const Eigen::Matrix4d m = scan->localToWorld();
     const std::size_t step = std::max<std::size_t>(1, pts.size() / 20000);
-    for (std::size_t i = 0; i < pts.size(); i += step) {
-      if (!pts[i].allFinite()) continue;
-      const Eigen::Vector3d w = (m * pts[i].cast<double>().homogeneous()).head<3>();
-      for (int k = 0; k < 3; ++k) axes[std::size_t(k)].push_back(w[k]);
-    }
+    for (std::size_t i = 0; i < pts.size(); i += step)
+      samples.push_back((m * pts[i].cast<double>().homogeneous()).head<3>());
   }
-  if (axes[0].empty()) return layer.bounds();
-  Bounds b;
-  Eigen::Vector3d lo, hi;
-  for (int k = 0; k < 3; ++k) {
-    auto& v = axes[std::size_t(k)];
-    auto at = [&v](double q) {
-      const auto i = static_cast<std::size_t>(q * double(v.size() - 1));
-      std::nth_element(v.begin(), v.begin() + long(i), v.end());
-      return v[i];
-    };
-    lo[k] = at(0.03);
-    hi[k] = at(0.97);
-  }
-  b.extend(lo);
-  b.extend(hi);
-  return b;
+  const Bounds b = robustBounds(std::move(samples), 0.03, 0.0);
+  return b.empty() ? layer.bounds() : b;
 }
 
 Layer* findLayerBySource(const Scene& scene, const QString& path) {

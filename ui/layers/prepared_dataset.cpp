@@ -1,5 +1,7 @@
 #include "ui/layers/prepared_dataset.hpp"
 
+#include "model/robust_bounds.hpp"
+
 #include <algorithm>
 
 #include <tbb/blocked_range.h>
@@ -67,6 +69,7 @@ PreparedDataset prepareDataset(const std::shared_ptr<const Dataset>& data, Progr
   }
   checkCanceled(progress);
   out.bounds = data->bounds();
+  out.framing = robustBounds(datasetSamples(*data));
   done = 0;
   for (std::size_t i = 0; i < data->scans.size(); ++i) {
     const std::size_t n = data->scans[i].cloud.size();

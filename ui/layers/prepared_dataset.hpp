@@ -22,6 +22,7 @@ struct PreparedDataset {
   std::vector<PreparedScan> scans;  ///< one per scan of the dataset, in order
   PointStyle style;                 ///< the style the colours were computed for
   Bounds bounds;                    ///< Dataset::bounds() (dataset frame)
+  Bounds framing;                   ///< robustBounds of the points (dataset frame): what views frame
 };
 
 /// RGB when any scan has colours, elevation otherwise.

@@ -167,6 +167,13 @@ Bounds Scene::visibleBounds() const {
   return b;
 }
 
+Bounds Scene::visibleFramingBounds() const {
+  Bounds b;
+  for (const auto& l : layers_)
+    if (l->effectivelyVisible()) b.extend(l->framingBounds());
+  return b;
+}
+
 void Scene::renderBounds(const Bounds& world, double out[6]) const {
   toRenderBounds(world, origin(), out);
 }

@@ -68,6 +68,9 @@ class Scene : public QObject {
 
   /// World bounds of the visible layers.
   Bounds visibleBounds() const;
+  /// Union of the visible top-level layers' framing bounds (Layer::framingBounds): what the
+  /// views frame, outliers left out.
+  Bounds visibleFramingBounds() const;
   /// VTK bounds in render coordinates of a world box.
   void renderBounds(const Bounds& world, double out[6]) const;
 

@@ -14,7 +14,7 @@
 #include "ui/layers/scene.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/tasks/task_manager.hpp"
-#include "ui/view/standard_view.hpp"
+#include "ui/view/scene_framing.hpp"
 #include "ui/view/vtk_view_widget.hpp"
 
 namespace plumb::ui {
@@ -76,8 +76,8 @@ Layer& addLoaded(AppContext& app, Loaded& data, const QString& path) {
                      .arg(elements));
   }
   app.recent.add(path);
-  if (first) resetCamera(app.view.renderer());
-  app.view.requestRender();
+  if (first) frameScene(app.scene, app.view);
+  else app.view.requestRender();
   return *layer;
 }
 

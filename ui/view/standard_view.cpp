@@ -27,13 +27,14 @@ Placement placementOf(StandardView view) {
 
 }  // namespace
 
-void applyStandardView(vtkRenderer* renderer, StandardView view) {
+void applyStandardView(vtkRenderer* renderer, StandardView view, const double* bounds) {
   vtkCamera* camera = renderer->GetActiveCamera();
   const Placement p = placementOf(view);
   camera->SetFocalPoint(0, 0, 0);
   camera->SetPosition(p.direction);
   camera->SetViewUp(p.up);
-  renderer->ResetCamera();
+  if (bounds) renderer->ResetCamera(bounds);
+  else renderer->ResetCamera();
   renderer->ResetCameraClippingRange();
 }
 

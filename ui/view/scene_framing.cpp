@@ -1,0 +1,27 @@
+#include "ui/view/scene_framing.hpp"
+
+#include "ui/layers/layer.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/view/vtk_view_widget.hpp"
+
+namespace plumb::ui {
+
+void frameScene(const Scene& scene, VtkViewWidget& widget, StandardView view) {
+  const Bounds world = scene.visibleFramingBounds();
+  double b[6];
+  if (!world.empty()) scene.renderBounds(world, b);
+  applyStandardView(widget.renderer(), view, world.empty() ? nullptr : b);
+  widget.requestRender();
+}
+
+bool frameLayer(const Scene& scene, VtkViewWidget& widget, const Layer& layer) {
+  const Bounds world = layer.framingBounds();
+  if (world.empty()) return false;
+  double b[6];
+  scene.renderBounds(world, b);
+  zoomToBounds(widget.renderer(), b);
+  widget.requestRender();
+  return true;
+}
+
+}  // namespace plumb::ui
