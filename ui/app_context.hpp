@@ -11,6 +11,7 @@ class LogPanel;
 class PropertiesPanel;
 class RegistrationPanel;
 class ManualAlignPanel;
+class MeasureTool;
 class RecentFiles;
 class Scene;
 class TaskManager;
@@ -28,6 +29,7 @@ struct AppContext {
   QUndoStack& undo;  ///< every applied transform (Edit > Undo/Redo)
   RegistrationPanel* registration = nullptr;  ///< the Registration dock (set once built)
   ManualAlignPanel* manual = nullptr;         ///< the Manual alignment dock
+  MeasureTool* measure = nullptr;             ///< View > Measure (view clicks measure while on)
 };
 
 }  // namespace plumb::ui

@@ -15,6 +15,7 @@
 #include "ui/actions/full_detail_reaction.hpp"
 #include "ui/actions/open_file_reaction.hpp"
 #include "ui/actions/help_reactions.hpp"
+#include "ui/actions/inspection_reactions.hpp"
 #include "ui/actions/project_reactions.hpp"
 #include "ui/actions/registration_step_reaction.hpp"
 #include "ui/actions/recent_files.hpp"
@@ -25,6 +26,7 @@
 #include "ui/actions/standard_view_reaction.hpp"
 #include "ui/actions/zoom_to_layer_reaction.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/inspection/measure_tool.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/panels/properties_panel.hpp"
@@ -58,12 +60,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
       new AppContext{*this, *view, *scene, *tasks, *log, *tree, *properties, *recent, *undo});
   context_->registration = new RegistrationPanel(*context_, this);
   context_->manual = new ManualAlignPanel(*context_, this);
+  context_->measure = new MeasureTool(*context_, this);
   lod_ = new LodController(*view, *scene, this);
 
   connect(scene, &Scene::renderNeeded, view, &VtkViewWidget::requestRender);
   connect(tree, &LayerTreePanel::currentLayerChanged, properties, &PropertiesPanel::showLayer);
   connect(view, &VtkViewWidget::clicked, this, [this](int x, int y) {
-    if (context_->manual->picking()) return;
+    if (context_->manual->picking() || context_->measure->active()) return;
     if (auto hit = context_->scene.pick(x, y))
       context_->properties.showRows(hit->layer->name(), hit->rows);
   });
@@ -158,6 +161,8 @@ void MainWindow::createMenus() {
   view->addSeparator();
   new ZoomToLayerReaction(view->addAction(tr("&Zoom to layer")), app);
   new ResetCameraReaction(view->addAction(tr("&Reset camera")), app);
+  new MeasureReaction(view->addAction(tr("&Measure point / distance")), app);
+  new ProjectionReaction(view->addAction(tr("&Orthographic projection")), app);
   new FullDetailReaction(view->addAction(tr("Full detail when still (may be slow)")), app, *lod_);
   view->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());

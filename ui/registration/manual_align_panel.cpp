@@ -10,6 +10,7 @@
 #include <QVBoxLayout>
 
 #include "ui/app_context.hpp"
+#include "ui/inspection/measure_tool.hpp"
 #include "ui/layers/layer_transform.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/log_panel.hpp"
@@ -128,7 +129,7 @@ void ManualAlignPanel::setLevelled(bool levelled) { levelled_->setChecked(levell
 QStringList ManualAlignPanel::markerLabels() const { return markers_->labels(); }
 
 void ManualAlignPanel::onClicked(int x, int y) {
-  if (!picking() || !app_.registration) return;
+  if (!picking() || !app_.registration || (app_.measure && app_.measure->active())) return;
   Layer* layer = have_source_pick_ ? app_.registration->targetLayer()
                                    : app_.registration->sourceLayer();
   if (!layer) return;

@@ -1,5 +1,6 @@
 #include "ui/registration/point_picking.hpp"
 
+#include <vtkCamera.h>
 #include <vtkCellPicker.h>
 #include <vtkRenderer.h>
 
@@ -69,6 +70,20 @@ std::optional<Eigen::Vector3d> pickLayerPoint(vtkRenderer* renderer, const Scene
       best_along = scan_best;
       best = (m * pts[best_i].cast<double>().homogeneous()).head<3>();
     }
+  }
+  return best;
+}
+
+std::optional<ScenePick> pickScenePoint(vtkRenderer* renderer, const Scene& scene, int x, int y,
+                                        double tolerance_deg) {
+  double cam[3];
+  renderer->GetActiveCamera()->GetPosition(cam);
+  const Eigen::Vector3d eye = Eigen::Vector3d(cam[0], cam[1], cam[2]) + scene.origin();
+  std::optional<ScenePick> best;
+  for (const auto& l : scene.layers()) {
+    if (!l->effectivelyVisible() || (l->kind() != LayerKind::Dataset && l->kind() != LayerKind::Model)) continue;
+    const auto p = pickLayerPoint(renderer, scene, *l, x, y, tolerance_deg);
+    if (p && (!best || (*p - eye).norm() < (best->world - eye).norm())) best = ScenePick{*p, l.get()};
   }
   return best;
 }

@@ -19,4 +19,16 @@ std::optional<Eigen::Vector3d> pickLayerPoint(vtkRenderer* renderer, const Scene
                                               const Layer& layer, int x, int y,
                                               double tolerance_deg = 0.5);
 
+/// A point picked in the view and the layer it belongs to.
+struct ScenePick {
+  Eigen::Vector3d world;
+  const Layer* layer = nullptr;
+};
+
+/// The front-most point of any visible dataset or model under display position (x, y), within
+/// `tolerance_deg` of the view ray for points (about 13 px on an 800 px high view: no need to
+/// hit a point exactly); nullopt if none.
+std::optional<ScenePick> pickScenePoint(vtkRenderer* renderer, const Scene& scene, int x, int y,
+                                        double tolerance_deg = 0.5);
+
 }  // namespace plumb::ui

@@ -32,6 +32,7 @@
 #include "gui/image_checks.hpp"
 #include "gui/menu_actions.hpp"
 #include "gui/open_window.hpp"
+#include "gui/view_clicks.hpp"
 #include "support/test_support.hpp"
 #include "ui/actions/file_dialogs.hpp"
 #include "ui/actions/recent_files.hpp"
@@ -64,25 +65,8 @@ namespace {
 
 QString q(const std::filesystem::path& p) { return QString::fromStdString(p.string()); }
 
-
-/// Widget (logical) position of a world point as the view draws it now.
-QPoint projectToView(AppContext& app, const Eigen::Vector3d& world) {
-  vtkRenderer* r = app.view.renderer();
-  const Eigen::Vector3d p = world - app.scene.origin();
-  r->SetWorldPoint(p.x(), p.y(), p.z(), 1.0);
-  r->WorldToDisplay();
-  const double* d = r->GetDisplayPoint();
-  const double dpr = app.view.devicePixelRatioF();
-  const double device_h = std::floor(app.view.height() * dpr);
-  return QPoint(static_cast<int>(std::lround(d[0] / dpr)),
-                static_cast<int>(std::lround((device_h - 1.0 - d[1]) / dpr)));
-}
-
-/// A user's click (press + release, no drag) at widget position `p` of the view.
-void clickView(AppContext& app, QPoint p) {
-  QTest::mouseClick(&app.view, Qt::LeftButton, Qt::NoModifier, p);
-  QApplication::processEvents();
-}
+using test::clickView;
+using test::projectToView;
 
 }  // namespace
 

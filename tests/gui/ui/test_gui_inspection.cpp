@@ -1,0 +1,119 @@
+// Inspection tools (issue 17): View > Measure shows a clicked point's coordinates, then the
+// distance to a second one (slope, horizontal, height difference) equal to the true one within
+// the point spacing; View > Orthographic projection switches to a parallel projection.
+#include <QAction>
+#include <QTest>
+
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
+#include "gui/image_checks.hpp"
+#include "gui/menu_actions.hpp"
+#include "gui/open_window.hpp"
+#include "gui/view_clicks.hpp"
+#include "support/test_support.hpp"
+#include "ui/inspection/measure_tool.hpp"
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/main_window.hpp"
+#include "ui/panels/properties_panel.hpp"
+#include "ui/view/scene_framing.hpp"
+#include "ui/view/screenshot.hpp"
+
+using namespace plumb;
+using namespace plumb::ui;
+
+namespace {
+constexpr double kSpacing = 0.1;
+
+/// A red 10 x 10 m floor at 0.1 m spacing, at national-grid coordinates, and a 1 x 1 m block
+/// top 1.5 m above it at (8..9, 8..9).
+std::shared_ptr<const Dataset> floorAndBlock(const Eigen::Vector3d& offset) {
+  PointCloud c;
+  c.offset = offset;
+  for (int i = 0; i <= 100; ++i)
+    for (int j = 0; j <= 100; ++j) {
+      const bool block = i >= 80 && i <= 90 && j >= 80 && j <= 90;
+      c.positions.push_back(Eigen::Vector3f(float(kSpacing * i), float(kSpacing * j), block ? 1.5f : 0.0f));
+      c.colors.push_back({255, 0, 0});
+    }
+  return std::make_shared<const Dataset>(Dataset::fromCloud(std::move(c)));
+}
+
+QString row(const std::vector<PropertyRow>& rows, const QString& key) {
+  for (const auto& [k, v] : rows)
+    if (k == key) return v;
+  return {};
+}
+}  // namespace
+
+class GuiInspectionTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void measuresPointsAndDistancesWithTheMouse() {
+    std::unique_ptr<MainWindow> window;
+    test::showMainWindow(window, QSize(1100, 800));
+    if (QTest::currentTestFailed()) return;
+    AppContext& app = window->context();
+    const Eigen::Vector3d grid(651000.0, 6860000.0, 40.0);
+    app.scene.addDataset(floorAndBlock(grid));
+    frameScene(app.scene, app.view, StandardView::Top);
+    grabView(app.view);
+
+    QAction* measure = test::menuAction(*window, "View", "Measure point / distance");
+    QVERIFY(measure && measure->isCheckable());
+    measure->trigger();
+    QVERIFY(app.measure->active());
+    // First click: the point's coordinates, in the national grid.
+    const Eigen::Vector3d a = grid + Eigen::Vector3d(2.0, 3.0, 0.0);
+    test::clickView(app, test::projectToView(app, a));
+    auto rows = app.properties.rows();
+    QVERIFY2(std::abs(row(rows, "X (m)").toDouble() - a.x()) <= kSpacing, qPrintable(row(rows, "X (m)")));
+    QVERIFY2(std::abs(row(rows, "Y (m)").toDouble() - a.y()) <= kSpacing, qPrintable(row(rows, "Y (m)")));
+    QCOMPARE(row(rows, "Z (m)"), QString("40.000"));
+    // Second click, on the block top: the distance, within the point spacing of the truth.
+    const Eigen::Vector3d b = grid + Eigen::Vector3d(8.5, 8.5, 1.5);
+    test::clickView(app, test::projectToView(app, b));
+    QVERIFY(app.measure->last());
+    const Measurement& m = *app.measure->last();
+    QVERIFY2(std::abs(m.slope - (b - a).norm()) <= std::sqrt(2.0) * kSpacing,
+             qPrintable(QString("%1 against %2").arg(m.slope).arg((b - a).norm())));
+    QVERIFY(std::abs(m.horizontal - (b - a).head<2>().norm()) <= std::sqrt(2.0) * kSpacing);
+    QVERIFY2(std::abs(m.height - 1.5) < 1e-3, "the block top is in front: picked, not the floor under it");
+    rows = app.properties.rows();
+    QCOMPARE(row(rows, "Height difference (m)"), QString("1.500"));
+    QCOMPARE(row(rows, "Distance (m)"), QString::number(m.slope, 'f', 3));
+    saveScreenshot(app.view, QString::fromStdString((test::scratchDir("gui_inspection") / "measure.png").string()));
+    QVERIFY2(test::countHue(grabView(app.view), 55) > 20, "the yellow measured line is drawn");
+    // Off: clicks pick features again, the marks go.
+    measure->trigger();
+    QVERIFY(!app.measure->active());
+    QCOMPARE(test::countHue(grabView(app.view), 55), 0);
+  }
+
+  void orthographicProjectionIsAToggle() {
+    std::unique_ptr<MainWindow> window;
+    test::showMainWindow(window, QSize(900, 700));
+    if (QTest::currentTestFailed()) return;
+    AppContext& app = window->context();
+    app.scene.addDataset(floorAndBlock(Eigen::Vector3d::Zero()));
+    frameScene(app.scene, app.view, StandardView::Top);
+    QAction* ortho = test::menuAction(*window, "View", "Orthographic projection");
+    QVERIFY(ortho);
+    QVERIFY(!app.view.renderer()->GetActiveCamera()->GetParallelProjection());
+    const int perspective = test::hueSpan(grabView(app.view), 0);
+    ortho->trigger();
+    QVERIFY(app.view.renderer()->GetActiveCamera()->GetParallelProjection());
+    // The floor stays framed (the parallel scale fitted to the data, not to nothing).
+    const int span = test::hueSpan(grabView(app.view), 0);
+    QVERIFY2(span > perspective / 2 && span < 2 * perspective,
+             qPrintable(QString("floor span %1 px, %2 px in perspective").arg(span).arg(perspective)));
+    ortho->trigger();
+    QVERIFY(!app.view.renderer()->GetActiveCamera()->GetParallelProjection());
+  }
+};
+
+int main(int argc, char** argv) { return test::runGuiTest<GuiInspectionTest>(argc, argv, "PlumbTestsInspection"); }
+
+#include "test_gui_inspection.moc"
