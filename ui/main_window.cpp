@@ -26,6 +26,7 @@
 #include "ui/actions/standard_view_reaction.hpp"
 #include "ui/actions/zoom_to_layer_reaction.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/inspection/clip_panel.hpp"
 #include "ui/inspection/measure_tool.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
 #include "ui/panels/log_panel.hpp"
@@ -113,6 +114,7 @@ void MainWindow::createDocks() {
   QDockWidget* manual =
       dock(tr("Manual alignment"), "manualDock", context_->manual, Qt::RightDockWidgetArea);
   manual->hide();
+  dock(tr("Clipping"), "clipDock", new ClipPanel(*context_, this), Qt::RightDockWidgetArea)->hide();
 }
 
 void MainWindow::createMenus() {

@@ -1,6 +1,9 @@
 #include "ui/layers/scene.hpp"
 
+#include <vtkActor.h>
 #include <vtkCellPicker.h>
+#include <vtkMapper.h>
+#include <vtkPlane.h>
 #include <vtkProp.h>
 #include <vtkPropCollection.h>
 #include <vtkRenderer.h>
@@ -101,6 +104,41 @@ Layer& Scene::adopt(std::unique_ptr<Layer> layer, Layer* parent) {
 void Scene::addProps(Layer& layer) {
   forEachLayer(layer, [this](Layer& l) {
     for (vtkProp* p : l.props()) renderer_->AddViewProp(p);
+  });
+  applyClip(layer);
+}
+
+void Scene::setClipBox(std::optional<ClipBox> box) {
+  clip_ = std::move(box);
+  for (const auto& l : layers_) applyClip(*l);
+  emit renderNeeded();
+}
+
+void Scene::applyClip(Layer& layer) {
+  // One plane per finite face, its normal pointing inside (VTK keeps the normal's side).
+  std::vector<vtkSmartPointer<vtkPlane>> planes;
+  if (clip_) {
+    const Eigen::Vector3d o = origin();
+    for (int a = 0; a < 3; ++a)
+      for (int side : {-1, 1}) {
+        const double v = side < 0 ? clip_->min[a] : clip_->max[a];
+        if (!std::isfinite(v)) continue;
+        auto plane = vtkSmartPointer<vtkPlane>::New();
+        double point[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
+        point[a] = v - o[a];
+        normal[a] = side < 0 ? 1.0 : -1.0;
+        plane->SetOrigin(point);
+        plane->SetNormal(normal);
+        planes.push_back(plane);
+      }
+  }
+  forEachLayer(layer, [&planes](Layer& l) {
+    for (vtkProp* p : l.props()) {
+      auto* actor = vtkActor::SafeDownCast(p);
+      if (!actor || !actor->GetMapper()) continue;
+      actor->GetMapper()->RemoveAllClippingPlanes();
+      for (const auto& plane : planes) actor->GetMapper()->AddClippingPlane(plane);
+    }
   });
 }
 

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "model/clip_box.hpp"
 #include "model/bim_model.hpp"
 #include "model/dataset.hpp"
 #include "model/feature_set.hpp"
@@ -98,6 +99,11 @@ class Scene : public QObject {
   /// recolours a dataset in the background when its colours went stale.
   void layerChanged(Layer* layer);
 
+  /// Clips every layer's drawing to `box` (world; nullopt: no clipping), layers added later
+  /// included (clipping planes of the VTK mappers: drawing only, the data is untouched).
+  void setClipBox(std::optional<ClipBox> box);
+  const std::optional<ClipBox>& clipBox() const { return clip_; }
+
  signals:
   /// Emitted before `layer` (and its children) is destroyed.
   void layerAboutToBeRemoved(plumb::ui::Layer* layer);
@@ -108,6 +114,7 @@ class Scene : public QObject {
 
  private:
   void ensureOrigin(const Bounds& b);
+  void applyClip(Layer& layer);
   void addProps(Layer& layer);
   void removeProps(Layer& layer);
   Layer& adopt(std::unique_ptr<Layer> layer, Layer* parent);
@@ -124,6 +131,7 @@ class Scene : public QObject {
   /// Scan colour of the next dataset's first scan (Scan colour mode): never reused, so a
   /// colour stays with its scan when other layers are removed.
   std::size_t next_scan_colour_ = 0;
+  std::optional<ClipBox> clip_;
 };
 
 }  // namespace plumb::ui

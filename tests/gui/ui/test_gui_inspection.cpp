@@ -2,6 +2,10 @@
 // distance to a second one (slope, horizontal, height difference) equal to the true one within
 // the point spacing; View > Orthographic projection switches to a parallel projection.
 #include <QAction>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QLabel>
+#include <QPushButton>
 #include <QTest>
 
 #include <vtkCamera.h>
@@ -12,6 +16,7 @@
 #include "gui/open_window.hpp"
 #include "gui/view_clicks.hpp"
 #include "support/test_support.hpp"
+#include "ui/inspection/clip_panel.hpp"
 #include "ui/inspection/measure_tool.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/scene.hpp"
@@ -26,8 +31,8 @@ using namespace plumb::ui;
 namespace {
 constexpr double kSpacing = 0.1;
 
-/// A red 10 x 10 m floor at 0.1 m spacing, at national-grid coordinates, and a 1 x 1 m block
-/// top 1.5 m above it at (8..9, 8..9).
+/// A red 10 x 10 m floor at 0.1 m spacing, at national-grid coordinates, and a green 1 x 1 m
+/// block top 1.5 m above it at (8..9, 8..9) (11 x 11 points).
 std::shared_ptr<const Dataset> floorAndBlock(const Eigen::Vector3d& offset) {
   PointCloud c;
   c.offset = offset;
@@ -35,7 +40,7 @@ std::shared_ptr<const Dataset> floorAndBlock(const Eigen::Vector3d& offset) {
     for (int j = 0; j <= 100; ++j) {
       const bool block = i >= 80 && i <= 90 && j >= 80 && j <= 90;
       c.positions.push_back(Eigen::Vector3f(float(kSpacing * i), float(kSpacing * j), block ? 1.5f : 0.0f));
-      c.colors.push_back({255, 0, 0});
+      c.colors.push_back(block ? std::array<std::uint8_t, 3>{0, 255, 0} : std::array<std::uint8_t, 3>{255, 0, 0});
     }
   return std::make_shared<const Dataset>(Dataset::fromCloud(std::move(c)));
 }
@@ -90,6 +95,50 @@ class GuiInspectionTest : public QObject {
     measure->trigger();
     QVERIFY(!app.measure->active());
     QCOMPARE(test::countHue(grabView(app.view), 55), 0);
+  }
+
+  void clippingShowsAndCountsExactlyWhatIsInside() {
+    std::unique_ptr<MainWindow> window;
+    test::showMainWindow(window, QSize(1100, 800));
+    if (QTest::currentTestFailed()) return;
+    AppContext& app = window->context();
+    const Eigen::Vector3d grid(651000.0, 6860000.0, 40.0);
+    app.scene.addDataset(floorAndBlock(grid));
+    auto* dock = window->findChild<QDockWidget*>("clipDock");
+    QVERIFY(dock);
+    dock->show();
+    auto* clip = dock->findChild<ClipPanel*>("clipPanel");
+    QVERIFY(clip);
+    frameScene(app.scene, app.view, StandardView::Top);
+    QVERIFY(test::countHue(grabView(app.view), 0) > 1000);  // the red floor
+    // A plan slice 0.2 m thick at the block top's height: only the block is drawn and counted.
+    auto* mode = clip->findChild<QComboBox*>("clipMode");
+    mode->setCurrentIndex(static_cast<int>(ClipPanel::Mode::PlanSlice));
+    clip->setAxis(2, grid.z() + 1.5, 0.2);
+    QCOMPARE(clip->pointsInside(), std::size_t{121});
+    QCOMPARE(clip->findChild<QLabel*>("clipCount")->text(), QString("121 points inside"));
+    const QImage slice = grabView(app.view);
+    saveScreenshot(app.view, QString::fromStdString((test::scratchDir("gui_inspection") / "plan_slice.png").string()));
+    QCOMPARE(test::countHue(slice, 0), 0);   // no floor point drawn
+    QVERIFY(test::countHue(slice, 120) > 50);  // the block top is
+    // A section across X through the block: one row of the floor on each side plus the block.
+    mode->setCurrentIndex(static_cast<int>(ClipPanel::Mode::SectionX));
+    clip->setAxis(0, grid.x() + 8.5, kSpacing / 2);  // exactly the column x = 8.5
+    QCOMPARE(clip->pointsInside(), std::size_t{101});
+    // A box around the block's top.
+    mode->setCurrentIndex(static_cast<int>(ClipPanel::Mode::Box));
+    clip->setAxis(0, grid.x() + 8.5, 0.45);  // columns 8.3 .. 8.7
+    clip->setAxis(1, grid.y() + 8.5, 0.25);  // rows 8.4 .. 8.6
+    clip->setAxis(2, grid.z() + 1.5, 0.1);
+    QCOMPARE(clip->pointsInside(), std::size_t{5 * 3});
+    // Layers added while clipping are clipped too; Off draws everything again.
+    mode->setCurrentIndex(static_cast<int>(ClipPanel::Mode::PlanSlice));
+    clip->setAxis(2, grid.z() + 1.5, 0.2);
+    app.scene.addDataset(floorAndBlock(grid + Eigen::Vector3d(0.05, 0.05, 0.0)));
+    QCOMPARE(test::countHue(grabView(app.view), 0), 0);
+    mode->setCurrentIndex(static_cast<int>(ClipPanel::Mode::Off));
+    QVERIFY(!app.scene.clipBox());
+    QVERIFY(test::countHue(grabView(app.view), 0) > 1000);
   }
 
   void orthographicProjectionIsAToggle() {
