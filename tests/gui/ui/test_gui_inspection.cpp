@@ -45,6 +45,14 @@ std::shared_ptr<const Dataset> floorAndBlock(const Eigen::Vector3d& offset) {
   return std::make_shared<const Dataset>(Dataset::fromCloud(std::move(c)));
 }
 
+const Eigen::Vector3d grid(651000.0, 6860000.0, 40.0);  ///< where the floor's corner is
+
+/// A main window showing floorAndBlock(grid).
+void showFloor(std::unique_ptr<MainWindow>& window) {
+  test::showMainWindow(window, QSize(1100, 800));
+  if (!QTest::currentTestFailed()) window->context().scene.addDataset(floorAndBlock(grid));
+}
+
 QString row(const std::vector<PropertyRow>& rows, const QString& key) {
   for (const auto& [k, v] : rows)
     if (k == key) return v;
@@ -58,11 +66,9 @@ class GuiInspectionTest : public QObject {
  private slots:
   void measuresPointsAndDistancesWithTheMouse() {
     std::unique_ptr<MainWindow> window;
-    test::showMainWindow(window, QSize(1100, 800));
+    showFloor(window);
     if (QTest::currentTestFailed()) return;
     AppContext& app = window->context();
-    const Eigen::Vector3d grid(651000.0, 6860000.0, 40.0);
-    app.scene.addDataset(floorAndBlock(grid));
     frameScene(app.scene, app.view, StandardView::Top);
     grabView(app.view);
 
@@ -99,11 +105,9 @@ class GuiInspectionTest : public QObject {
 
   void clippingShowsAndCountsExactlyWhatIsInside() {
     std::unique_ptr<MainWindow> window;
-    test::showMainWindow(window, QSize(1100, 800));
+    showFloor(window);
     if (QTest::currentTestFailed()) return;
     AppContext& app = window->context();
-    const Eigen::Vector3d grid(651000.0, 6860000.0, 40.0);
-    app.scene.addDataset(floorAndBlock(grid));
     auto* dock = window->findChild<QDockWidget*>("clipDock");
     QVERIFY(dock);
     dock->show();
