@@ -68,8 +68,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(tree, &LayerTreePanel::currentLayerChanged, properties, &PropertiesPanel::showLayer);
   connect(view, &VtkViewWidget::clicked, this, [this](int x, int y) {
     if (context_->manual->picking() || context_->measure->active()) return;
-    if (auto hit = context_->scene.pick(x, y))
+    if (auto hit = context_->scene.pick(x, y)) {
       context_->properties.showRows(hit->layer->name(), hit->rows);
+      context_->scene.highlight(&*hit);
+    }
   });
   statusBar()->addPermanentWidget(new TaskProgressWidget(*tasks, this));
   // "Showing N of M points" while the view draws a subset (level of detail).

@@ -125,6 +125,14 @@ FeatureLayer::FeatureLayer(QString name, std::shared_ptr<const FeatureSet> featu
   setupActor(line_actor_, line_mapper_, line.polyData(nullptr, lines));
   line_actor_->GetProperty()->SetLineWidth(3.0f);
   line_actor_->GetProperty()->LightingOff();
+  highlight_actor_->SetMapper(highlight_mapper_);
+  highlight_mapper_->ScalarVisibilityOff();
+  highlight_mapper_->SetResolveCoincidentTopologyToPolygonOffset();
+  highlight_actor_->GetProperty()->SetColor(1.0, 1.0, 1.0);
+  highlight_actor_->GetProperty()->SetLineWidth(6.0f);
+  highlight_actor_->GetProperty()->LightingOff();
+  highlight_actor_->PickableOff();
+  highlight_actor_->VisibilityOff();
   setTransform(RigidTransform());
 }
 
@@ -137,6 +145,26 @@ void FeatureLayer::setTransform(const RigidTransform& t) {
   const auto m = renderMatrix(origin_, transform_.matrix() * local);
   fill_actor_->SetUserMatrix(m);
   line_actor_->SetUserMatrix(m);
+  highlight_actor_->SetUserMatrix(m);
+}
+
+void FeatureLayer::setHighlight(std::optional<FeatureRef> ref) {
+  highlight_ = ref;
+  auto* lines = vtkPolyData::SafeDownCast(line_mapper_->GetInput());
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkCellArray> cells;
+  if (ref && lines) {
+    poly->SetPoints(lines->GetPoints());
+    for (std::size_t c = 0; c < line_cells_.size(); ++c) {
+      if (!(line_cells_[c] == *ref)) continue;
+      vtkNew<vtkIdList> ids;
+      lines->GetCellPoints(static_cast<vtkIdType>(c), ids);
+      cells->InsertNextCell(ids);
+    }
+    poly->SetLines(cells);
+  }
+  highlight_mapper_->SetInputData(poly);
+  highlight_actor_->SetVisibility(ref.has_value() && effectivelyVisible());
 }
 
 vtkProp* FeatureLayer::outlineProp() const { return line_actor_.GetPointer(); }
@@ -189,7 +217,7 @@ std::vector<PropertyRow> FeatureLayer::describeFeature(const FeatureRef& ref) co
   return rows;
 }
 
-std::vector<vtkProp*> FeatureLayer::props() const { return {fill_actor_, line_actor_}; }
+std::vector<vtkProp*> FeatureLayer::props() const { return {fill_actor_, line_actor_, highlight_actor_}; }
 
 Bounds FeatureLayer::bounds() const {
   return transformBounds(featureBounds(*features_), transform_.matrix());
@@ -207,6 +235,7 @@ std::vector<PropertyRow> FeatureLayer::describe() const {
 void FeatureLayer::applyVisibility(bool effective) {
   fill_actor_->SetVisibility(effective);
   line_actor_->SetVisibility(effective);
+  highlight_actor_->SetVisibility(effective && highlight_.has_value());
 }
 
 }  // namespace plumb::ui

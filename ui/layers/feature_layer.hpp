@@ -21,6 +21,7 @@ enum class FeatureKind { Plane, Opening, Segment };
 struct FeatureRef {
   FeatureKind kind = FeatureKind::Plane;
   std::size_t index = 0;
+  bool operator==(const FeatureRef&) const = default;
 };
 
 class FeatureLayer : public Layer {
@@ -36,6 +37,10 @@ class FeatureLayer : public Layer {
   /// The feature drawn by cell `cell` of the actor `prop`, if `prop` is this layer's.
   std::optional<FeatureRef> featureAt(const vtkProp* prop, long long cell) const;
   std::vector<PropertyRow> describeFeature(const FeatureRef& ref) const;
+  /// Draws `ref`'s outline thick and white over everything of this layer (the picked feature);
+  /// nullopt: none.
+  void setHighlight(std::optional<FeatureRef> ref);
+  const std::optional<FeatureRef>& highlight() const { return highlight_; }
 
   /// The outlines (plane rings, openings, segments): thin, drawn over the fills, so picked
   /// before them.
@@ -57,6 +62,9 @@ class FeatureLayer : public Layer {
   vtkNew<vtkPolyDataMapper> line_mapper_;
   vtkNew<vtkActor> fill_actor_;
   vtkNew<vtkActor> line_actor_;
+  std::optional<FeatureRef> highlight_;
+  vtkNew<vtkPolyDataMapper> highlight_mapper_;
+  vtkNew<vtkActor> highlight_actor_;
 };
 
 }  // namespace plumb::ui

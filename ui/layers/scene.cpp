@@ -296,10 +296,21 @@ std::optional<PickResult> Scene::pick(int x, int y) {
     vtkProp* prop = picker->GetViewProp();
     for (FeatureLayer* f : feature_layers)
       if (auto ref = f->featureAt(prop, picker->GetCellId()))
-        return PickResult{f, f->describeFeature(*ref)};
+        return PickResult{f, *ref, f->describeFeature(*ref)};
     if (!outlines_only) break;
   }
   return std::nullopt;
+}
+
+void Scene::highlight(const PickResult* picked) {
+  for (auto& l : layers_)
+    forEachLayer(*l, [picked](Layer& layer) {
+      if (layer.kind() != LayerKind::Features) return;
+      auto& f = static_cast<FeatureLayer&>(layer);
+      if (picked && picked->layer == &layer) f.setHighlight(picked->feature);
+      else if (f.highlight()) f.setHighlight(std::nullopt);
+    });
+  emit renderNeeded();
 }
 
 void Scene::layerChanged(Layer* layer) {

@@ -14,6 +14,7 @@
 #include "model/bim_model.hpp"
 #include "model/dataset.hpp"
 #include "model/feature_set.hpp"
+#include "ui/layers/feature_layer.hpp"
 #include "ui/layers/layer.hpp"
 #include "ui/layers/point_style.hpp"
 #include "ui/layers/prepared_dataset.hpp"
@@ -29,7 +30,8 @@ class TaskManager;
 
 /// What a click in the view hit.
 struct PickResult {
-  Layer* layer = nullptr;
+  Layer* layer = nullptr;  ///< the FeatureLayer drawing the feature
+  FeatureRef feature;
   std::vector<PropertyRow> rows;
 };
 
@@ -94,6 +96,8 @@ class Scene : public QObject {
   std::size_t drawnPointCount() const;
   /// Picks a feature at display position (x, y), VTK convention (y up, device pixels).
   std::optional<PickResult> pick(int x, int y);
+  /// Highlights the picked feature (and no other, in any layer); nullptr: none.
+  void highlight(const PickResult* picked);
 
   /// Call after changing a layer's style, visibility, transform or distances: renders, and
   /// recolours a dataset in the background when its colours went stale.

@@ -19,16 +19,19 @@ const ParamSchema<OpeningDetectionParams>& OpeningDetectionParams::schema() {
                   "auto: ray tracing when sensor origins exist, plus holes of wall polygons")
           .real(&P::vertical_tolerance_deg, "vertical-tolerance", "Verticality", "deg", 0, 45,
                 "façade normals within this angle of horizontal")
-          .real(&P::min_facade_area, "min-facade-area", "Minimum façade area", "m2", 0, 1e6, "")
+          .real(&P::min_facade_area, "min-facade-area", "Minimum façade area", "m2", 0, 1e6,
+                "Smaller façades are not searched for openings")
           .real(&P::min_depth, "min-depth", "Minimum depth", "m", 0, 100,
-                "d_min: a point must lie this far behind the façade")
+                "A point must lie this far behind the façade to count as seen through an opening\n"
+                "(d_min, 2021 §3.1, 2023 §III-A)")
           .real(&P::link_distance, "link-distance", "Evidence link", "m", 0.005, 5,
                 "evidence points closer than this form one opening")
-          .integer(&P::min_evidence, "min-evidence", "Minimum evidence", "points", 1, 1e7, "")
-          .real(&P::min_width, "min-width", "Minimum width", "m", 0, 100, "")
-          .real(&P::min_height, "min-height", "Minimum height", "m", 0, 100, "")
-          .real(&P::max_width, "max-width", "Maximum width", "m", 0, 1000, "")
-          .real(&P::max_height, "max-height", "Maximum height", "m", 0, 1000, "")
+          .integer(&P::min_evidence, "min-evidence", "Minimum evidence", "points", 1, 1e7,
+                   "Points seen through an opening needed to keep it")
+          .real(&P::min_width, "min-width", "Minimum width", "m", 0, 100, "Narrower openings are dropped")
+          .real(&P::min_height, "min-height", "Minimum height", "m", 0, 100, "Lower openings are dropped")
+          .real(&P::max_width, "max-width", "Maximum width", "m", 0, 1000, "Wider openings are dropped (a missing wall is no window)")
+          .real(&P::max_height, "max-height", "Maximum height", "m", 0, 1000, "Taller openings are dropped")
           .real(&P::snap_distance, "snap-distance", "Snap distance", "m", 0, 2,
                 "sides move to the wall edge; closer than this: middle of evidence and wall; 0: off", true);
   return s;

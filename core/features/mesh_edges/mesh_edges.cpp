@@ -22,7 +22,8 @@ const ParamSchema<MeshEdgeParams>& MeshEdgeParams::schema() {
                    "edges with a single triangle are sharp")
           .real(&P::collinear_tolerance_deg, "collinear-tolerance", "Collinear tolerance", "deg",
                 0, 10, "pieces chained into one segment turn by less than this", true)
-          .real(&P::min_length, "min-length", "Minimum length", "m", 0, 1000, "");
+          .real(&P::min_length, "min-length", "Minimum length", "m", 0, 1000,
+                "Shorter model edges are not used as segments");
   return s;
 }
 

@@ -17,9 +17,11 @@ const ParamSchema<PlaneExtractionParams>& PlaneExtractionParams::schema() {
           .choice(&P::detector, "detector", "Detector", {"auto", "msac", "sensor-topology", "region-growing"},
                   "auto: MSAC (measured best on simulated TLS and MMS scans)")
           .real(&P::distance_threshold, "distance-threshold", "Distance threshold", "m", 0.001, 1.0,
-                "inlier distance t of MSAC eq. (2)")
+                "Largest distance of a point from its plane for it to count as on the plane\n"
+                "(MSAC inlier distance t, 2021 eq. 2)")
           .boolean(&P::auto_threshold, "auto-threshold", "A-contrario threshold",
-                   "select the threshold with the lowest NFA (2021 eqs. 3-6)")
+                   "Choose the distance threshold from the data: the candidate whose planes are "
+                   "least likely to be chance alignments\n(lowest a-contrario NFA, 2021 eqs. 3-6)")
           .integer(&P::threshold_candidates, "threshold-candidates", "Threshold candidates", "", 2, 20,
                    "thresholds tried by the a-contrario selection", true)
           .real(&P::threshold_range_min, "threshold-min", "Smallest threshold candidate", "m",
@@ -28,24 +30,28 @@ const ParamSchema<PlaneExtractionParams>& PlaneExtractionParams::schema() {
                 0.001, 1.0, "upper end of the a-contrario candidates", true)
           .integer(&P::min_inliers, "min-inliers", "Minimum plane size", "points", 3, 1e7,
                    "detection stops when the best plane has fewer inliers")
-          .integer(&P::max_planes, "max-planes", "Maximum planes", "", 1, 10000, "")
-          .integer(&P::iterations, "iterations", "Hypotheses per plane", "", 10, 100000, "", true)
+          .integer(&P::max_planes, "max-planes", "Maximum planes", "", 1, 10000,
+                   "Planes detected at most, largest first")
+          .integer(&P::iterations, "iterations", "Hypotheses per plane", "", 10, 100000,
+                   "Random plane candidates tried for each plane found", true)
           .integer(&P::score_sample, "score-sample", "Scoring subset", "points", 1000, 1e8,
                    "hypotheses are scored on this many random points", true)
           .real(&P::component_distance, "component-distance", "Connection distance", "m", 0.005, 10,
                 "inliers closer than this belong to the same polygon")
           .integer(&P::min_component_inliers, "min-component-inliers", "Minimum polygon size",
-                   "points", 1, 1e7, "")
+                   "points", 1, 1e7, "Smaller connected pieces of a plane are not kept as polygons")
           .real(&P::alpha_radius, "alpha-radius", "Alpha radius", "m", 0.01, 10,
                 "alpha-shape radius of the polygon outlines")
           .real(&P::simplify_tolerance, "simplify-tolerance", "Outline simplification", "m", 0, 1,
                 "Douglas-Peucker tolerance on the rings", true)
           .real(&P::smoothness_deg, "smoothness", "Smoothness angle", "deg", 0.1, 90,
                 "region growing: max normal angle between neighbours", true)
-          .integer(&P::normal_neighbours, "normal-neighbours", "Normal neighbours", "", 3, 100, "", true)
+          .integer(&P::normal_neighbours, "normal-neighbours", "Normal neighbours", "", 3, 100,
+                   "Points used to estimate each point's normal", true)
           .integer(&P::grid_window, "grid-window", "Grid window", "cells", 1, 100,
                    "sensor topology: window of the 2nd and 3rd samples", true)
-          .boolean(&P::keep_inlier_indices, "keep-inliers", "Keep inlier indices", "", true)
+          .boolean(&P::keep_inlier_indices, "keep-inliers", "Keep inlier indices",
+                   "Keep which points belong to each plane (more memory; for export and colouring)", true)
           .real(&P::msac_local_cell, "local-cell", "MSAC local cell", "m", 0.05, 10,
                 "half the MSAC hypotheses draw their 2nd and 3rd points in the grid cell of "
                 "this size holding the 1st", true);

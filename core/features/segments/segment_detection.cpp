@@ -32,12 +32,13 @@ const ParamSchema<SegmentDetectionParams>& SegmentDetectionParams::schema() {
                 "max point-to-plane distance in a patch")
           .real(&P::merge_angle_deg, "merge-angle", "Merge angle", "deg", 0, 30,
                 "patches and segments within this angle are merged", true)
-          .integer(&P::min_patch_points, "min-patch-points", "Minimum patch size", "points", 3, 1e7, "")
+          .integer(&P::min_patch_points, "min-patch-points", "Minimum patch size", "points", 3, 1e7,
+                   "Smaller planar patches give no segments")
           .real(&P::pixel_size, "pixel-size", "Pixel size", "m", 0, 1,
                 "raster pixel in the patch plane (0: from the point spacing)", true)
           .real(&P::split_tolerance_px, "split-tolerance", "Straightness", "px", 0.5, 20,
                 "max deviation of contour pixels from a line", true)
-          .real(&P::min_length, "min-length", "Minimum length", "m", 0, 100, "")
+          .real(&P::min_length, "min-length", "Minimum length", "m", 0, 100, "Shorter segments are dropped")
           .real(&P::merge_distance, "merge-distance", "Merge distance", "m", 0, 1,
                 "collinear segments closer than this are merged", true)
           .real(&P::snap_distance, "snap-distance", "Snap distance", "m", 0, 0.5,

@@ -18,7 +18,8 @@ const ParamSchema<PlaneRegistrationParams>& PlaneRegistrationParams::schema() {
   static const auto s =
       ParamSchema<P>("planes")
           .real(&P::distance_threshold, "plane-distance", "Plane distance threshold", "m", 0.005,
-                5.0, "d_thr of the polygon overlap similarity (2021 eq. 10)")
+                5.0, "How far apart two matched planes may lie and still count as overlapping\n"
+                "(d_thr of the polygon overlap similarity, 2021 eq. 10)")
           .boolean(&P::oriented_normals, "oriented-normals", "Oriented normals",
                    "Normals face the scanner in both datasets: match only same-facing planes")
           .integer(&P::modes_per_association, "offset-modes", "Offset modes", "", 1, 50,

@@ -12,7 +12,8 @@ const ParamSchema<SegmentDistanceParams>& SegmentDistanceParams::schema() {
   static const auto s =
       ParamSchema<SegmentDistanceParams>("segment-distance")
           .real(&SegmentDistanceParams::robust_distance, "robust-distance", "Robust distance", "m",
-                0.001, 10.0, "Distance d of the global robust segment distance (2023 eq. 7)")
+                0.001, 10.0, "Segments further apart than this count as unmatched (the robust cut-off)\n"
+                "(d of the global robust segment distance, 2023 eq. 7)")
           .real(&SegmentDistanceParams::max_angle_deg, "segment-angle", "Segment angle", "deg",
                 0.5, 45.0, "Max angle between segments that may match", true);
   return s;

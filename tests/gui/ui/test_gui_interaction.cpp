@@ -333,9 +333,9 @@ class GuiInteractionTest : public QObject {
     AppContext& app = window_->context();
     // A wall (plane 0, 4321 inliers) with a 2 m window (opening 0) and an eave (segment 0).
     auto features = test::wallWithWindow(4321, true);
-    app.scene.addFeatures("features", features);
+    FeatureLayer& layer = app.scene.addFeatures("features", features);
     applyStandardView(app.view.renderer(), StandardView::Front);
-    grabView(app.view);  // renders: the projection below uses this frame's camera
+    const int white_before = test::countColor(grabView(app.view), Qt::white, 20);  // renders: the projection below uses this frame
     saveScreenshot(app.view, artefact("features_front.png"));
 
     auto shown = [&app] {
@@ -350,9 +350,16 @@ class GuiInteractionTest : public QObject {
     clickView(app, projectToView(app, {3, -0.01, 1}));  // the window's bottom edge
     QCOMPARE(shown(), QString("Opening 0"));
     QCOMPARE(app.properties.rows().at(1).second, QString("2.000"));  // width
+    // The picked feature is highlighted, and only it: its outline drawn thick and white.
+    QVERIFY(layer.highlight() && *layer.highlight() == (FeatureRef{FeatureKind::Opening, 0}));
+    const QImage highlighted = grabView(app.view);
+    saveScreenshot(app.view, artefact("features_picked_opening.png"));
+    QVERIFY2(test::countColor(highlighted, Qt::white, 20) > white_before + 100,
+             qPrintable(QString("white pixels %1, before %2").arg(test::countColor(highlighted, Qt::white, 20)).arg(white_before)));
     clickView(app, projectToView(app, {5, 0, 7}));  // the middle of the eave
     QCOMPARE(shown(), QString("Segment 0"));
     QCOMPARE(app.properties.rows().at(1).second, QString("10.000"));  // length
+    QVERIFY(layer.highlight() && *layer.highlight() == (FeatureRef{FeatureKind::Segment, 0}));
     // A click on empty background leaves the properties as they are.
     clickView(app, projectToView(app, {5, 0, 12}));
     QCOMPARE(shown(), QString("Segment 0"));

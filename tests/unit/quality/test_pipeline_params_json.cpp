@@ -224,3 +224,23 @@ TEST(PipelineParamsJson, SetPipelineParamByGroupAndKey) {
   EXPECT_NE(range.find("'max-tilt'"), std::string::npos) << range;
   EXPECT_DOUBLE_EQ(p.planes.rotations.max_tilt_deg, 4.0);  // unchanged by the failed set
 }
+
+// Issue 17: tooltips speak the field's terms first; a paper citation may follow, on a later
+// line only (the UI shows the help as the tooltip, line by line).
+TEST(PipelineParamsJson, HelpTextsPutPaperCitationsAfterTheFirstLine) {
+  PipelineParams p;
+  int helps = 0, cited = 0;
+  forEachParamGroup(p, [&](const char* group, const char*, const auto& schema, const auto&) {
+    for (const auto& f : schema.fields()) {
+      const std::string& help = f.spec.help;
+      ++helps;
+      EXPECT_FALSE(help.empty()) << group << "." << f.spec.key;
+      const std::string first = help.substr(0, help.find('\n'));
+      for (const char* citation : {"eq.", "eqs.", "Alg.", "2021 ", "2023 "})
+        EXPECT_EQ(first.find(citation), std::string::npos) << group << "." << f.spec.key << ": " << help;
+      cited += help.find('\n') != std::string::npos;
+    }
+  });
+  EXPECT_GT(helps, 100);
+  EXPECT_GE(cited, 4) << "the citations are kept, on their own line";
+}
