@@ -167,6 +167,7 @@ void MainWindow::createMenus() {
   new ResetCameraReaction(view->addAction(tr("&Reset camera")), app);
   new MeasureReaction(view->addAction(tr("&Measure point / distance")), app);
   new ProjectionReaction(view->addAction(tr("&Orthographic projection")), app);
+  new BlinkReaction(view->addAction(tr("&Blink before/after")), app);
   new FullDetailReaction(view->addAction(tr("Full detail when still (may be slow)")), app, *lod_);
   view->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());

@@ -1,6 +1,9 @@
 #pragma once
 // View menu inspection actions: the measuring tool and the projection.
+#include <QTimer>
+
 #include "ui/actions/reaction.hpp"
+#include "ui/layers/layer.hpp"
 
 namespace plumb::ui {
 
@@ -24,6 +27,25 @@ class ProjectionReaction : public Reaction {
 
  protected:
   void onTriggered() override;
+};
+
+/// View > Blink before/after (B, checkable): the registration source (else the current dataset)
+/// shown alternately without and with its registration transform every `kPeriodMs`, to judge a
+/// registration by eye; off (or the layer removed): shown registered again.
+class BlinkReaction : public Reaction {
+  Q_OBJECT
+ public:
+  static constexpr int kPeriodMs = 500;
+  BlinkReaction(QAction* action, AppContext& app);
+
+ protected:
+  void onTriggered() override;
+
+ private:
+  void tick();
+  void stop();
+  QTimer timer_;
+  LayerRef layer_;
 };
 
 }  // namespace plumb::ui

@@ -16,7 +16,10 @@
 #include "gui/open_window.hpp"
 #include "gui/view_clicks.hpp"
 #include "support/test_support.hpp"
+#include "ui/actions/inspection_reactions.hpp"
 #include "ui/inspection/clip_panel.hpp"
+#include "ui/panels/layer_tree_panel.hpp"
+#include "ui/panels/log_panel.hpp"
 #include "ui/inspection/measure_tool.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/scene.hpp"
@@ -143,6 +146,33 @@ class GuiInspectionTest : public QObject {
     mode->setCurrentIndex(static_cast<int>(ClipPanel::Mode::Off));
     QVERIFY(!app.scene.clipBox());
     QVERIFY(test::countHue(grabView(app.view), 0) > 1000);
+  }
+
+  void blinkAlternatesBeforeAndAfterUntilStoppedOrRemoved() {
+    std::unique_ptr<MainWindow> window;
+    showFloor(window);
+    if (QTest::currentTestFailed()) return;
+    AppContext& app = window->context();
+    auto& layer = static_cast<DatasetLayer&>(*app.scene.layers()[0]);
+    layer.setTransform(RigidTransform::fromYaw(0.3, {2.0, 0.0, 0.0}));  // a registration result
+    app.layers.setCurrentLayer(&layer);
+    QAction* blink = test::menuAction(*window, "View", "Blink before/after");
+    QVERIFY(blink && blink->isCheckable());
+    blink->trigger();
+    QVERIFY(blink->isChecked());
+    QTRY_VERIFY_WITH_TIMEOUT(!layer.showsTransform(), 2000);  // before
+    QTRY_VERIFY_WITH_TIMEOUT(layer.showsTransform(), 2000);   // after
+    QTRY_VERIFY_WITH_TIMEOUT(!layer.showsTransform(), 2000);
+    blink->trigger();  // off: shown registered again, and it stays so
+    QVERIFY(layer.showsTransform());
+    QTest::qWait(3 * BlinkReaction::kPeriodMs);
+    QVERIFY(layer.showsTransform());
+    // Removing the layer while it blinks stops the blinking (no dangling layer).
+    blink->trigger();
+    QVERIFY(blink->isChecked());
+    app.scene.removeLayer(&layer);
+    QTRY_VERIFY_WITH_TIMEOUT(!blink->isChecked(), 2000);
+    QCOMPARE(app.log.errorCount(), 0);
   }
 
   void orthographicProjectionIsAToggle() {
