@@ -1,5 +1,6 @@
 #include "model/clip_box.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -25,8 +26,8 @@ std::vector<bool> insideMask(const Scan& scan, const ClipBox& box, const RigidTr
 std::size_t countInside(const Dataset& data, const ClipBox& box, const RigidTransform& to_world) {
   std::size_t n = 0;
   for (const Scan& scan : data.scans) {
-    const RigidTransform m = to_world * scan.pose;
-    for (std::size_t i = 0; i < scan.cloud.size(); ++i) n += box.contains(m.apply(scan.cloud.world(i)));
+    const std::vector<bool> inside = insideMask(scan, box, to_world);
+    n += static_cast<std::size_t>(std::count(inside.begin(), inside.end(), true));
   }
   return n;
 }

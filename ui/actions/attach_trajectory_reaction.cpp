@@ -12,8 +12,7 @@
 namespace plumb::ui {
 
 void AttachTrajectoryReaction::onTriggered() {
-  Layer* layer = app().layers.currentLayer();
-  while (layer && layer->parent()) layer = layer->parent();
+  Layer* layer = app().layers.currentRootLayer();
   if (!layer || layer->kind() != LayerKind::Dataset) {
     app().log.error(tr("Attach trajectory: select the mobile scan (a point dataset) first"));
     return;

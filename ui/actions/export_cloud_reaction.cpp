@@ -22,8 +22,7 @@ QString folderOf(const QString& file) { return file.isEmpty() ? QString() : QFil
 }  // namespace
 
 Layer* exportLayer(AppContext& app) {
-  Layer* layer = app.layers.currentLayer();
-  while (layer && layer->parent()) layer = layer->parent();
+  Layer* layer = app.layers.currentRootLayer();
   if (isRegistrable(layer)) return layer;
   return app.registration ? app.registration->sourceLayer() : nullptr;
 }

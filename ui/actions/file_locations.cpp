@@ -37,7 +37,6 @@ QString proposedPath(FolderKind kind, const QString& name, const QString& fallba
 QString derivedFileName(const QString& source, const QString& layer_name, const QString& suffix,
                         const QString& extension) {
   QString stem = source.isEmpty() ? layer_name : QFileInfo(source).completeBaseName();
-  if (stem.endsWith(".plumb", Qt::CaseInsensitive)) stem.chop(6);
   stem.replace('/', '_');
   if (stem.isEmpty()) stem = "plumb";
   return stem + "_" + suffix + "." + extension;

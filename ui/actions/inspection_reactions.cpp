@@ -11,7 +11,7 @@
 #include "ui/layers/scene.hpp"
 #include "ui/inspection/measure_tool.hpp"
 #include "ui/registration/manual_align_panel.hpp"
-#include "ui/view/standard_view.hpp"
+#include "ui/view/scene_framing.hpp"
 #include "ui/view/vtk_view_widget.hpp"
 
 namespace plumb::ui {
@@ -34,17 +34,9 @@ ProjectionReaction::ProjectionReaction(QAction* action, AppContext& app) : React
 }
 
 void ProjectionReaction::onTriggered() {
-  vtkRenderer* renderer = app().view.renderer();
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetParallelProjection(action()->isChecked());
+  app().view.renderer()->GetActiveCamera()->SetParallelProjection(action()->isChecked());
   // Refit along the current direction (the parallel scale from the data's robust extent).
-  const Bounds world = app().scene.visibleFramingBounds();
-  if (!world.empty()) {
-    double b[6];
-    app().scene.renderBounds(world, b);
-    zoomToBounds(renderer, b);
-  }
-  app().view.requestRender();
+  if (!frameVisible(app().scene, app().view)) app().view.requestRender();
 }
 
 BlinkReaction::BlinkReaction(QAction* action, AppContext& app) : Reaction(action, app) {
@@ -57,10 +49,7 @@ BlinkReaction::BlinkReaction(QAction* action, AppContext& app) : Reaction(action
 void BlinkReaction::onTriggered() {
   if (!action()->isChecked()) return stop();
   Layer* layer = app().registration ? app().registration->sourceLayer() : nullptr;
-  if (!layer || layer->kind() != LayerKind::Dataset) {
-    layer = app().layers.currentLayer();
-    while (layer && layer->parent()) layer = layer->parent();
-  }
+  if (!layer || layer->kind() != LayerKind::Dataset) layer = app().layers.currentRootLayer();
   if (!layer || layer->kind() != LayerKind::Dataset) {
     app().log.error(tr("Blink: choose a registration source or select a dataset"));
     action()->setChecked(false);

@@ -16,19 +16,13 @@ RemoveLayerReaction::RemoveLayerReaction(QAction* action, AppContext& app) : Rea
   followTasks();
 }
 
-Layer* RemoveLayerReaction::currentRoot() const {
-  Layer* layer = app().layers.currentLayer();
-  while (layer && layer->parent()) layer = layer->parent();
-  return layer;
-}
-
 bool RemoveLayerReaction::canRun() const {
-  const Layer* layer = currentRoot();
+  const Layer* layer = app().layers.currentRootLayer();
   return layer && !app().tasks.holds(layer);
 }
 
 void RemoveLayerReaction::onTriggered() {
-  if (Layer* layer = currentRoot()) app().undo.push(new RemoveLayerCommand(app().scene, *layer));
+  if (Layer* layer = app().layers.currentRootLayer()) app().undo.push(new RemoveLayerCommand(app().scene, *layer));
 }
 
 }  // namespace plumb::ui

@@ -16,9 +16,6 @@ class RemoveLayerReaction : public Reaction {
  protected:
   void onTriggered() override;
   bool canRun() const override;
-
- private:
-  Layer* currentRoot() const;
 };
 
 }  // namespace plumb::ui

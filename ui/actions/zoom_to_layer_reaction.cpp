@@ -10,7 +10,7 @@ namespace plumb::ui {
 
 void ZoomToLayerReaction::onTriggered() {
   if (const Layer* layer = app().layers.currentLayer()) frameLayer(app().scene, app().view, *layer);
-  else frameScene(app().scene, app().view);
+  else frameVisible(app().scene, app().view);
 }
 
 }  // namespace plumb::ui

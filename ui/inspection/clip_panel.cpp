@@ -75,8 +75,6 @@ ClipPanel::ClipPanel(AppContext& app, QWidget* parent)
   apply();
 }
 
-void ClipPanel::setMode(Mode mode) { mode_->setCurrentIndex(static_cast<int>(mode)); }
-
 void ClipPanel::setAxis(int axis, double centre, double size) {
   updating_ = true;
   centre_[axis]->setValue(centre);

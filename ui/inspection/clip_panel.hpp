@@ -23,7 +23,6 @@ class ClipPanel : public QWidget {
   enum class Mode { Off, PlanSlice, SectionX, SectionY, Box };
   explicit ClipPanel(AppContext& app, QWidget* parent = nullptr);
 
-  void setMode(Mode mode);
   /// Centre and size (thickness of a slab) along axis 0, 1, 2 (world, metres).
   void setAxis(int axis, double centre, double size);
   /// Centres on the visible data's robust extent: sizes of a box, 0.1 m thick slabs.

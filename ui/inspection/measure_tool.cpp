@@ -68,7 +68,10 @@ std::vector<PropertyRow> measurementRows(const Measurement& m) {
 }
 
 MeasureTool::MeasureTool(AppContext& app, QObject* parent)
-    : QObject(parent), app_(app), marks_(std::make_unique<PairMarkers>(app.view.renderer())) {
+    : QObject(parent),
+      app_(app),
+      marks_(std::make_unique<PairMarkers>(app.view.renderer())),
+      line_(std::make_unique<MeasureToolLine>(app.view.renderer())) {
   connect(&app_.view, &VtkViewWidget::clicked, this, &MeasureTool::onClicked);
 }
 
@@ -100,7 +103,6 @@ void MeasureTool::showMarks() {
   const char* names[] = {"A", "B"};
   for (std::size_t i = 0; i < points_.size(); ++i) marks.push_back({points_[i], names[i], i == 0, true});
   marks_->show(marks, app_.scene.origin());
-  if (!line_) line_ = std::make_unique<MeasureToolLine>(app_.view.renderer());
   line_->show(points_.size() == 2 ? &points_[0] : nullptr, points_.size() == 2 ? &points_[1] : nullptr,
               app_.scene.origin());
   app_.view.requestRender();

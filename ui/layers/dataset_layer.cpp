@@ -157,16 +157,14 @@ void DatasetLayer::setShowsTransform(bool show) {
   applyTransform();
 }
 
-Eigen::Matrix4d DatasetLayer::shownTransform() const {
-  return shows_transform_ ? transform_.matrix() : Eigen::Matrix4d::Identity();
-}
+RigidTransform DatasetLayer::shownTransform() const { return shows_transform_ ? transform_ : RigidTransform(); }
 
-Bounds DatasetLayer::bounds() const { return transformBounds(exact_bounds_, shownTransform()); }
+Bounds DatasetLayer::bounds() const { return transformBounds(exact_bounds_, shownTransform().matrix()); }
 
-Bounds DatasetLayer::framingBounds() const { return transformBounds(framing_, shownTransform()); }
+Bounds DatasetLayer::framingBounds() const { return transformBounds(framing_, shownTransform().matrix()); }
 
 void DatasetLayer::applyTransform() {
-  const RigidTransform shown = shows_transform_ ? transform_ : RigidTransform();
+  const RigidTransform shown = shownTransform();
   for (ScanLayer* s : scans()) s->setDatasetTransform(shown);
   for (const auto& c : children())
     if (c->kind() == LayerKind::Features) static_cast<FeatureLayer*>(c.get())->setTransform(shown);

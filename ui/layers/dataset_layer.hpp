@@ -58,6 +58,8 @@ class DatasetLayer : public Layer {
   const RigidTransform& transform() const { return transform_; }
   void setTransform(const RigidTransform& t);
   bool showsTransform() const { return shows_transform_; }
+  /// transform() when shown, else identity: what the scans are drawn with.
+  RigidTransform shownTransform() const;
   void setShowsTransform(bool show);
 
   /// Distance to the registration target per point of each scan (NaN: no match), drawn by the
@@ -95,7 +97,6 @@ class DatasetLayer : public Layer {
 
  private:
   void applyTransform();
-  Eigen::Matrix4d shownTransform() const;
   std::shared_ptr<const Dataset> data_;
   Bounds exact_bounds_, framing_;  ///< dataset frame (PreparedDataset)
   PointStyle style_;

@@ -39,17 +39,13 @@ QString layerSource(const Layer& layer) {
 }
 
 /// The 3%..97% quantiles per axis (robustBounds, no margin) of a sample of a dataset's points
-/// (world); the layer's bounds for other layers.
+/// (world, about 20000 per scan); the layer's bounds for other layers.
 Bounds bulkBounds(const Layer& layer) {
   if (layer.kind() != LayerKind::Dataset) return layer.bounds();
-  std::vector<Eigen::Vector3d> samples;
-  for (const ScanLayer* scan : static_cast<const DatasetLayer&>(layer).scans()) {
-    const auto& pts = scan->scan().cloud.positions;
-    const Eigen::Matrix4d m = scan->localToWorld();
-    const std::size_t step = std::max<std::size_t>(1, pts.size() / 20000);
-    for (std::size_t i = 0; i < pts.size(); i += step)
-      samples.push_back((m * pts[i].cast<double>().homogeneous()).head<3>());
-  }
+  const auto& d = static_cast<const DatasetLayer&>(layer);
+  std::vector<Eigen::Vector3d> samples = datasetSamples(d.dataset(), 20000 * d.dataset().scans.size());
+  const RigidTransform shown = d.shownTransform();
+  for (auto& p : samples) p = shown.apply(p);
   const Bounds b = robustBounds(std::move(samples), 0.03, 0.0);
   return b.empty() ? layer.bounds() : b;
 }

@@ -37,6 +37,12 @@ LayerTreePanel::LayerTreePanel(Scene& scene, QWidget* parent)
 
 Layer* LayerTreePanel::currentLayer() const { return layerOf(currentItem()); }
 
+Layer* LayerTreePanel::currentRootLayer() const {
+  Layer* layer = currentLayer();
+  while (layer && layer->parent()) layer = layer->parent();
+  return layer;
+}
+
 QTreeWidgetItem* LayerTreePanel::itemOf(const Layer* layer) const {
   for (QTreeWidgetItemIterator it(const_cast<LayerTreePanel*>(this)); *it; ++it)
     if (layerOf(*it) == layer) return *it;

@@ -14,6 +14,8 @@ class LayerTreePanel : public QTreeWidget {
   explicit LayerTreePanel(Scene& scene, QWidget* parent = nullptr);
 
   Layer* currentLayer() const;
+  /// The top-level layer (dataset, model) of the current one, or nullptr.
+  Layer* currentRootLayer() const;
   void setCurrentLayer(const Layer* layer);
   /// The row of a layer (nullptr if absent); for tests.
   QTreeWidgetItem* itemOf(const Layer* layer) const;

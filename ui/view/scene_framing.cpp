@@ -14,14 +14,24 @@ void frameScene(const Scene& scene, VtkViewWidget& widget, StandardView view) {
   widget.requestRender();
 }
 
-bool frameLayer(const Scene& scene, VtkViewWidget& widget, const Layer& layer) {
-  const Bounds world = layer.framingBounds();
+namespace {
+/// The current camera direction fitted to `world`; renders. False (nothing done) when empty.
+bool zoomToWorld(const Scene& scene, VtkViewWidget& widget, const Bounds& world) {
   if (world.empty()) return false;
   double b[6];
   scene.renderBounds(world, b);
   zoomToBounds(widget.renderer(), b);
   widget.requestRender();
   return true;
+}
+}  // namespace
+
+bool frameLayer(const Scene& scene, VtkViewWidget& widget, const Layer& layer) {
+  return zoomToWorld(scene, widget, layer.framingBounds());
+}
+
+bool frameVisible(const Scene& scene, VtkViewWidget& widget) {
+  return zoomToWorld(scene, widget, scene.visibleFramingBounds());
 }
 
 }  // namespace plumb::ui

@@ -15,5 +15,8 @@ void frameScene(const Scene& scene, VtkViewWidget& widget, StandardView view = S
 /// The current camera direction fitted to `layer`'s framing bounds; renders. False when the
 /// layer has no bounds.
 bool frameLayer(const Scene& scene, VtkViewWidget& widget, const Layer& layer);
+/// The current camera direction fitted to the visible layers' framing bounds; renders. False
+/// when nothing visible has bounds.
+bool frameVisible(const Scene& scene, VtkViewWidget& widget);
 
 }  // namespace plumb::ui

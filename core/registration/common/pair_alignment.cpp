@@ -12,22 +12,20 @@ namespace plumb {
 
 namespace {
 
-/// Centroid and the second singular value of the centred points relative to the first: ~0 for
-/// collinear (or coincident) points.
-double spreadRatio(const std::vector<Eigen::Vector3d>& p, Eigen::Vector3d& centroid) {
-  centroid.setZero();
-  for (const auto& x : p) centroid += x;
-  centroid /= double(p.size());
-  Eigen::MatrixXd m(p.size(), 3);
-  for (std::size_t i = 0; i < p.size(); ++i) m.row(long(i)) = (p[i] - centroid).transpose();
-  const Eigen::Vector3d s = Eigen::JacobiSVD<Eigen::MatrixXd>(m).singularValues();
-  return s[0] > 0 ? s[1] / s[0] : 0.0;
-}
-
 Eigen::Vector3d centroidOf(const std::vector<Eigen::Vector3d>& p) {
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (const auto& x : p) c += x;
   return c / double(p.size());
+}
+
+/// Centroid and the second singular value of the centred points relative to the first: ~0 for
+/// collinear (or coincident) points.
+double spreadRatio(const std::vector<Eigen::Vector3d>& p, Eigen::Vector3d& centroid) {
+  centroid = centroidOf(p);
+  Eigen::MatrixXd m(p.size(), 3);
+  for (std::size_t i = 0; i < p.size(); ++i) m.row(long(i)) = (p[i] - centroid).transpose();
+  const Eigen::Vector3d s = Eigen::JacobiSVD<Eigen::MatrixXd>(m).singularValues();
+  return s[0] > 0 ? s[1] / s[0] : 0.0;
 }
 
 /// Full rotation: cross-covariance H = sum (s_i - cs)(t_i - ct)^T, R = V diag(1,1,det) U^T
