@@ -9,6 +9,12 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 BUILD=${PLUMB_BUILD_DIR:-$ROOT/build}
 JOBS=${PLUMB_JOBS:-$(nproc)}
+# ccache: paths under the checkout are hashed relative to it, and the working directory is not
+# hashed, so a fresh clone elsewhere (CI's) and git worktrees reuse this machine's cache; the
+# sanitizer, TSan and fuzz trees need more than the default 5 GB.
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$ROOT}
+export CCACHE_NOHASHDIR=${CCACHE_NOHASHDIR:-1}
+export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-25G}
 
 # Every dependency is a Debian 12 package (see README.md "Dependencies").
 PACKAGES=(
