@@ -42,14 +42,27 @@ TEST(CliLossless, ConvertRefusesToOverwriteItsInput) {
   const auto dir = scratchDir("cli_convert_same");
   writeAll(dir / "a.ply", kTinyPly);
   fs::create_symlink("a.ply", dir / "link.ply");
+  fs::create_hard_link(dir / "a.ply", dir / "hard.ply");
   for (const char* args : {"convert a.ply a.ply", "convert a.ply ./a.ply", "convert ./a.ply link.ply",
-                           "convert link.ply a.ply"}) {
+                           "convert link.ply a.ply", "convert a.ply hard.ply", "convert hard.ply a.ply"}) {
     const CliResult r = plumbCli(dir, args);
     EXPECT_EQ(r.exit_code, 1) << args;
     EXPECT_NE(r.err.find("is the input file itself"), std::string::npos) << args << ": " << r.err;
     EXPECT_EQ(readAll(dir / "a.ply"), kTinyPly) << args;
   }
   EXPECT_TRUE(fs::is_symlink(dir / "link.ply"));
+}
+
+TEST(CliLossless, ConvertToLasBeyondItsIntegerRangeIsAnError) {
+  // A 1e308 translation cannot be stored in LAS's scaled 32-bit integers: an error naming the
+  // file, exit 1, and no file written (on main: a LAS with 0 points and exit 0).
+  const auto dir = scratchDir("cli_convert_las_range");
+  writeAll(dir / "a.ply", kTinyPly);
+  writeAll(dir / "T.json", R"({"matrix": [[1,0,0,1e308],[0,1,0,0],[0,0,1,0],[0,0,0,1]]})");
+  const CliResult r = plumbCli(dir, "convert a.ply far.las --transform T.json");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("far.las"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "far.las"));
 }
 
 TEST(CliLossless, ConvertCountsNanPointsItDrops) {
@@ -149,8 +162,11 @@ void writeZeroPly(const fs::path& path, std::size_t n) {
     out.write(block.data(), static_cast<std::streamsize>(12 * std::min<std::size_t>(1 << 16, n - done)));
 }
 
-TEST(CliLossless, SigtermDuringAWriteRemovesTheTemporaryFile) {
-  const auto dir = scratchDir("cli_sigterm");
+/// Runs `plumb-cli convert` of a 6-million-point PLY to XYZ over an existing file and sends
+/// `signal` once the temporary file exists: the CLI must die of that signal, remove its
+/// temporary file and leave the old output as it was.
+void interruptConvert(int signal) {
+  const auto dir = scratchDir("cli_signal_" + std::to_string(signal));
   writeZeroPly(dir / "big.ply", 6'000'000);
   writeAll(dir / "out.xyz", "old\n");
   const std::string in = (dir / "big.ply").string(), out = (dir / "out.xyz").string();
@@ -166,13 +182,17 @@ TEST(CliLossless, SigtermDuringAWriteRemovesTheTemporaryFile) {
   while (temporaryFiles(dir) == 0 && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   ASSERT_EQ(temporaryFiles(dir), 1u) << "the write never started";
-  ASSERT_EQ(kill(pid, SIGTERM), 0);
+  ASSERT_EQ(kill(pid, signal), 0);
   int status = 0;
   ASSERT_EQ(waitpid(pid, &status, 0), pid);
   ASSERT_TRUE(WIFSIGNALED(status)) << "plumb-cli finished before the signal; status " << status;
-  EXPECT_EQ(WTERMSIG(status), SIGTERM);
+  EXPECT_EQ(WTERMSIG(status), signal);
   EXPECT_EQ(temporaryFiles(dir), 0u);
   EXPECT_EQ(readAll(dir / "out.xyz"), "old\n");
 }
+
+TEST(CliLossless, SigtermDuringAWriteRemovesTheTemporaryFile) { interruptConvert(SIGTERM); }
+TEST(CliLossless, SigintDuringAWriteRemovesTheTemporaryFile) { interruptConvert(SIGINT); }
+TEST(CliLossless, SighupDuringAWriteRemovesTheTemporaryFile) { interruptConvert(SIGHUP); }
 
 }  // namespace

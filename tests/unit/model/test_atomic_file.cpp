@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <cstring>
 #include <stdexcept>
 
 #include "common/atomic_file.hpp"
@@ -101,23 +102,26 @@ TEST(AtomicFile, SymlinkIsWrittenThrough) {
 }
 
 TEST(AtomicFile, SignalRemovesLiveTemporaryFilesAndReraises) {
-  const auto dir = test::scratchDir("atomic_file_signal");
-  test::writeAll(dir / "out.txt", "old");
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {  // child: a write in progress, then SIGTERM
-    removeTemporaryFilesOnSignals();
-    AtomicFileWriter w(dir / "out.txt");
-    w.stream() << "half" << std::flush;
-    std::raise(SIGTERM);
-    ::_exit(0);  // not reached: the default action terminates
+  // An interrupted CLI: Ctrl-C (SIGINT), kill (SIGTERM) and a closed terminal (SIGHUP).
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    const auto dir = test::scratchDir("atomic_file_signal_" + std::to_string(signal));
+    test::writeAll(dir / "out.txt", "old");
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {  // child: a write in progress, then the signal
+      removeTemporaryFilesOnSignals();
+      AtomicFileWriter w(dir / "out.txt");
+      w.stream() << "half" << std::flush;
+      std::raise(signal);
+      ::_exit(0);  // not reached: the default action terminates
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFSIGNALED(status)) << strsignal(signal);
+    EXPECT_EQ(WTERMSIG(status), signal);
+    EXPECT_EQ(test::readAll(dir / "out.txt"), "old") << strsignal(signal);
+    EXPECT_EQ(entries(dir), 1u) << strsignal(signal);
   }
-  int status = 0;
-  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
-  ASSERT_TRUE(WIFSIGNALED(status));
-  EXPECT_EQ(WTERMSIG(status), SIGTERM);
-  EXPECT_EQ(test::readAll(dir / "out.txt"), "old");
-  EXPECT_EQ(entries(dir), 1u);
 }
 
 TEST(Progress, SubRangesAndCancel) {
