@@ -16,7 +16,7 @@ find_package(PCL 1.13 REQUIRED COMPONENTS common io kdtree search features filte
 set(CMAKE_DISABLE_FIND_PACKAGE_VTK FALSE)
 
 if(PLUMB_BUILD_UI)
-  find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Test Concurrent)
+  find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Test Concurrent Svg)
   find_package(VTK 9.1 REQUIRED COMPONENTS CommonCore CommonDataModel CommonColor RenderingCore
                RenderingOpenGL2 RenderingFreeType RenderingAnnotation InteractionStyle
                InteractionWidgets FiltersSources FiltersCore FiltersGeneral IOImage)

@@ -14,10 +14,29 @@ bool isHtmlReportPath(const std::string& path) {
   return e == ".html" || e == ".htm";
 }
 
-void checkReportPath(const std::string& path, const std::string& what) {
-  if (!isHtmlReportPath(path) && lowerExtension(path) != ".json")
-    throw InputError(what + " '" + path + "' must end in .json (the quality report) or .html "
-                     "(the report to hand over)");
+bool isPdfReportPath(const std::string& path) { return lowerExtension(path) == ".pdf"; }
+
+void checkReportPath(const std::string& path, const std::string& what, bool pdf_allowed) {
+  if (isHtmlReportPath(path) || lowerExtension(path) == ".json" || (pdf_allowed && isPdfReportPath(path)))
+    return;
+  throw InputError(what + " '" + path + "' must end in .json (the quality report) or .html" +
+                   (pdf_allowed ? " or .pdf" : "") + " (the report to hand over)");
+}
+
+RegistrationReport reportOfRegistration(const RegistrationInput& source, const RegistrationInput& target,
+                                        const std::string& source_name, const std::string& target_name,
+                                        const PipelineResult& result, std::uint64_t seed,
+                                        Progress* progress) {
+  const PointCloud sampled =
+      source.model ? sampleMeshSurface(source.model->mesh, 0.05, seed) : PointCloud();
+  ReportInputs in;
+  in.source_file = source_name;
+  in.target_file = target_name;
+  in.source = source.model ? &sampled : &source.cloud;
+  if (target.model) in.target_model = &*target.model;
+  else in.target_cloud = &target.cloud;
+  in.seed = seed;
+  return buildRegistrationReport(in, result, {}, progress);
 }
 
 void writeReportFile(const std::string& path, const RegistrationInput& source,
@@ -28,16 +47,8 @@ void writeReportFile(const std::string& path, const RegistrationInput& source,
     writeFileAtomically(path, [&](std::ostream& out) { out << qualityReportToJson(result.report); });
     return;
   }
-  const PointCloud sampled =
-      source.model ? sampleMeshSurface(source.model->mesh, 0.05, seed) : PointCloud();
-  ReportInputs in;
-  in.source_file = source_name;
-  in.target_file = target_name;
-  in.source = source.model ? &sampled : &source.cloud;
-  if (target.model) in.target_model = &*target.model;
-  else in.target_cloud = &target.cloud;
-  in.seed = seed;
-  const std::string html = reportHtml(buildRegistrationReport(in, result, {}, progress));
+  const std::string html =
+      reportHtml(reportOfRegistration(source, target, source_name, target_name, result, seed, progress));
   writeFileAtomically(path, [&](std::ostream& out) { out << html; });
 }
 

@@ -68,7 +68,7 @@ void ExportReportReaction::onTriggered() {
   }
   const QString path = chooseFileToSave(&app().window, FolderKind::Export, tr("Export registration report"),
                                         "registration-report.html",
-                                        tr("Report to hand over (*.html);;Quality report (*.json)"));
+                                        tr("Report to hand over (*.html);;Printable report (*.pdf);;Quality report (*.json)"));
   if (path.isEmpty()) return;
   try {
     exportRegistrationReport(app(), record, path);

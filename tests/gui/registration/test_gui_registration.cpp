@@ -8,6 +8,8 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QDoubleSpinBox>
+#include <QFile>
+#include <QRegularExpression>
 #include <QSpinBox>
 #include <QTest>
 #include <QUndoStack>
@@ -20,12 +22,16 @@
 
 #include "common/error.hpp"
 #include "io/io.hpp"
+#include "report/figure_meanings.hpp"
+#include "quality/verdict_level.hpp"
+#include "report/html_report.hpp"
 #include "simulation/building_generator.hpp"
 #include "simulation/presets.hpp"
 #include "simulation/survey.hpp"
 #include "gui/image_checks.hpp"
 #include "gui/menu_actions.hpp"
 #include "gui/open_window.hpp"
+#include "gui/pdf_tools.hpp"
 #include "support/test_support.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/feature_layer.hpp"
@@ -262,11 +268,13 @@ class GuiRegistrationTest : public QObject {
     const auto result = panel.lastResult();
     QVERIFY(result);
     QVERIFY_THROWS_EXCEPTION(InputError,
-                             exportRegistrationReport(app, panel.lastRecord(), artefact("r.pdf")));
+                             exportRegistrationReport(app, panel.lastRecord(), artefact("r.txt")));
     const QString html = artefact("registration-report.html"), json = artefact("quality.json");
+    const QString pdf = artefact("registration-report.pdf");
     QSignalSpy idle(&app.tasks, &TaskManager::idle);
     exportRegistrationReport(app, panel.lastRecord(), html);
     exportRegistrationReport(app, panel.lastRecord(), json);
+    exportRegistrationReport(app, panel.lastRecord(), pdf);
     QVERIFY(idle.wait(kTaskTimeoutMs));
     QCOMPARE(app.log.errorCount(), 0);
     std::ifstream j(json.toStdString());
@@ -284,10 +292,61 @@ class GuiRegistrationTest : public QObject {
     std::size_t svgs = 0;
     for (std::size_t at = page.find("<svg"); at != std::string::npos; at = page.find("<svg", at + 1)) ++svgs;
     QVERIFY2(svgs >= 4, qPrintable(QString::number(svgs)));
+    checkPdfReport(pdf, json_text, result->report);
+    if (QTest::currentTestFailed()) return;
+    // A read-only file is not replaced: the export fails and the file keeps its content.
+    const QString locked = artefact("locked.pdf");
+    QFile::remove(locked);
+    std::ofstream(locked.toStdString()) << "keep";
+    QVERIFY(QFile::setPermissions(locked, QFileDevice::ReadOwner | QFileDevice::ReadGroup));
+    exportRegistrationReport(app, panel.lastRecord(), locked);
+    QVERIFY(idle.wait(kTaskTimeoutMs));
+    QCOMPARE(app.log.errorCount(), 1);
+    QFile kept(locked);
+    QVERIFY(kept.open(QIODevice::ReadOnly));
+    QCOMPARE(kept.readAll(), QByteArray("keep"));
     // A layer the registration ran on is gone: nothing to build the report from.
     app.scene.removeLayer(model_);
     QVERIFY_THROWS_EXCEPTION(InputError,
                              exportRegistrationReport(app, panel.lastRecord(), artefact("gone.html")));
+  }
+
+  /// The printable report (issue 17): a PDF of A4 pages with the verdict, every number and
+  /// yes/no figure of the JSON report shown as the HTML shows it (figure name, then value, on
+  /// one line), page numbers, and the pictures painted (the plan view's orange source points).
+  void checkPdfReport(const QString& pdf, const std::string& json_text, const QualityReport& q) {
+    QFile file(pdf);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.read(5), QByteArray("%PDF-"));
+    const QString text = test::pdfText(pdf);
+    const int pages = static_cast<int>(text.count(QChar('\f')));
+    QVERIFY2(pages >= 3, qPrintable(QString::number(pages)));
+    QVERIFY(text.contains(QStringLiteral("Page 1 of %1").arg(pages)));
+    QVERIFY(text.contains(QStringLiteral("Page %1 of %1").arg(pages)));
+    const QString flat = text.simplified();
+    QVERIFY(flat.contains(QStringLiteral("Verdict: %1").arg(QString::fromUtf8(verdictLevelName(q.level)))));
+    QVERIFY2(flat.contains(QString::fromStdString(q.verdict).simplified()), qPrintable(flat.left(600)));
+    QVERIFY(flat.contains(QStringLiteral("Sign-off")));
+    int figures = 0;
+    for (const auto& [path, value] : report::flattenReportJson(json_text)) {
+      const auto v = nlohmann::json::parse(value);
+      if (!v.is_number() && !v.is_boolean()) continue;
+      const QString row = QStringLiteral("(^|\\s)%1\\s+%2(\\s|$)")
+                              .arg(QRegularExpression::escape(QString::fromStdString(path)),
+                                   QRegularExpression::escape(QString::fromStdString(report::displayValue(path, v))));
+      QVERIFY2(QRegularExpression(row, QRegularExpression::MultilineOption).match(text).hasMatch(),
+               qPrintable(QString::fromStdString(path + " = " + report::displayValue(path, v))));
+      ++figures;
+    }
+    QVERIFY2(figures >= 10, qPrintable(QString::number(figures)));
+    int orange = 0;
+    for (int page = 1; page <= pages; ++page) {
+      const QImage image = test::pdfPage(pdf, page, 60, artefact(QStringLiteral("report-page-%1.png").arg(page)));
+      QVERIFY(!image.isNull());
+      QCOMPARE(image.width(), 496);  // A4, 210 mm at 60 dpi
+      orange += countHue(image, 21);
+    }
+    QVERIFY2(orange > 300, qPrintable(QString::number(orange)));
   }
 
   void projectRoundTripAndExports() {
