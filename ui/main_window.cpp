@@ -11,6 +11,7 @@
 #include <QUndoStack>
 
 #include "ui/actions/attach_trajectory_reaction.hpp"
+#include "ui/actions/colour_by_dataset_reaction.hpp"
 #include "ui/actions/export_cloud_reaction.hpp"
 #include "ui/actions/full_detail_reaction.hpp"
 #include "ui/actions/open_file_reaction.hpp"
@@ -39,6 +40,7 @@
 #include "ui/tasks/load_files.hpp"
 #include "ui/tasks/task_manager.hpp"
 #include "ui/view/lod_controller.hpp"
+#include "ui/view/scene_legend.hpp"
 #include "ui/view/vtk_view_widget.hpp"
 
 namespace plumb::ui {
@@ -63,6 +65,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   context_->manual = new ManualAlignPanel(*context_, this);
   context_->measure = new MeasureTool(*context_, this);
   lod_ = new LodController(*view, *scene, this);
+  new SceneLegend(*scene, view->renderer(), this);  // datasets / scans by colour, in the view
 
   connect(scene, &Scene::renderNeeded, view, &VtkViewWidget::requestRender);
   connect(tree, &LayerTreePanel::currentLayerChanged, properties, &PropertiesPanel::showLayer);
@@ -168,6 +171,7 @@ void MainWindow::createMenus() {
   new MeasureReaction(view->addAction(tr("&Measure point / distance")), app);
   new ProjectionReaction(view->addAction(tr("&Orthographic projection")), app);
   new BlinkReaction(view->addAction(tr("&Blink before/after")), app);
+  new ColourByDatasetReaction(view->addAction(tr("&Colour by dataset")), app);
   new FullDetailReaction(view->addAction(tr("Full detail when still (may be slow)")), app, *lod_);
   view->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
