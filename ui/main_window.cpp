@@ -25,6 +25,7 @@
 #include "ui/actions/reset_camera_reaction.hpp"
 #include "ui/actions/screenshot_reaction.hpp"
 #include "ui/actions/standard_view_reaction.hpp"
+#include "ui/actions/undo_redo_reaction.hpp"
 #include "ui/actions/zoom_to_layer_reaction.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/inspection/clip_panel.hpp"
@@ -141,12 +142,8 @@ void MainWindow::createMenus() {
           &QWidget::close);
 
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-  QAction* undo = app.undo.createUndoAction(this, tr("&Undo"));
-  undo->setShortcut(QKeySequence::Undo);
-  QAction* redo = app.undo.createRedoAction(this, tr("&Redo"));
-  redo->setShortcut(QKeySequence::Redo);
-  edit->addAction(undo);
-  edit->addAction(redo);
+  new UndoRedoReaction(edit->addAction(tr("&Undo")), app, UndoRedoReaction::Step::Undo);
+  new UndoRedoReaction(edit->addAction(tr("&Redo")), app, UndoRedoReaction::Step::Redo);
   edit->addSeparator();
   new RemoveLayerReaction(edit->addAction(tr("&Remove layer"), QKeySequence::Delete), app);
 
