@@ -11,6 +11,7 @@
 #include <QUndoStack>
 
 #include "ui/actions/attach_trajectory_reaction.hpp"
+#include "ui/actions/colour_by_dataset_reaction.hpp"
 #include "ui/actions/export_cloud_reaction.hpp"
 #include "ui/actions/full_detail_reaction.hpp"
 #include "ui/actions/open_file_reaction.hpp"
@@ -24,6 +25,7 @@
 #include "ui/actions/reset_camera_reaction.hpp"
 #include "ui/actions/screenshot_reaction.hpp"
 #include "ui/actions/standard_view_reaction.hpp"
+#include "ui/actions/undo_redo_reaction.hpp"
 #include "ui/actions/zoom_to_layer_reaction.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/inspection/clip_panel.hpp"
@@ -39,6 +41,7 @@
 #include "ui/tasks/load_files.hpp"
 #include "ui/tasks/task_manager.hpp"
 #include "ui/view/lod_controller.hpp"
+#include "ui/view/scene_legend.hpp"
 #include "ui/view/vtk_view_widget.hpp"
 
 namespace plumb::ui {
@@ -63,6 +66,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   context_->manual = new ManualAlignPanel(*context_, this);
   context_->measure = new MeasureTool(*context_, this);
   lod_ = new LodController(*view, *scene, this);
+  new SceneLegend(*scene, view->renderer(), this);  // datasets / scans by colour, in the view
 
   connect(scene, &Scene::renderNeeded, view, &VtkViewWidget::requestRender);
   connect(tree, &LayerTreePanel::currentLayerChanged, properties, &PropertiesPanel::showLayer);
@@ -138,12 +142,8 @@ void MainWindow::createMenus() {
           &QWidget::close);
 
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-  QAction* undo = app.undo.createUndoAction(this, tr("&Undo"));
-  undo->setShortcut(QKeySequence::Undo);
-  QAction* redo = app.undo.createRedoAction(this, tr("&Redo"));
-  redo->setShortcut(QKeySequence::Redo);
-  edit->addAction(undo);
-  edit->addAction(redo);
+  new UndoRedoReaction(edit->addAction(tr("&Undo")), app, UndoRedoReaction::Step::Undo);
+  new UndoRedoReaction(edit->addAction(tr("&Redo")), app, UndoRedoReaction::Step::Redo);
   edit->addSeparator();
   new RemoveLayerReaction(edit->addAction(tr("&Remove layer"), QKeySequence::Delete), app);
 
@@ -168,6 +168,7 @@ void MainWindow::createMenus() {
   new MeasureReaction(view->addAction(tr("&Measure point / distance")), app);
   new ProjectionReaction(view->addAction(tr("&Orthographic projection")), app);
   new BlinkReaction(view->addAction(tr("&Blink before/after")), app);
+  new ColourByDatasetReaction(view->addAction(tr("&Colour by dataset")), app);
   new FullDetailReaction(view->addAction(tr("Full detail when still (may be slow)")), app, *lod_);
   view->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());

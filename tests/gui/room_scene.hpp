@@ -5,6 +5,8 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <vector>
 
@@ -38,6 +40,22 @@ inline std::shared_ptr<const Dataset> roomScan(double spacing, const RigidTransf
   auto data = std::make_shared<Dataset>(Dataset::fromCloud(std::move(cloud), name));
   data->source = name + ".ply";  // names the layer; nothing is read from it
   return data;
+}
+
+/// A copy of `data` whose points carry timestamps, 1 ms apart in point order (a mobile scan
+/// without sensor origins, for attaching a trajectory).
+inline std::shared_ptr<const Dataset> withTimestamps(const std::shared_ptr<const Dataset>& data) {
+  auto timed = std::make_shared<Dataset>(*data);
+  for (Scan& scan : timed->scans)
+    for (std::size_t i = 0; i < scan.cloud.size(); ++i) scan.cloud.timestamps.push_back(0.001 * double(i));
+  return timed;
+}
+
+/// A trajectory file ("t x y z") crossing the room at mid height over the times of
+/// withTimestamps for `points` points.
+inline std::filesystem::path writeRoomTrajectory(const std::filesystem::path& path, std::size_t points) {
+  std::ofstream(path) << "# t x y z\n-1 1 3 1.5\n" << 0.001 * double(points) + 1.0 << " 7 3 1.5\n";
+  return path;
 }
 
 /// The faces of roomBoxes() as triangles (two per face).

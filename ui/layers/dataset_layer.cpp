@@ -195,16 +195,21 @@ std::vector<PropertyRow> DatasetLayer::describe() const {
 namespace plumb::ui {
 
 std::vector<LegendEntry> DatasetLayer::legend() const {
+  if (style_.mode == PointColorMode::Dataset) return {{name(), datasetColour()}};
   if (style_.mode != PointColorMode::Scan) return {};
   std::vector<LegendEntry> out;
   for (const ScanLayer* s : scans()) out.push_back({s->name(), categoryColor(s->colourIndex())});
   return out;
 }
 
-void DatasetLayer::setFirstColourIndex(std::size_t first) {
-  for (ScanLayer* s : scans()) s->setColourIndex(first + s->scanIndex());
-  if (style_.mode == PointColorMode::Scan) colours_stale_ = true;
+void DatasetLayer::setColourIndices(std::size_t first_scan, std::size_t dataset) {
+  dataset_colour_index_ = dataset;
+  for (ScanLayer* s : scans()) s->setColourIndices(first_scan + s->scanIndex(), dataset);
+  if (style_.mode == PointColorMode::Scan || style_.mode == PointColorMode::Dataset)
+    colours_stale_ = true;
 }
+
+Rgb8 DatasetLayer::datasetColour() const { return categoryColor(dataset_colour_index_); }
 
 bool DatasetLayer::hasColors() const { return anyScanHasColors(*data_); }
 

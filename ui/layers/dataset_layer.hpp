@@ -86,11 +86,14 @@ class DatasetLayer : public Layer {
   /// Its robust bounds (outliers left out) under the shown transform.
   Bounds framingBounds() const override;
   std::vector<PropertyRow> describe() const override;
-  /// In the Scan colour mode, each scan with its colour.
+  /// In the Scan colour mode, each scan with its colour; in the Dataset mode, the dataset's.
   std::vector<LegendEntry> legend() const override;
-  /// The Scan colour of the first scan: scans are numbered across the scene (Scene::addDataset),
-  /// so two single-scan datasets get two colours.
-  void setFirstColourIndex(std::size_t first);
+  /// The Scan colour index of the first scan and the Dataset colour index: scans and datasets
+  /// are numbered across the scene (Scene::addDataset), so two single-scan datasets get two
+  /// colours in either mode.
+  void setColourIndices(std::size_t first_scan, std::size_t dataset);
+  /// The Dataset colour mode's colour of this dataset.
+  Rgb8 datasetColour() const;
   /// Whether any scan has RGB colours / intensities (what the colour modes can show).
   bool hasColors() const;
   bool hasIntensity() const;
@@ -105,6 +108,7 @@ class DatasetLayer : public Layer {
   bool has_distances_ = false;
   PointColorMode mode_before_distances_ = PointColorMode::Rgb;
   bool colours_stale_ = false;
+  std::size_t dataset_colour_index_ = 0;
   QString trajectory_;
   std::uint64_t style_generation_ = 0;  ///< bumped by every setStyle / requestStyle
   bool coloring_pending_ = false;

@@ -1,5 +1,7 @@
 #include "ui/layers/layer.hpp"
 
+#include "common/error.hpp"
+
 namespace plumb::ui {
 
 Layer::Layer(LayerKind kind, QString name) : kind_(kind), name_(std::move(name)) {}
@@ -75,6 +77,12 @@ QString layerKindName(LayerKind kind) {
     case LayerKind::Result: return "Result";
   }
   return "Layer";
+}
+
+Layer& stillThere(const LayerRef& layer, const QString& name, const char* what) {
+  if (Layer* l = layer.get()) return *l;
+  throw InputError("'" + name.toStdString() + "' was removed during " + what +
+                   "; the result was dropped");
 }
 
 }  // namespace plumb::ui

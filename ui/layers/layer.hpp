@@ -92,6 +92,10 @@ class LayerRef {
   std::weak_ptr<const char> alive_;
 };
 
+/// The layer, or an InputError naming it (`name`) when it was removed while `what` ran: a task
+/// whose layer went away then finishes with that error and shows nothing.
+Layer& stillThere(const LayerRef& layer, const QString& name, const char* what);
+
 QString layerKindName(LayerKind kind);
 
 }  // namespace plumb::ui

@@ -69,6 +69,9 @@ void fillPointColors(const PointCloud& cloud, const PointColoring& c, std::span<
     case PointColorMode::Scan:
       std::fill(out.begin(), out.end(), categoryColor(c.scan_index));
       return;
+    case PointColorMode::Dataset:
+      std::fill(out.begin(), out.end(), categoryColor(c.dataset_index));
+      return;
     case PointColorMode::Elevation:
     case PointColorMode::Distance: break;
   }

@@ -14,6 +14,7 @@ namespace plumb::ui {
 struct PointColoring {
   PointStyle style;
   std::size_t scan_index = 0;  ///< colour of the Scan mode: the scan's number in the scene
+  std::size_t dataset_index = 0;  ///< colour of the Dataset mode: the dataset's number in the scene
   /// Elevation: z = elevation_row . (offset + local, 1), mapped from [z_min, z_max].
   Eigen::Vector4d elevation_row = Eigen::Vector4d(0, 0, 1, 0);
   double z_min = 0.0;

@@ -5,11 +5,13 @@
 
 namespace plumb::ui {
 
-enum class PointColorMode { Rgb, Intensity, Elevation, Scan, ScalarField, Distance };
+/// Dataset: one colour per dataset (file) across the scene. Its value follows the others, so
+/// the values saved before it existed keep their meaning.
+enum class PointColorMode { Rgb, Intensity, Elevation, Scan, ScalarField, Distance, Dataset };
 
 inline const std::vector<std::string>& pointColorModeNames() {
   static const std::vector<std::string> names{"RGB", "Intensity", "Elevation", "Scan",
-                                              "Scalar field", "Distance"};
+                                              "Scalar field", "Distance", "Dataset"};
   return names;
 }
 

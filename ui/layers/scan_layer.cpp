@@ -117,6 +117,7 @@ ScanColorJob ScanLayer::colorJob(const PointStyle& style, double z_min, double z
   ScanColorJob job = makeScanColorJob(data_, scan_index_, dataset_transform_, style, z_min, z_max,
                                       distances_, distance_max_);
   job.coloring.scan_index = colour_index_;
+  job.coloring.dataset_index = dataset_colour_index_;
   return job;
 }
 

@@ -39,7 +39,11 @@ class ScanLayer : public Layer {
   std::size_t scanIndex() const { return scan_index_; }
   /// The Scan colour mode's colour (categoryColor of this index): its number in the scene.
   std::size_t colourIndex() const { return colour_index_; }
-  void setColourIndex(std::size_t index) { colour_index_ = index; }
+  /// The scan's Scan colour index and its dataset's Dataset colour index.
+  void setColourIndices(std::size_t scan, std::size_t dataset) {
+    colour_index_ = scan;
+    dataset_colour_index_ = dataset;
+  }
   /// Size of the moving subset (drawn while the camera moves).
   std::size_t lodPointCount() const { return moving_count_; }
   /// Changes the moving subset's size (clamped to [1, size]).
@@ -91,6 +95,7 @@ class ScanLayer : public Layer {
   std::shared_ptr<const Dataset> data_;
   std::size_t scan_index_;
   std::size_t colour_index_ = scan_index_;
+  std::size_t dataset_colour_index_ = 0;
   Eigen::Vector3d origin_;
   RigidTransform dataset_transform_;
   PermutedPoints points_;  ///< the scan's points in random order (positions, colours)

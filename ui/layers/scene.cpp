@@ -54,7 +54,8 @@ DatasetLayer& Scene::addDataset(std::shared_ptr<const Dataset> data, PreparedDat
   const std::size_t scans = data->scans.size();
   auto& layer = static_cast<DatasetLayer&>(adopt(
       std::make_unique<DatasetLayer>(std::move(data), origin(), std::move(prepared)), nullptr));
-  layer.setFirstColourIndex(next_scan_colour_);  // Scan colours: numbered across the scene
+  // Scan and Dataset colours: numbered across the scene, never reused.
+  layer.setColourIndices(next_scan_colour_, next_dataset_colour_++);
   next_scan_colour_ += scans;
   return layer;
 }
@@ -192,7 +193,7 @@ void Scene::clear() {
   }
   layers_.clear();
   origin_.reset();
-  next_scan_colour_ = 0;
+  next_scan_colour_ = next_dataset_colour_ = 0;
   emit layersChanged();
 }
 

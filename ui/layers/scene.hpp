@@ -135,6 +135,7 @@ class Scene : public QObject {
   /// Scan colour of the next dataset's first scan (Scan colour mode): never reused, so a
   /// colour stays with its scan when other layers are removed.
   std::size_t next_scan_colour_ = 0;
+  std::size_t next_dataset_colour_ = 0;  ///< Dataset colour of the next dataset, likewise
   std::optional<ClipBox> clip_;
 };
 

@@ -16,18 +16,6 @@
 
 namespace plumb::ui {
 
-namespace {
-
-/// The layer, or an error naming it when it was removed while `what` ran (the task then
-/// finishes with that error and shows nothing).
-Layer& stillThere(const LayerRef& layer, const QString& name, const char* what) {
-  if (Layer* l = layer.get()) return *l;
-  throw InputError("'" + name.toStdString() + "' was removed during " + what +
-                   "; the result was dropped");
-}
-
-}  // namespace
-
 LayerData dataOf(const Layer& layer) {
   LayerData d;
   d.name = layer.name();

@@ -18,12 +18,13 @@ Task* startAttachTrajectory(AppContext& app, DatasetLayer& layer, const QString&
                             std::function<void(bool ok)> done) {
   const std::shared_ptr<const Dataset> data = layer.sharedDataset();
   const std::string file = path.toStdString();
-  // The layer may be removed while the task runs: never touch it then.
-  const std::weak_ptr<const char> alive = layer.lifetime();
-  DatasetLayer* target = &layer;
+  // The layer may be removed while the task runs (by other means than the disabled actions):
+  // never touch it then.
+  const LayerRef held(layer);
+  const QString name = layer.name();
   Task* task = app.tasks.run(
-      QObject::tr("Attaching trajectory to %1").arg(layer.name()),
-      [&app, data, file, path, alive, target](Progress& progress) -> Task::Apply {
+      QObject::tr("Attaching trajectory to %1").arg(name),
+      [&app, data, file, path, held, name](Progress& progress) -> Task::Apply {
         reportProgress(&progress, 0.0, "reading the trajectory");
         const Trajectory trajectory = readTrajectory(file);
         checkCanceled(&progress);
@@ -31,8 +32,8 @@ Task* startAttachTrajectory(AppContext& app, DatasetLayer& layer, const QString&
         auto with_origins = std::make_shared<Dataset>(*data);
         setSensorOriginsFromTrajectory(*with_origins, trajectory, file);
         const std::size_t poses = trajectory.times.size();
-        return [&app, with_origins, path, alive, target, poses] {
-          if (alive.expired()) return;
+        return [&app, with_origins, path, held, name, poses] {
+          auto* target = static_cast<DatasetLayer*>(&stillThere(held, name, "the trajectory attachment"));
           target->attachTrajectory(with_origins, path);
           app.scene.layerChanged(target);
           app.log.info(QObject::tr("%1: sensor origins of %2 points from the trajectory %3 (%4 poses)")
@@ -42,10 +43,10 @@ Task* startAttachTrajectory(AppContext& app, DatasetLayer& layer, const QString&
                            .arg(poses));
         };
       },
-      {LayerRef(layer)});
-  QObject::connect(task, &Task::finished, &app.scene, [&app, alive, done](bool ok, const QString& message) {
+      {held});
+  QObject::connect(task, &Task::finished, &app.scene, [&app, done](bool ok, const QString& message) {
     if (!ok && message != QLatin1String("cancelled")) app.log.error(message);
-    if (done) done(ok && !alive.expired());
+    if (done) done(ok);
   });
   return task;
 }

@@ -1,7 +1,9 @@
 // The Registration dock keeps its promises while it works and after (issue 17): a running task
-// holds its layers (Remove layer and Open project wait, the layer choice is locked), and a
-// result whose layer went away anyway is dropped instead of landing on another layer. On a
-// small synthetic room (tests/gui/room_scene.hpp) so each task takes a second or two.
+// holds its layers (Remove layer, Open project, Undo and Redo wait, the layer choice is
+// locked), and a result whose layer went away anyway is dropped instead of landing on another
+// layer. Attaching a trajectory holds its layer likewise; exports and loads work on copies and
+// hold none. On a small synthetic room (tests/gui/room_scene.hpp) so each task takes a second
+// or two.
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
@@ -13,11 +15,13 @@
 #include <QTest>
 
 #include <fstream>
+#include <variant>
 
 #include "gui/menu_actions.hpp"
 #include "gui/open_window.hpp"
 #include "gui/room_scene.hpp"
 #include "support/test_support.hpp"
+#include "io/io.hpp"
 #include "ui/actions/file_dialogs.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
@@ -30,6 +34,9 @@
 #include "ui/registration/registration_panel.hpp"
 #include "ui/registration/registration_tasks.hpp"
 #include "ui/registration/transform_command.hpp"
+#include "ui/tasks/attach_trajectory.hpp"
+#include "ui/tasks/export_tasks.hpp"
+#include "ui/tasks/load_files.hpp"
 #include "ui/tasks/task_manager.hpp"
 #include "ui/view/surface_format.hpp"
 
@@ -50,6 +57,8 @@ QString emptyProject() {
   return path;
 }
 
+QString q(const std::filesystem::path& p) { return QString::fromStdString(p.string()); }
+
 }  // namespace
 
 class GuiRegistrationDockTest : public QObject {
@@ -60,7 +69,8 @@ class GuiRegistrationDockTest : public QObject {
     test::showMainWindow(window_, QSize(1400, 900));
     if (QTest::currentTestFailed()) return;
     AppContext& app = window_->context();
-    scan_ = &app.scene.addDataset(test::roomScan(0.1, test::scanOffset(), "scan"));
+    // With timestamps (no effect on registration without scan poses): a trajectory can be attached.
+    scan_ = &app.scene.addDataset(test::withTimestamps(test::roomScan(0.1, test::scanOffset(), "scan")));
     reference_ = &app.scene.addDataset(test::roomScan(0.08, RigidTransform(), "reference"));
     RegistrationPanel& panel = *app.registration;
     panel.setSourceLayer(scan_);
@@ -86,6 +96,7 @@ class GuiRegistrationDockTest : public QObject {
     QTest::newRow("detect features") << "detectFeatures";
     QTest::newRow("register") << "register";
     QTest::newRow("colour by distance") << "colourByDistance";
+    QTest::newRow("attach trajectory") << "attachTrajectory";
   }
 
   // While a task runs, nothing the user can do removes or swaps the layers it works on; when
@@ -97,28 +108,47 @@ class GuiRegistrationDockTest : public QObject {
     RegistrationPanel& panel = *app.registration;
     QAction* remove = test::menuAction(*window_, "Edit", "Remove layer");
     QAction* open = test::menuAction(*window_, "File", "Open project...");
-    QVERIFY(remove && open);
+    QAction* undo = test::menuAction(*window_, "Edit", "Undo");
+    QAction* redo = test::menuAction(*window_, "Edit", "Redo");
+    QVERIFY(remove && open && undo && redo);
     app.layers.setCurrentLayer(scan_);
     QVERIFY(remove->isEnabled() && open->isEnabled());
+    // A history to step through: Undo would undo a transform, Redo would remove the scan again.
+    app.undo.push(new TransformCommand(app.scene, *reference_, RigidTransform(), RigidTransform(), "keep"));
+    remove->trigger();
+    undo->trigger();
+    QCOMPARE(app.scene.layers().size(), std::size_t{2});
+    QVERIFY(undo->isEnabled() && redo->isEnabled());
+    panel.setSourceLayer(scan_);
+    panel.setTargetLayer(reference_);
+    const int history = app.undo.index();
 
     const int done = startTask(button);
+    const bool dock = button != "attachTrajectory";  // attaching holds the scan only
     auto* source = panel.findChild<QComboBox*>("sourceLayer");
     auto* target = panel.findChild<QComboBox*>("targetLayer");
-    QVERIFY(!source->isEnabled() && !target->isEnabled());
+    QCOMPARE(!source->isEnabled() && !target->isEnabled(), dock);
     for (Layer* layer : {scan_, reference_}) {
       app.layers.setCurrentLayer(layer);
-      QVERIFY2(!remove->isEnabled(), qPrintable(layer->name()));
-      remove->trigger();
+      const bool held = dock || layer == scan_;
+      QVERIFY2(remove->isEnabled() == !held, qPrintable(layer->name()));
+      if (held) remove->trigger();
     }
-    QVERIFY(!open->isEnabled());
+    QVERIFY(!open->isEnabled() && !undo->isEnabled() && !redo->isEnabled());
     open->trigger();
+    redo->trigger();
+    undo->trigger();
     QCOMPARE(app.scene.layers().size(), std::size_t{2});
+    QCOMPARE(app.undo.index(), history);
 
     QVERIFY(waitForTask(done));
     QVERIFY2(lastOk_, qPrintable(app.log.toPlainText()));
     QVERIFY(source->isEnabled() && target->isEnabled());
-    QVERIFY(remove->isEnabled() && open->isEnabled());
+    QVERIFY(remove->isEnabled() && open->isEnabled() && undo->isEnabled());
+    QCOMPARE(redo->isEnabled(), app.undo.canRedo());
     QCOMPARE(panel.sourceLayer(), scan_);
+    if (button == "attachTrajectory")
+      QVERIFY(static_cast<DatasetLayer*>(scan_)->dataset().scans[0].cloud.hasSensorOrigins());
     if (button == "register") {
       // ICP put the scan back where the reference is; the reference did not move.
       QVERIFY(RigidTransform::translationError(layerTransform(*scan_), test::scanOffset().inverse()) < 0.01);
@@ -142,6 +172,40 @@ class GuiRegistrationDockTest : public QObject {
     QVERIFY(layerTransform(*reference_).isIdentity());
     QVERIFY(featureOverlay(*reference_) == nullptr);
     QVERIFY(!static_cast<DatasetLayer*>(reference_)->hasDistances());
+  }
+
+  // Exports and loads work on copies and hold no layer: the scan may be removed (and the
+  // removal undone) while they run, and their result is whole.
+  void aTaskOnACopyHoldsNoLayer_data() {
+    QTest::addColumn<QString>("button");
+    QTest::newRow("export") << "export";
+    QTest::newRow("load") << "load";
+  }
+  void aTaskOnACopyHoldsNoLayer() {
+    QFETCH(QString, button);
+    AppContext& app = window_->context();
+    QAction* remove = test::menuAction(*window_, "Edit", "Remove layer");
+    QAction* undo = test::menuAction(*window_, "Edit", "Undo");
+    QVERIFY(remove && undo);
+    const std::size_t points = static_cast<DatasetLayer*>(scan_)->dataset().pointCount();
+    const int done = startTask(button);
+    QVERIFY(!app.tasks.holdsLayers());
+    app.layers.setCurrentLayer(scan_);
+    QVERIFY(remove->isEnabled());
+    remove->trigger();
+    QCOMPARE(app.scene.layers().size(), std::size_t{1});
+    QVERIFY(undo->isEnabled());
+    QVERIFY(waitForTask(done));
+    QVERIFY2(lastOk_ && app.log.errorCount() == 0, qPrintable(app.log.toPlainText()));
+    if (button == "export") {
+      const LoadedData written = readFile(work_ / "exported.ply");
+      QCOMPARE(std::get<Dataset>(written).pointCount(), points);
+    } else {
+      QCOMPARE(app.scene.layers().size(), std::size_t{2});
+      QCOMPARE(app.scene.layers().back()->name(), QString("loaded.ply"));
+    }
+    undo->trigger();
+    QCOMPARE(app.scene.layers().front().get(), scan_);
   }
 
   // Whatever order the files come in, the dock proposes the scan as the source and the model
@@ -334,13 +398,30 @@ class GuiRegistrationDockTest : public QObject {
       if (l->text() == text) return l;
     return nullptr;
   }
-  /// Clicks the dock's `button`; returns how many results the panel reported before.
+  /// Clicks the dock's `button`, or starts "attachTrajectory" (to the scan), "export" (the scan)
+  /// or "load" (a copy of the scan as loaded.ply); returns how many results were reported before.
   int startTask(const QString& button) {
-    RegistrationPanel& panel = *window_->context().registration;
-    auto* b = panel.findChild<QPushButton*>(button);
-    if (!b || !b->isEnabled()) return -1;
+    AppContext& app = window_->context();
     const int before = finished_;
-    QTest::mouseClick(b, Qt::LeftButton);
+    const auto report = [this](bool ok) {
+      lastOk_ = ok;
+      ++finished_;
+    };
+    work_ = test::scratchDir("gui_registration_dock_tasks");
+    if (button == "attachTrajectory") {
+      auto& scan = static_cast<DatasetLayer&>(*scan_);
+      startAttachTrajectory(app, scan, q(test::writeRoomTrajectory(work_ / "trajectory.txt", scan.dataset().pointCount())),
+                            report);
+    } else if (button == "export") {
+      connect(exportRegisteredDataset(app, *scan_, q(work_ / "exported.ply")), &Task::finished, this, report);
+    } else if (button == "load") {
+      writeDataset(work_ / "loaded.ply", static_cast<DatasetLayer&>(*scan_).dataset());
+      loadFiles(app, {q(work_ / "loaded.ply")}, {}, [report](const QString&, bool ok) { report(ok); });
+    } else {
+      auto* b = app.registration->findChild<QPushButton*>(button);
+      if (!b || !b->isEnabled()) return -1;
+      QTest::mouseClick(b, Qt::LeftButton);
+    }
     return before;
   }
   bool waitForTask(int before) {
@@ -352,6 +433,7 @@ class GuiRegistrationDockTest : public QObject {
   }
 
   std::unique_ptr<MainWindow> window_;
+  std::filesystem::path work_;  ///< files of the task started last
   Layer* scan_ = nullptr;
   Layer* reference_ = nullptr;
   int finished_ = 0;

@@ -6,8 +6,10 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include "gui/menu_actions.hpp"
 #include "gui/open_window.hpp"
 #include "gui/room_scene.hpp"
+#include "ui/actions/remove_layer_command.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
 #include "ui/layers/model_layer.hpp"
@@ -152,6 +154,36 @@ class GuiRegistrationRunnerTest : public QObject {
     QCOMPARE(withdrawn.count(), 1);
     QVERIFY(!runner_->lastResult());
     QVERIFY(runner_->applied().layer() == nullptr && !runner_->applied().inEffect());
+  }
+
+  // Edit > Undo and Redo wait while its task holds the layers: Redo of "Remove scan" would take
+  // the scan away under the registration. Afterwards they step through the history again,
+  // the registration included.
+  void undoAndRedoWaitForItsTask() {
+    AppContext& app = window_->context();
+    QAction* undo = test::menuAction(*window_, "Edit", "Undo");
+    QAction* redo = test::menuAction(*window_, "Edit", "Redo");
+    QVERIFY(undo && redo);
+    app.undo.push(new RemoveLayerCommand(app.scene, *scan_));
+    app.undo.undo();
+    QVERIFY(!undo->isEnabled() && redo->isEnabled());
+    runner_->setInputs(scan_, reference_);
+    QSignalSpy finished(runner_.get(), &RegistrationRunner::registrationFinished);
+    QVERIFY(runner_->startRegistration(false));
+    QVERIFY(!redo->isEnabled());
+    redo->trigger();
+    QCOMPARE(app.scene.layers().size(), std::size_t{2});
+    QCOMPARE(app.undo.index(), 0);
+
+    QVERIFY(finished.wait(kTaskTimeoutMs));
+    QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(app.log.toPlainText()));
+    QCOMPARE(runner_->applied().layer(), scan_);
+    QVERIFY(undo->isEnabled() && !redo->isEnabled());  // the registration replaced the removal
+    undo->trigger();
+    QVERIFY(layerTransform(*scan_).isIdentity());
+    QVERIFY(redo->isEnabled());
+    redo->trigger();
+    QVERIFY(RigidTransform::translationError(layerTransform(*scan_), test::scanOffset().inverse()) < 0.01);
   }
 
  private:
