@@ -69,6 +69,10 @@ class DatasetLayer : public Layer {
   bool hasDistances() const { return has_distances_; }
   /// Drops the distances; the colour mode goes back to the one before them.
   void clearDistances();
+  /// The colour mode without the distances: style().mode, or the one before them.
+  PointColorMode modeWithoutDistances() const {
+    return style_.mode == PointColorMode::Distance ? mode_before_distances_ : style_.mode;
+  }
 
   /// Swaps in `with_origins`, the same points with per-point sensor origins interpolated from
   /// the trajectory file `path` (startAttachTrajectory): feature detection, registration and
