@@ -38,6 +38,7 @@
 #include "ui/registration/registration_panel.hpp"
 #include "ui/tasks/load_files.hpp"
 #include "ui/tasks/task_manager.hpp"
+#include "ui/view/empty_scene_hint.hpp"
 #include "ui/view/lod_controller.hpp"
 #include "ui/view/vtk_view_widget.hpp"
 
@@ -63,6 +64,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   context_->manual = new ManualAlignPanel(*context_, this);
   context_->measure = new MeasureTool(*context_, this);
   lod_ = new LodController(*view, *scene, this);
+  new EmptySceneHint(*scene, *view);
 
   connect(scene, &Scene::renderNeeded, view, &VtkViewWidget::requestRender);
   connect(tree, &LayerTreePanel::currentLayerChanged, properties, &PropertiesPanel::showLayer);
