@@ -10,6 +10,8 @@
 #include <QStatusBar>
 #include <QUndoStack>
 
+#include <tuple>
+
 #include "ui/actions/attach_trajectory_reaction.hpp"
 #include "ui/actions/export_cloud_reaction.hpp"
 #include "ui/actions/full_detail_reaction.hpp"
@@ -128,12 +130,13 @@ void MainWindow::createMenus() {
   new RecentFilesReaction(file->addMenu(tr("Recent files")), app);
   new AttachTrajectoryReaction(file->addAction(tr("Attach t&rajectory...")), app);
   file->addSeparator();
-  new OpenProjectReaction(file->addAction(tr("Open &project...")), app);
+  new OpenProjectReaction(file->addAction(tr("Open &project..."), QKeySequence("Ctrl+Shift+O")), app);
   new SaveProjectReaction(file->addAction(tr("Save project..."), QKeySequence::Save), app);
   file->addSeparator();
-  new ExportCloudReaction(file->addAction(tr("Export registered &cloud...")), app);
+  new ExportCloudReaction(file->addAction(tr("Export registered &cloud..."), QKeySequence("Ctrl+E")), app);
   new ExportTransformReaction(file->addAction(tr("Export &transform...")), app);
-  new ExportReportReaction(file->addAction(tr("Export registration &report...")), app);
+  new ExportReportReaction(
+      file->addAction(tr("Export registration &report..."), QKeySequence("Ctrl+Shift+E")), app);
   new ScreenshotReaction(file->addAction(tr("Export &screenshot...")), app);
   file->addSeparator();
   connect(file->addAction(tr("&Quit"), QKeySequence::Quit), &QAction::triggered, this,
@@ -151,25 +154,29 @@ void MainWindow::createMenus() {
 
   using Step = RegistrationStepReaction::Step;
   QMenu* reg = menuBar()->addMenu(tr("&Registration"));
-  const std::pair<QString, Step> steps[] = {{tr("&Detect features"), Step::DetectFeatures},
-                                            {tr("&Register"), Step::Register},
-                                            {tr("Colour by &distance"), Step::ColourByDistance},
-                                            {tr("&Accept result"), Step::Accept},
-                                            {tr("Re&vert result"), Step::Revert}};
-  for (const auto& [label, step] : steps) new RegistrationStepReaction(reg->addAction(label), app, step);
+  const std::tuple<QString, Step, const char*> steps[] = {
+      {tr("&Detect features"), Step::DetectFeatures, "Ctrl+D"},
+      {tr("&Register"), Step::Register, "Ctrl+R"},
+      {tr("Colour by &distance"), Step::ColourByDistance, "Ctrl+Shift+D"},
+      {tr("&Accept result"), Step::Accept, "Ctrl+Return"},
+      {tr("Re&vert result"), Step::Revert, "Ctrl+Backspace"}};
+  for (const auto& [label, step, key] : steps)
+    new RegistrationStepReaction(reg->addAction(label, QKeySequence(key)), app, step);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
-  const std::pair<QString, StandardView> views[] = {
-      {tr("&Top"), StandardView::Top},     {tr("&Front"), StandardView::Front},
-      {tr("&Side"), StandardView::Right},  {tr("&Back"), StandardView::Back},
-      {tr("&Iso"), StandardView::Iso}};
-  for (const auto& [label, v] : views) new StandardViewReaction(view->addAction(label), app, v);
+  // Ctrl+1..5: the standard views in menu order.
+  const std::tuple<QString, StandardView, const char*> views[] = {
+      {tr("&Top"), StandardView::Top, "Ctrl+1"},    {tr("&Front"), StandardView::Front, "Ctrl+2"},
+      {tr("&Side"), StandardView::Right, "Ctrl+3"}, {tr("&Back"), StandardView::Back, "Ctrl+4"},
+      {tr("&Iso"), StandardView::Iso, "Ctrl+5"}};
+  for (const auto& [label, v, key] : views)
+    new StandardViewReaction(view->addAction(label, QKeySequence(key)), app, v);
   view->addSeparator();
-  new ZoomToLayerReaction(view->addAction(tr("&Zoom to layer")), app);
-  new ResetCameraReaction(view->addAction(tr("&Reset camera")), app);
-  new MeasureReaction(view->addAction(tr("&Measure point / distance")), app);
-  new ProjectionReaction(view->addAction(tr("&Orthographic projection")), app);
-  new BlinkReaction(view->addAction(tr("&Blink before/after")), app);
+  new ZoomToLayerReaction(view->addAction(tr("&Zoom to layer"), QKeySequence("Ctrl+L")), app);
+  new ResetCameraReaction(view->addAction(tr("&Reset camera"), QKeySequence("Ctrl+0")), app);
+  new MeasureReaction(view->addAction(tr("&Measure point / distance")), app);  // M
+  new ProjectionReaction(view->addAction(tr("&Orthographic projection")), app);  // O
+  new BlinkReaction(view->addAction(tr("&Blink before/after")), app);  // B
   new FullDetailReaction(view->addAction(tr("Full detail when still (may be slow)")), app, *lod_);
   view->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());

@@ -1,5 +1,5 @@
 // What guides a user who has not read the manual (issue 17): the empty window says how to
-// start.
+// start, the common actions have keyboard shortcuts (none shared).
 #include <QAction>
 #include <QComboBox>
 #include <QHash>
@@ -30,6 +30,18 @@
 
 using namespace plumb;
 using namespace plumb::ui;
+
+namespace {
+
+/// Every action of the menu bar's menus and their submenus, with its menu path.
+void collectActions(QMenu& menu, const QString& path, QList<std::pair<QString, QAction*>>& out) {
+  for (QAction* a : menu.actions()) {
+    if (a->menu()) collectActions(*a->menu(), path + " > " + test::plainLabel(a->text()), out);
+    else if (!a->isSeparator()) out.append({path + " > " + test::plainLabel(a->text()), a});
+  }
+}
+
+}  // namespace
 
 class GuiGuidanceTest : public QObject {
   Q_OBJECT
@@ -65,6 +77,64 @@ class GuiGuidanceTest : public QObject {
     app.scene.addDataset(test::roomScan(0.2, RigidTransform(), "b"));
     app.scene.clear();
     QVERIFY(hint->isVisible());
+  }
+
+  // No two actions share a key; the common ones have one.
+  void shortcutsAreUniqueAndCoverTheCommonActions() {
+    QList<std::pair<QString, QAction*>> actions;
+    for (QAction* top : window_->menuBar()->actions())
+      if (top->menu()) collectActions(*top->menu(), test::plainLabel(top->text()), actions);
+    QVERIFY(actions.size() > 20);
+    QHash<QString, QString> owner;  // key -> action
+    for (const auto& [path, action] : actions)
+      for (const QKeySequence& key : action->shortcuts()) {
+        const QString text = key.toString(QKeySequence::PortableText);
+        QVERIFY2(!owner.contains(text), qPrintable(text + " is " + owner.value(text) + " and " + path));
+        owner.insert(text, path);
+      }
+    const std::pair<const char*, const char*> common[] = {
+        {"File", "Open..."}, {"File", "Open project..."}, {"File", "Save project..."},
+        {"File", "Export registered cloud..."}, {"File", "Export registration report..."},
+        {"Registration", "Detect features"}, {"Registration", "Register"},
+        {"Registration", "Accept result"}, {"Registration", "Revert result"},
+        {"View", "Top"}, {"View", "Front"}, {"View", "Side"}, {"View", "Iso"},
+        {"View", "Reset camera"}, {"View", "Zoom to layer"}, {"Help", "Getting started"}};
+    for (const auto& [menu, label] : common) {
+      QAction* a = test::menuAction(*window_, menu, label);
+      QVERIFY2(a && !a->shortcut().isEmpty(), label);
+    }
+  }
+
+  // Keys trigger their actions: Ctrl+1 looks down from the top, Ctrl+D detects features.
+  void shortcutsTriggerTheirActions() {
+    AppContext& app = window_->context();
+    Layer* scan = &app.scene.addDataset(test::roomScan(0.1, test::scanOffset(), "scan"));
+    Layer* reference = &app.scene.addDataset(test::roomScan(0.08, RigidTransform(), "reference"));
+    app.registration->setSourceLayer(scan);
+    app.registration->setTargetLayer(reference);
+    window_->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+
+    QAction* top = test::menuAction(*window_, "View", "Top");
+    QSignalSpy top_spy(top, &QAction::triggered);
+    QTest::keyClick(window_.get(), Qt::Key_1, Qt::ControlModifier);
+    QCOMPARE(top_spy.count(), 1);
+    double d[3];
+    app.view.renderer()->GetActiveCamera()->GetDirectionOfProjection(d);
+    QVERIFY2(d[2] < -0.99, qPrintable(QString::number(d[2])));
+
+    QAction* front = test::menuAction(*window_, "View", "Front");
+    QSignalSpy front_spy(front, &QAction::triggered);
+    QTest::keyClick(window_.get(), Qt::Key_2, Qt::ControlModifier);
+    QCOMPARE(front_spy.count(), 1);
+    app.view.renderer()->GetActiveCamera()->GetDirectionOfProjection(d);
+    QVERIFY(std::abs(d[2]) < 0.01);
+
+    QSignalSpy detected(app.registration, &RegistrationPanel::featuresDetected);
+    QTest::keyClick(window_.get(), Qt::Key_D, Qt::ControlModifier);
+    QVERIFY(detected.wait(120000));
+    QVERIFY2(detected.at(0).at(0).toBool(), qPrintable(app.log.toPlainText()));
+    QCOMPARE(top_spy.count(), 1);  // nothing else fired
   }
 
  private:
