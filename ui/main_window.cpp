@@ -83,6 +83,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   detail->setObjectName("detailLabel");
   statusBar()->addPermanentWidget(detail);
   connect(lod_, &LodController::detailTextChanged, detail, &QLabel::setText);
+  // A colour mode the data cannot show is said, not silently replaced.
+  connect(scene, &Scene::colourFallback, this, [this](const QString& message) {
+    context_->log.warning(message);
+    statusBar()->showMessage(message, 8000);
+  });
   connect(tasks, &TaskManager::taskFinished, this,
           [this](const QString& title, bool ok, const QString& message) {
             statusBar()->showMessage(ok ? tr("%1: done").arg(title)

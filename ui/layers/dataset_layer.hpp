@@ -95,6 +95,10 @@ class DatasetLayer : public Layer {
   /// The Scan colour of the first scan: scans are numbered across the scene (Scene::addDataset),
   /// so two single-scan datasets get two colours.
   void setFirstColourIndex(std::size_t first);
+  /// Why `style` is not drawn as asked (the scans lacking its data are drawn by elevation):
+  /// one message naming the layer, what is missing and the scans concerned; empty when every
+  /// scan shows it.
+  QString colourFallback(const PointStyle& style) const;
   /// Whether any scan has RGB colours / intensities (what the colour modes can show).
   bool hasColors() const;
   bool hasIntensity() const;

@@ -56,10 +56,17 @@ DatasetLayer& Scene::addDataset(std::shared_ptr<const Dataset> data, PreparedDat
       std::make_unique<DatasetLayer>(std::move(data), origin(), std::move(prepared)), nullptr));
   layer.setFirstColourIndex(next_scan_colour_);  // Scan colours: numbered across the scene
   next_scan_colour_ += scans;
+  tellColourFallback(layer, layer.style());
   return layer;
 }
 
+void Scene::tellColourFallback(const DatasetLayer& layer, const PointStyle& style) {
+  if (const QString why = layer.colourFallback(style); !why.isEmpty()) emit colourFallback(why);
+}
+
 void Scene::requestStyle(DatasetLayer& layer, const PointStyle& style) {
+  if (style.mode != layer.style().mode || style.scalar_field != layer.style().scalar_field)
+    tellColourFallback(layer, style);
   if (tasks_) {
     layer.requestStyle(style, *tasks_, [this] { emit renderNeeded(); });
   } else {

@@ -1,5 +1,7 @@
 // What guides a user who has not read the manual (issue 17): the empty window says how to
-// start, the common actions have keyboard shortcuts (none shared).
+// start, the common actions have keyboard shortcuts (none shared), and a colour mode the data
+// cannot show is greyed out in the style editor and said in the log instead of silently
+// replaced by elevation.
 #include <QAction>
 #include <QComboBox>
 #include <QHash>
@@ -39,6 +41,17 @@ void collectActions(QMenu& menu, const QString& path, QList<std::pair<QString, Q
     if (a->menu()) collectActions(*a->menu(), path + " > " + test::plainLabel(a->text()), out);
     else if (!a->isSeparator()) out.append({path + " > " + test::plainLabel(a->text()), a});
   }
+}
+
+/// A room scan of two scans, the second one with RGB colours.
+std::shared_ptr<const Dataset> halfColouredRoom() {
+  auto data = std::make_shared<Dataset>(*test::roomScan(0.2, RigidTransform(), "mixed"));
+  Scan coloured = data->scans.front();
+  coloured.name = "coloured";
+  coloured.cloud.colors.assign(coloured.cloud.size(), Rgb8{200, 40, 40});
+  data->scans.front().name = "grey";
+  data->scans.push_back(std::move(coloured));
+  return data;
 }
 
 }  // namespace
@@ -135,6 +148,38 @@ class GuiGuidanceTest : public QObject {
     QVERIFY(detected.wait(120000));
     QVERIFY2(detected.at(0).at(0).toBool(), qPrintable(app.log.toPlainText()));
     QCOMPARE(top_spy.count(), 1);  // nothing else fired
+  }
+
+  // RGB on a cloud without colours: greyed out with the reason; asked for anyway (a project,
+  // a script), the log names the layer and what it lacks. A dataset with colours in some scans
+  // only: RGB is offered, and the log names the scans drawn by elevation.
+  void colourModesTheDataCannotShowAreSaid() {
+    AppContext& app = window_->context();
+    auto& grey = app.scene.addDataset(test::roomScan(0.2, RigidTransform(), "grey"));
+    QCOMPARE(grey.style().mode, PointColorMode::Elevation);
+    app.layers.setCurrentLayer(&grey);
+    auto* mode = window_->findChild<QComboBox*>("colorMode");
+    QVERIFY(mode);
+    auto* items = qobject_cast<QStandardItemModel*>(mode->model());
+    QStandardItem* rgb = items->item(int(PointColorMode::Rgb));
+    QVERIFY(!rgb->isEnabled());
+    QVERIFY(rgb->toolTip().contains("no RGB"));
+    QVERIFY(!items->item(int(PointColorMode::Intensity))->isEnabled());
+    QVERIFY(items->item(int(PointColorMode::Elevation))->isEnabled());
+    QVERIFY(!app.log.toPlainText().contains("coloured by elevation"));
+
+    app.scene.requestStyle(grey, PointStyle{PointColorMode::Rgb, "", 2.0});
+    QVERIFY2(app.log.toPlainText().contains("grey.ply has no RGB colours: coloured by elevation instead"),
+             qPrintable(app.log.toPlainText()));
+    app.scene.requestStyle(grey, PointStyle{PointColorMode::Intensity, "", 2.0});
+    QVERIFY(app.log.toPlainText().contains("grey.ply has no intensities"));
+
+    auto& mixed = app.scene.addDataset(halfColouredRoom());
+    QCOMPARE(mixed.style().mode, PointColorMode::Rgb);
+    QVERIFY2(app.log.toPlainText().contains("mixed.ply: scan(s) grey have no RGB colours"),
+             qPrintable(app.log.toPlainText()));
+    app.layers.setCurrentLayer(&mixed);
+    QVERIFY(items->item(int(PointColorMode::Rgb))->isEnabled());
   }
 
  private:
