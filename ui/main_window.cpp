@@ -10,6 +10,8 @@
 #include <QStatusBar>
 #include <QUndoStack>
 
+#include <tuple>
+
 #include "ui/actions/attach_trajectory_reaction.hpp"
 #include "ui/actions/colour_by_dataset_reaction.hpp"
 #include "ui/actions/export_cloud_reaction.hpp"
@@ -40,6 +42,7 @@
 #include "ui/registration/registration_panel.hpp"
 #include "ui/tasks/load_files.hpp"
 #include "ui/tasks/task_manager.hpp"
+#include "ui/view/empty_scene_hint.hpp"
 #include "ui/view/lod_controller.hpp"
 #include "ui/view/scene_legend.hpp"
 #include "ui/view/vtk_view_widget.hpp"
@@ -67,6 +70,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   context_->measure = new MeasureTool(*context_, this);
   lod_ = new LodController(*view, *scene, this);
   new SceneLegend(*scene, view->renderer(), this);  // datasets / scans by colour, in the view
+  new EmptySceneHint(*scene, *view);
 
   connect(scene, &Scene::renderNeeded, view, &VtkViewWidget::requestRender);
   connect(tree, &LayerTreePanel::currentLayerChanged, properties, &PropertiesPanel::showLayer);
@@ -83,6 +87,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   detail->setObjectName("detailLabel");
   statusBar()->addPermanentWidget(detail);
   connect(lod_, &LodController::detailTextChanged, detail, &QLabel::setText);
+  // A colour mode the data cannot show is said, not silently replaced.
+  connect(scene, &Scene::colourFallback, this, [this](const QString& message) {
+    context_->log.warning(message);
+    statusBar()->showMessage(message, 8000);
+  });
   connect(tasks, &TaskManager::taskFinished, this,
           [this](const QString& title, bool ok, const QString& message) {
             statusBar()->showMessage(ok ? tr("%1: done").arg(title)
@@ -130,12 +139,13 @@ void MainWindow::createMenus() {
   new RecentFilesReaction(file->addMenu(tr("Recent files")), app);
   new AttachTrajectoryReaction(file->addAction(tr("Attach t&rajectory...")), app);
   file->addSeparator();
-  new OpenProjectReaction(file->addAction(tr("Open &project...")), app);
+  new OpenProjectReaction(file->addAction(tr("Open &project..."), QKeySequence("Ctrl+Shift+O")), app);
   new SaveProjectReaction(file->addAction(tr("Save project..."), QKeySequence::Save), app);
   file->addSeparator();
-  new ExportCloudReaction(file->addAction(tr("Export registered &cloud...")), app);
+  new ExportCloudReaction(file->addAction(tr("Export registered &cloud..."), QKeySequence("Ctrl+E")), app);
   new ExportTransformReaction(file->addAction(tr("Export &transform...")), app);
-  new ExportReportReaction(file->addAction(tr("Export registration &report...")), app);
+  new ExportReportReaction(
+      file->addAction(tr("Export registration &report..."), QKeySequence("Ctrl+Shift+E")), app);
   new ScreenshotReaction(file->addAction(tr("Export &screenshot...")), app);
   file->addSeparator();
   connect(file->addAction(tr("&Quit"), QKeySequence::Quit), &QAction::triggered, this,
@@ -149,26 +159,30 @@ void MainWindow::createMenus() {
 
   using Step = RegistrationStepReaction::Step;
   QMenu* reg = menuBar()->addMenu(tr("&Registration"));
-  const std::pair<QString, Step> steps[] = {{tr("&Detect features"), Step::DetectFeatures},
-                                            {tr("&Register"), Step::Register},
-                                            {tr("Colour by &distance"), Step::ColourByDistance},
-                                            {tr("&Accept result"), Step::Accept},
-                                            {tr("Re&vert result"), Step::Revert}};
-  for (const auto& [label, step] : steps) new RegistrationStepReaction(reg->addAction(label), app, step);
+  const std::tuple<QString, Step, const char*> steps[] = {
+      {tr("&Detect features"), Step::DetectFeatures, "Ctrl+D"},
+      {tr("&Register"), Step::Register, "Ctrl+R"},
+      {tr("Colour by &distance"), Step::ColourByDistance, "Ctrl+Shift+D"},
+      {tr("&Accept result"), Step::Accept, "Ctrl+Return"},
+      {tr("Re&vert result"), Step::Revert, "Ctrl+Backspace"}};
+  for (const auto& [label, step, key] : steps)
+    new RegistrationStepReaction(reg->addAction(label, QKeySequence(key)), app, step);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
-  const std::pair<QString, StandardView> views[] = {
-      {tr("&Top"), StandardView::Top},     {tr("&Front"), StandardView::Front},
-      {tr("&Side"), StandardView::Right},  {tr("&Back"), StandardView::Back},
-      {tr("&Iso"), StandardView::Iso}};
-  for (const auto& [label, v] : views) new StandardViewReaction(view->addAction(label), app, v);
+  // Ctrl+1..5: the standard views in menu order.
+  const std::tuple<QString, StandardView, const char*> views[] = {
+      {tr("&Top"), StandardView::Top, "Ctrl+1"},    {tr("&Front"), StandardView::Front, "Ctrl+2"},
+      {tr("&Side"), StandardView::Right, "Ctrl+3"}, {tr("&Back"), StandardView::Back, "Ctrl+4"},
+      {tr("&Iso"), StandardView::Iso, "Ctrl+5"}};
+  for (const auto& [label, v, key] : views)
+    new StandardViewReaction(view->addAction(label, QKeySequence(key)), app, v);
   view->addSeparator();
-  new ZoomToLayerReaction(view->addAction(tr("&Zoom to layer")), app);
-  new ResetCameraReaction(view->addAction(tr("&Reset camera")), app);
-  new MeasureReaction(view->addAction(tr("&Measure point / distance")), app);
-  new ProjectionReaction(view->addAction(tr("&Orthographic projection")), app);
-  new BlinkReaction(view->addAction(tr("&Blink before/after")), app);
-  new ColourByDatasetReaction(view->addAction(tr("&Colour by dataset")), app);
+  new ZoomToLayerReaction(view->addAction(tr("&Zoom to layer"), QKeySequence("Ctrl+L")), app);
+  new ResetCameraReaction(view->addAction(tr("&Reset camera"), QKeySequence("Ctrl+0")), app);
+  new MeasureReaction(view->addAction(tr("&Measure point / distance")), app);  // M
+  new ProjectionReaction(view->addAction(tr("&Orthographic projection")), app);  // O
+  new BlinkReaction(view->addAction(tr("&Blink before/after")), app);  // B
+  new ColourByDatasetReaction(view->addAction(tr("&Colour by dataset")), app);  // D
   new FullDetailReaction(view->addAction(tr("Full detail when still (may be slow)")), app, *lod_);
   view->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());

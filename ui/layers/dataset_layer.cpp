@@ -1,6 +1,7 @@
 #include "ui/layers/dataset_layer.hpp"
 
 #include <QFileInfo>
+#include <QStringList>
 
 #include <algorithm>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 
 #include "ui/layers/color_ramp.hpp"
 #include "ui/layers/feature_layer.hpp"
+#include "ui/layers/point_coloring.hpp"
 #include "ui/layers/render_frame.hpp"
 #include "ui/layers/scan_layer.hpp"
 #include "ui/tasks/task_manager.hpp"
@@ -210,6 +212,23 @@ void DatasetLayer::setColourIndices(std::size_t first_scan, std::size_t dataset)
 }
 
 Rgb8 DatasetLayer::datasetColour() const { return categoryColor(dataset_colour_index_); }
+
+QString DatasetLayer::colourFallback(const PointStyle& style) const {
+  std::string missing;
+  QStringList scans;
+  for (const Scan& scan : data_->scans) {
+    const std::string lack = missingColourData(scan.cloud, style);
+    if (lack.empty()) continue;
+    missing = lack;
+    scans << QString::fromStdString(scan.name);
+  }
+  if (scans.isEmpty()) return {};
+  const QString what = QString::fromStdString(missing);
+  if (scans.size() == qsizetype(data_->scans.size()))
+    return QObject::tr("%1 has no %2: coloured by elevation instead").arg(name(), what);
+  return QObject::tr("%1: scan(s) %2 have no %3: those are coloured by elevation instead")
+      .arg(name(), scans.join(", "), what);
+}
 
 bool DatasetLayer::hasColors() const { return anyScanHasColors(*data_); }
 

@@ -69,6 +69,10 @@ class DatasetLayer : public Layer {
   bool hasDistances() const { return has_distances_; }
   /// Drops the distances; the colour mode goes back to the one before them.
   void clearDistances();
+  /// The colour mode without the distances: style().mode, or the one before them.
+  PointColorMode modeWithoutDistances() const {
+    return style_.mode == PointColorMode::Distance ? mode_before_distances_ : style_.mode;
+  }
 
   /// Swaps in `with_origins`, the same points with per-point sensor origins interpolated from
   /// the trajectory file `path` (startAttachTrajectory): feature detection, registration and
@@ -94,6 +98,10 @@ class DatasetLayer : public Layer {
   void setColourIndices(std::size_t first_scan, std::size_t dataset);
   /// The Dataset colour mode's colour of this dataset.
   Rgb8 datasetColour() const;
+  /// Why `style` is not drawn as asked (the scans lacking its data are drawn by elevation):
+  /// one message naming the layer, what is missing and the scans concerned; empty when every
+  /// scan shows it.
+  QString colourFallback(const PointStyle& style) const;
   /// Whether any scan has RGB colours / intensities (what the colour modes can show).
   bool hasColors() const;
   bool hasIntensity() const;

@@ -24,6 +24,16 @@ PointColorMode effectiveMode(const PointCloud& cloud, const PointStyle& style) {
   }
 }
 
+std::string missingColourData(const PointCloud& cloud, const PointStyle& style) {
+  if (effectiveMode(cloud, style) == style.mode) return {};
+  switch (style.mode) {
+    case PointColorMode::Rgb: return "RGB colours";
+    case PointColorMode::Intensity: return "intensities";
+    case PointColorMode::ScalarField: return "the scalar field '" + style.scalar_field + "'";
+    default: return {};
+  }
+}
+
 namespace {
 
 /// out[i] = color(i) for every i, in parallel (each element on its own: deterministic).

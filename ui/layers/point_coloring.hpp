@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 
 #include <span>
+#include <string>
 
 #include "model/point_cloud.hpp"
 #include "ui/layers/color_ramp.hpp"
@@ -27,6 +28,10 @@ struct PointColoring {
 /// Mode actually used: RGB without colours, intensity without intensity, or a missing scalar
 /// field fall back to elevation.
 PointColorMode effectiveMode(const PointCloud& cloud, const PointStyle& style);
+/// What `cloud` lacks for `style` when effectiveMode falls back ("RGB colours",
+/// "intensities", "the scalar field 'x'"); empty when it shows the style as asked (the
+/// Distance mode is the layer's business, not judged here).
+std::string missingColourData(const PointCloud& cloud, const PointStyle& style);
 /// Writes one colour per point of `cloud` into `out` (out.size() == cloud.size()).
 /// Distance colours: the distance ramp over [0, max_distance]; NaN (no match) light grey.
 void fillDistanceColors(std::span<const float> distances, double max_distance, std::span<Rgb> out);

@@ -57,10 +57,17 @@ DatasetLayer& Scene::addDataset(std::shared_ptr<const Dataset> data, PreparedDat
   // Scan and Dataset colours: numbered across the scene, never reused.
   layer.setColourIndices(next_scan_colour_, next_dataset_colour_++);
   next_scan_colour_ += scans;
+  tellColourFallback(layer, layer.style());
   return layer;
 }
 
+void Scene::tellColourFallback(const DatasetLayer& layer, const PointStyle& style) {
+  if (const QString why = layer.colourFallback(style); !why.isEmpty()) emit colourFallback(why);
+}
+
 void Scene::requestStyle(DatasetLayer& layer, const PointStyle& style) {
+  if (style.mode != layer.style().mode || style.scalar_field != layer.style().scalar_field)
+    tellColourFallback(layer, style);
   if (tasks_) {
     layer.requestStyle(style, *tasks_, [this] { emit renderNeeded(); });
   } else {

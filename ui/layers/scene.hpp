@@ -115,6 +115,9 @@ class Scene : public QObject {
   void layersChanged();
   /// A layer's appearance changed: the view must render.
   void renderNeeded();
+  /// A dataset added or restyled is not drawn as its style asks on some scans (they lack
+  /// its data and are drawn by elevation): DatasetLayer::colourFallback's message.
+  void colourFallback(const QString& message);
 
  private:
   void ensureOrigin(const Bounds& b);
@@ -122,6 +125,8 @@ class Scene : public QObject {
   void addProps(Layer& layer);
   void removeProps(Layer& layer);
   Layer& adopt(std::unique_ptr<Layer> layer, Layer* parent);
+  /// Emits colourFallback when `layer` cannot show `style` as asked.
+  void tellColourFallback(const DatasetLayer& layer, const PointStyle& style);
 
   vtkSmartPointer<vtkRenderer> renderer_;  ///< shared with the view
   std::vector<std::unique_ptr<Layer>> layers_;

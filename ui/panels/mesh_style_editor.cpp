@@ -6,6 +6,7 @@
 
 #include "ui/layers/model_layer.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/panels/focus_wheel.hpp"
 
 namespace plumb::ui {
 
@@ -13,12 +14,13 @@ MeshStyleEditor::MeshStyleEditor(Scene& scene, QWidget* parent)
     : QWidget(parent),
       scene_(scene),
       edges_(new QCheckBox(tr("Show edges"), this)),
-      opacity_(new QSlider(Qt::Horizontal, this)) {
+      opacity_(new FocusWheel<QSlider>(this)) {  // the wheel only once clicked in
   auto* form = new QFormLayout(this);
   form->setContentsMargins(0, 0, 0, 0);
   edges_->setObjectName("meshEdges");
   form->addRow(edges_);
   opacity_->setObjectName("meshOpacity");
+  opacity_->setOrientation(Qt::Horizontal);
   opacity_->setRange(5, 100);
   opacity_->setToolTip(tr("Opacity (%)"));
   form->addRow(tr("Opacity"), opacity_);

@@ -8,15 +8,17 @@
 
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/panels/focus_wheel.hpp"
 
 namespace plumb::ui {
 
 PointStyleEditor::PointStyleEditor(Scene& scene, QWidget* parent)
     : QWidget(parent),
       scene_(scene),
-      mode_(new QComboBox(this)),
-      field_(new QComboBox(this)),
-      size_(new QDoubleSpinBox(this)),
+      // The wheel over the Properties dock scrolls past these unless the user clicked in.
+      mode_(new FocusWheel<QComboBox>(this)),
+      field_(new FocusWheel<QComboBox>(this)),
+      size_(new FocusWheel<QDoubleSpinBox>(this)),
       registered_(new QCheckBox(tr("Show registered position"), this)) {
   auto* form = new QFormLayout(this);
   form->setContentsMargins(0, 0, 0, 0);

@@ -13,14 +13,19 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "features/export/feature_export.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "ui/app_context.hpp"
 #include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/feature_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
+#include "ui/project/feature_sidecar.hpp"
+#include "ui/project/layer_style_json.hpp"
 #include "ui/tasks/attach_trajectory.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/registration/registration_panel.hpp"
+#include "ui/registration/registration_tasks.hpp"
 #include "ui/tasks/load_files.hpp"
 #include "ui/tasks/task_manager.hpp"
 
@@ -48,33 +53,55 @@ void showProjectInTitle(QMainWindow& window, const QString& path) {
   window.setWindowFilePath(path);
 }
 
+namespace {
+
+/// The project's entry for layer `l`, the `index`th: file, visibility, transform, trajectory,
+/// style and (in the feature folder, listed in `feature_files`) its detected features.
+json layerEntry(const Layer& l, std::size_t index, const QString& project, const QDir& dir,
+                QStringList& feature_files) {
+  json e;
+  e["file"] = projectPath(dir, layerSource(l));
+  e["visible"] = l.visible();
+  e["transform"] = json::parse(transformToJson(layerTransform(l)));
+  if (l.kind() == LayerKind::Dataset) {
+    const QString& trajectory = static_cast<const DatasetLayer&>(l).trajectoryPath();
+    if (!trajectory.isEmpty()) e["trajectory"] = projectPath(dir, trajectory);
+  }
+  e["style"] = styleToJson(l);
+  if (const Layer* overlay = featureOverlay(l)) {
+    const auto& features = static_cast<const FeatureLayer*>(overlay)->features();
+    feature_files << writeLayerFeatures(project, index, features);
+    e["features"] = projectPath(dir, feature_files.back());
+  }
+  return e;
+}
+
+}  // namespace
+
 void saveProject(const AppContext& app, const QString& path) {
   const QDir dir = QFileInfo(path).absoluteDir();
   json layers = json::array();
+  QStringList feature_files;
   int source = -1, target = -1;
   for (const auto& l : app.scene.layers()) {
     if (!isRegistrable(l.get())) continue;
-    const QString file = layerSource(*l);
-    if (file.isEmpty()) continue;  // generated data has no file to reopen
-    json e;
-    e["file"] = projectPath(dir, file);
-    e["visible"] = l->visible();
-    e["transform"] = json::parse(transformToJson(layerTransform(*l)));
-    if (l->kind() == LayerKind::Dataset) {
-      const QString& trajectory = static_cast<const DatasetLayer&>(*l).trajectoryPath();
-      if (!trajectory.isEmpty()) e["trajectory"] = projectPath(dir, trajectory);
-    }
+    if (layerSource(*l).isEmpty()) continue;  // generated data has no file to reopen
     if (app.registration && l.get() == app.registration->sourceLayer()) source = int(layers.size());
     if (app.registration && l.get() == app.registration->targetLayer()) target = int(layers.size());
-    layers.push_back(e);
+    layers.push_back(layerEntry(*l, layers.size(), path, dir, feature_files));
   }
+  removeStaleFeatureFiles(path, feature_files);
   json j;
   j["plumb-project"] = kProjectVersion;
   j["layers"] = layers;
-  if (app.registration)
+  if (app.registration) {
     j["registration"] = {{"source", source},
                          {"target", target},
                          {"params", pipelineParamsToJson(app.registration->params())}};
+    // Only features up to date for this source, target and parameters are marked so.
+    const std::string detected_with = app.registration->featuresDetectedWith();
+    if (!detected_with.empty()) j["registration"]["features-detected-with"] = json::parse(detected_with);
+  }
   writeFileAtomically(path.toStdString(), [&](std::ostream& out) { out << j.dump(2) << "\n"; });
   showProjectInTitle(app.window, path);
 }
@@ -86,6 +113,15 @@ struct Entry {
   RigidTransform transform;
   bool visible = true;
   QString trajectory;  ///< attached to a mobile scan (empty: none)
+  SavedStyle style;
+  std::shared_ptr<const FeatureSet> features;  ///< detected, data frame (nullptr: none)
+};
+
+/// The source and target entries of the project's registration (-1: none) and the extraction
+/// parameters their saved features were detected with (JSON text; empty: not up to date).
+struct RegistrationSetup {
+  int source = -1, target = -1;
+  std::string features_detected_with;
 };
 
 json readJson(const QString& path) {
@@ -130,15 +166,27 @@ Entry readEntry(const json& e, std::size_t i, const QDir& dir, const std::string
       throw FileError(file, where + ".transform: " + ex.what());
     }
   }
+  if (e.contains("style") && !e.at("style").is_null()) {
+    try {
+      entry.style = styleFromJson(e.at("style"));
+    } catch (const std::exception& ex) {
+      throw FileError(file, where + "." + ex.what());
+    }
+  }
+  if (e.contains("features")) {
+    if (!e.at("features").is_string()) throw FileError(file, where + ".features must be a string");
+    const QString features = dir.absoluteFilePath(QString::fromStdString(e.at("features").get<std::string>()));
+    entry.features = std::make_shared<const FeatureSet>(readFeatureSetJson(features.toStdString()));
+  }
   return entry;
 }
 
-/// The source and target layer indices of the project's registration (-1: none); its
-/// parameters go to the Registration dock at once.
-std::pair<int, int> readRegistration(AppContext& app, const json& j, const std::string& file) {
-  if (!j.contains("registration") || !app.registration) return {-1, -1};
+/// The project's registration setup; its parameters go to the Registration dock at once.
+RegistrationSetup readRegistration(AppContext& app, const json& j, const std::string& file) {
+  if (!j.contains("registration") || !app.registration) return {};
   const json& r = j.at("registration");
-  const std::pair<int, int> layers{r.value("source", -1), r.value("target", -1)};
+  RegistrationSetup setup{r.value("source", -1), r.value("target", -1), {}};
+  if (r.contains("features-detected-with")) setup.features_detected_with = r.at("features-detected-with").dump();
   if (r.contains("params")) {
     PipelineParams p;
     try {
@@ -149,7 +197,19 @@ std::pair<int, int> readRegistration(AppContext& app, const json& j, const std::
     app.registration->params() = p;
     app.registration->refreshParams();
   }
-  return layers;
+  return setup;
+}
+
+/// Gives a loaded layer what its entry saved besides the file: transform, visibility, style,
+/// features.
+void restoreLayer(AppContext& app, Layer& layer, const Entry& entry) {
+  setLayerTransform(app.scene, layer, entry.transform);
+  layer.setVisible(entry.visible);
+  applySavedStyle(app.scene, layer, entry.style);
+  if (entry.features) {
+    FeatureLayer& overlay = app.scene.addFeatures(QObject::tr("features"), entry.features, &layer);
+    overlay.setTransform(layerTransform(layer));
+  }
 }
 
 /// Loads the entries' files; each layer gets its entry's transform, visibility and trajectory.
@@ -174,8 +234,7 @@ void loadEntries(AppContext& app, std::shared_ptr<const std::vector<Entry>> entr
         for (std::size_t i = 0; i < entries->size(); ++i)
           if (const Entry& entry = (*entries)[i]; entry.file == p && !(*layers)[i]) {
             (*layers)[i] = &layer;
-            setLayerTransform(app.scene, layer, entry.transform);
-            layer.setVisible(entry.visible);
+            restoreLayer(app, layer, entry);
             if (!entry.trajectory.isEmpty() && layer.kind() == LayerKind::Dataset) {
               ++*remaining;
               startAttachTrajectory(app, static_cast<DatasetLayer&>(layer), entry.trajectory, step);
@@ -198,16 +257,18 @@ void openProject(AppContext& app, const QString& path, ProjectDone done) {
   const QDir dir = QFileInfo(path).absoluteDir();
   auto entries = std::make_shared<std::vector<Entry>>();
   for (std::size_t i = 0; i < j.at("layers").size(); ++i) entries->push_back(readEntry(j.at("layers")[i], i, dir, file));
-  const auto [source, target] = readRegistration(app, j, file);
+  const RegistrationSetup setup = readRegistration(app, j, file);
   app.undo.clear();
   app.scene.clear();
   showProjectInTitle(app.window, path);
   app.log.info(QObject::tr("Opening project %1 (%2 files)").arg(path).arg(qsizetype(entries->size())));
-  loadEntries(app, entries, [&app, source, target, done](bool ok, const std::vector<Layer*>& layers) {
+  loadEntries(app, entries, [&app, setup, done](bool ok, const std::vector<Layer*>& layers) {
     if (app.registration) {
       auto at = [&layers](int i) { return i >= 0 && std::size_t(i) < layers.size() ? layers[std::size_t(i)] : nullptr; };
-      if (Layer* s = at(source)) app.registration->setSourceLayer(s);
-      if (Layer* t = at(target)) app.registration->setTargetLayer(t);
+      if (Layer* s = at(setup.source)) app.registration->setSourceLayer(s);
+      if (Layer* t = at(setup.target)) app.registration->setTargetLayer(t);
+      if (!setup.features_detected_with.empty())
+        app.registration->adoptShownFeatures(setup.features_detected_with);
     }
     if (done) done(ok, layers);
   });

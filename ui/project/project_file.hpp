@@ -1,11 +1,17 @@
 #pragma once
 // Plumb project files (*.plumb.json): the layers with their file paths (relative to the project
 // file when below it), transforms and visibility, and the registration setup (source, target,
-// every parameter through the core's param groups). Example:
+// every parameter through the core's param groups), each layer's style and its detected
+// features (files in "<project>.features/", see feature_sidecar.hpp). Example:
 //   {"plumb-project": 1,
-//    "layers": [{"file": "indoor.e57", "visible": true, "transform": {"matrix": [[...]]}},
+//    "layers": [{"file": "indoor.e57", "visible": true, "transform": {"matrix": [[...]]},
+//                "style": {"colour": "Elevation", "scalar-field": "", "point-size": 2},
+//                "features": "site.plumb.json.features/0.json"},
 //               {"file": "mms.las", "trajectory": "mms_trajectory.txt", ...}, ...],
-//    "registration": {"source": 0, "target": 1, "params": {"method": "auto", ...}}}
+//    "registration": {"source": 0, "target": 1, "params": {"method": "auto", ...},
+//                     "features-detected-with": {"plane-extraction": {...}, ...}}}
+// "features-detected-with" is written only when the features shown on the source and target
+// were detected for them with the current parameters; reopened, they are up to date again.
 #include <QString>
 
 #include <functional>

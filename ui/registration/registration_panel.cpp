@@ -177,8 +177,19 @@ void RegistrationPanel::updateEnabled() {
   updateFeaturesState();
 }
 
+std::string RegistrationPanel::featuresDetectedWith() const { return runner_->featuresDetectedWith(); }
+
+void RegistrationPanel::adoptShownFeatures(const std::string& params) {
+  runner_->adoptShownFeatures(params);
+  updateFeaturesState();
+}
+
+bool RegistrationPanel::featuresOutOfDate() const {
+  return runner_->featuresShown() && !runner_->featuresUpToDate();
+}
+
 void RegistrationPanel::updateFeaturesState() {
-  if (runner_->featuresShown() && !runner_->featuresUpToDate()) {
+  if (featuresOutOfDate()) {
     use_features_->setText(tr("Use detected features (out of date: detect again)"));
     use_features_->setToolTip(tr("The features shown were detected with other parameters or "
                                  "layers: registering extracts them again"));

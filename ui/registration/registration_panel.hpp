@@ -51,6 +51,13 @@ class RegistrationPanel : public QWidget {
   void setTargetLayer(const Layer* layer);
   void setMethod(RegistrationMethod method);
 
+  /// RegistrationRunner::featuresDetectedWith / adoptShownFeatures (project files); adopting
+  /// updates "Use detected features".
+  std::string featuresDetectedWith() const;
+  void adoptShownFeatures(const std::string& params);
+  /// The features shown are out of date ("Use detected features" would extract them again).
+  bool featuresOutOfDate() const;
+
   /// Start the background work; false (and a log message) when the inputs are not valid.
   bool detectFeatures();
   bool startRegistration();

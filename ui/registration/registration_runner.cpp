@@ -49,6 +49,14 @@ bool RegistrationRunner::featuresUpToDate() const {
          features_.params == extractionParams(params_);
 }
 
+std::string RegistrationRunner::featuresDetectedWith() const {
+  return featuresUpToDate() ? features_.params : std::string();
+}
+
+void RegistrationRunner::adoptShownFeatures(const std::string& params) {
+  if (featuresShown()) features_ = {source_, target_, params};
+}
+
 bool RegistrationRunner::checkInputs(Layer*& source, Layer*& target) {
   source = this->source();
   target = this->target();

@@ -60,6 +60,12 @@ class RegistrationRunner : public QObject {
   /// ... and they were detected here for these two layers with the current extraction
   /// parameters.
   bool featuresUpToDate() const;
+  /// The extraction parameters (JSON text) the features shown were detected with, when they
+  /// are up to date; empty otherwise (what a project records).
+  std::string featuresDetectedWith() const;
+  /// The features shown on both inputs were detected for them with `params` (JSON text of
+  /// featuresDetectedWith, e.g. read back from a project). Nothing when they show none.
+  void adoptShownFeatures(const std::string& params);
 
   /// The last result (nullptr: none yet, or withdrawn with its layer).
   std::shared_ptr<const PipelineResult> lastResult() const { return result_; }

@@ -30,7 +30,7 @@ const json& member(const json& j, const char* key, const std::string& where) {
 
 }  // namespace
 
-json featureSetToJson(const FeatureSet& fs) {
+json featureSetToJson(const FeatureSet& fs, bool with_inliers) {
   json planes = json::array();
   for (const auto& p : fs.planes) {
     json rings = json::array();
@@ -45,6 +45,7 @@ json featureSetToJson(const FeatureSet& fs) {
                       {"area", p.area},
                       {"centroid", vec(p.centroid)},
                       {"rings", std::move(rings)}});
+    if (with_inliers) planes.back()["inliers"] = p.inliers;
   }
   json openings = json::array();
   for (const auto& o : fs.openings) {
@@ -84,6 +85,7 @@ FeatureSet featureSetFromJson(const json& j) {
           for (const auto& jv : jr) ring.push_back(p.to2d(toVec(jv, where + ".rings")));
           p.rings.push_back(std::move(ring));
         }
+      if (jp.contains("inliers")) p.inliers = jp.at("inliers").get<std::vector<std::uint32_t>>();
       fs.planes.push_back(std::move(p));
     }
   }
@@ -115,8 +117,10 @@ FeatureSet featureSetFromJson(const json& j) {
   return fs;
 }
 
-void writeFeatureSetJson(const std::filesystem::path& path, const FeatureSet& features) {
-  const std::string text = featureSetToJson(features).dump(1);
+void writeFeatureSetJson(const std::filesystem::path& path, const FeatureSet& features,
+                         bool with_inliers) {
+  const json j = featureSetToJson(features, with_inliers);
+  const std::string text = with_inliers ? j.dump() : j.dump(1);
   writeFileAtomically(path, [&](std::ostream& out) { out << text << '\n'; });
 }
 

@@ -7,6 +7,8 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QSlider>
 #include <QUndoStack>
 #include <QLabel>
 #include <QPushButton>
@@ -382,6 +384,46 @@ class GuiRegistrationDockTest : public QObject {
     QCOMPARE(panel.params().plane_extraction.max_planes, defaults);
     QVERIFY(!label->font().bold());
     QVERIFY(!reset->isEnabled());
+  }
+
+  // The same in the Properties dock's style editors: colour mode, point size and a model's
+  // opacity change by wheel only once clicked into.
+  void theWheelChangesOnlyFocusedStyleEditors() {
+    AppContext& app = window_->context();
+    app.layers.setCurrentLayer(scan_);
+    auto* mode = window_->findChild<QComboBox*>("colorMode");
+    auto* size = window_->findChild<QDoubleSpinBox*>("pointSize");
+    QVERIFY(mode && size && size->isVisible());
+    const int mode_index = mode->currentIndex();
+    const double point_size = size->value();
+    QVERIFY(!mode->hasFocus() && !size->hasFocus());
+    wheel(mode, -1);
+    wheel(size, 2);
+    QCOMPARE(mode->currentIndex(), mode_index);
+    QCOMPARE(size->value(), point_size);
+    QCOMPARE(static_cast<DatasetLayer*>(scan_)->style().point_size, point_size);
+
+    window_->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window_.get()));
+    size->setFocus(Qt::MouseFocusReason);
+    QTRY_VERIFY(size->hasFocus());
+    wheel(size, 2);
+    QVERIFY(size->value() > point_size);
+    QCOMPARE(static_cast<DatasetLayer*>(scan_)->style().point_size, size->value());
+
+    auto* model = &app.scene.addModel(test::roomModel());
+    app.layers.setCurrentLayer(model);
+    auto* opacity = window_->findChild<QSlider*>("meshOpacity");
+    QVERIFY(opacity && opacity->isVisible() && !opacity->hasFocus());
+    const int percent = opacity->value();
+    wheel(opacity, -2);
+    QCOMPARE(opacity->value(), percent);
+    QCOMPARE(model->style().opacity, percent / 100.0);
+    opacity->setFocus(Qt::MouseFocusReason);
+    QTRY_VERIFY(opacity->hasFocus());
+    wheel(opacity, -2);
+    QVERIFY(opacity->value() < percent);
+    QCOMPARE(model->style().opacity, opacity->value() / 100.0);
   }
 
  private:

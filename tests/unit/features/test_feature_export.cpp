@@ -58,6 +58,27 @@ TEST(FeatureExport, JsonHasTheDocumentedArraysAndRoundTrips) {
   EXPECT_EQ(back.segments[0].b, fs.segments[0].b);
 }
 
+// A project keeps the planes' inliers (the pipeline's structure checks use them); the export
+// for other tools leaves them out.
+TEST(FeatureExport, InliersRoundTripOnlyWhenAskedFor) {
+  const FeatureSet fs = sampleFeatures();
+  ASSERT_FALSE(fs.planes.empty());
+  ASSERT_FALSE(fs.planes[0].inliers.empty());
+  EXPECT_FALSE(featureSetToJson(fs).at("planes")[0].contains("inliers"));
+  const auto dir = test::scratchDir("feature_export_inliers");
+  writeFeatureSetJson(dir / "with.json", fs, true);
+  writeFeatureSetJson(dir / "without.json", fs);
+  const FeatureSet with = readFeatureSetJson(dir / "with.json");
+  const FeatureSet without = readFeatureSetJson(dir / "without.json");
+  ASSERT_EQ(with.planes.size(), fs.planes.size());
+  for (std::size_t k = 0; k < fs.planes.size(); ++k) {
+    EXPECT_EQ(with.planes[k].inliers, fs.planes[k].inliers) << "plane " << k;
+    EXPECT_TRUE(without.planes[k].inliers.empty());
+  }
+  EXPECT_EQ(with.openings[0].evidence_count, fs.openings[0].evidence_count);
+  EXPECT_EQ(with.segments[0].a, fs.segments[0].a);
+}
+
 TEST(FeatureExport, PlyHasVerticesAndEdges) {
   const FeatureSet fs = sampleFeatures();
   const auto dir = test::scratchDir("feature_export_ply");

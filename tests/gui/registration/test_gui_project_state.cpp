@@ -1,0 +1,189 @@
+// A saved project keeps what the user set up besides files and transforms (issue 17): each
+// layer's display style and its detected features, and whether those features are up to date
+// for the registration's layers and parameters. Reopened in a fresh window, "Use detected
+// features" registers with them without detecting again. On the small synthetic room
+// (tests/gui/room_scene.hpp) written to PLY files.
+#include <QCheckBox>
+#include <QDir>
+#include <QFileInfo>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTest>
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "gui/open_window.hpp"
+#include "gui/room_scene.hpp"
+#include "io/io.hpp"
+#include "support/test_support.hpp"
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/feature_layer.hpp"
+#include "ui/layers/layer_transform.hpp"
+#include "ui/layers/model_layer.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/project/project_file.hpp"
+#include "ui/registration/registration_panel.hpp"
+#include "ui/registration/registration_tasks.hpp"
+
+using namespace plumb;
+using namespace plumb::ui;
+
+namespace {
+
+constexpr int kTaskTimeoutMs = 120000;
+
+struct Files {
+  QString scan, reference, model, project;
+};
+
+/// The room as two scans and a model, written once per run.
+const Files& files() {
+  static const Files f = [] {
+    const auto dir = test::scratchDir("gui_project_state");
+    writeDataset(dir / "scan.ply", *test::roomScan(0.1, test::scanOffset(), "scan"));
+    writeDataset(dir / "reference.ply", *test::roomScan(0.08, RigidTransform(), "reference"));
+    writeModel(dir / "model.ply", *test::roomModel());
+    auto q = [&](const char* name) { return QString::fromStdString((dir / name).string()); };
+    return Files{q("scan.ply"), q("reference.ply"), q("model.ply"), q("room.plumb.json")};
+  }();
+  return f;
+}
+
+nlohmann::json readProject() {
+  std::ifstream in(files().project.toStdString());
+  return nlohmann::json::parse(in);
+}
+
+/// How many layer entries of `project` name a feature file.
+int featureFiles(const nlohmann::json& project) {
+  int n = 0;
+  for (const auto& entry : project.at("layers")) n += entry.contains("features") ? 1 : 0;
+  return n;
+}
+
+std::size_t planeCount(const Layer* layer) {
+  const Layer* overlay = layer ? featureOverlay(*layer) : nullptr;
+  return overlay ? static_cast<const FeatureLayer*>(overlay)->features().planes.size() : 0;
+}
+
+}  // namespace
+
+class GuiProjectStateTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void cleanup() { window_.reset(); }
+
+  void styleAndFeaturesSurviveSaveAndOpen() {
+    test::openWindowWithFiles(window_, {files().scan, files().reference, files().model});
+    if (QTest::currentTestFailed()) return;
+    AppContext& app = window_->context();
+    auto* scan = static_cast<DatasetLayer*>(findLayerBySource(app.scene, files().scan));
+    Layer* reference = findLayerBySource(app.scene, files().reference);
+    auto* model = static_cast<ModelLayer*>(findLayerBySource(app.scene, files().model));
+    QVERIFY(scan && reference && model);
+    QCOMPARE(scan->style().mode, PointColorMode::Elevation);  // no RGB in the file
+    app.scene.requestStyle(*scan, PointStyle{PointColorMode::Scan, "", 4.0});
+    model->setStyle({true, 0.5});
+    RegistrationPanel& panel = *app.registration;
+    panel.setSourceLayer(scan);
+    panel.setTargetLayer(reference);
+    panel.setMethod(RegistrationMethod::Icp);
+    QSignalSpy detected(&panel, &RegistrationPanel::featuresDetected);
+    QVERIFY(panel.detectFeatures());
+    QVERIFY(detected.wait(kTaskTimeoutMs) && detected.at(0).at(0).toBool());
+    const std::size_t scan_planes = planeCount(scan), reference_planes = planeCount(reference);
+    QVERIFY(scan_planes >= 4 && reference_planes >= 4);
+    QVERIFY(!panel.featuresOutOfDate());
+    saveProject(app, files().project);
+
+    // The project names one feature file per layer with features, and marks them up to date.
+    const nlohmann::json saved = readProject();
+    QVERIFY(saved.at("registration").contains("features-detected-with"));
+    QCOMPARE(featureFiles(saved), 2);
+    for (std::size_t i = 0; i < saved.at("layers").size(); ++i) {
+      const auto& entry = saved.at("layers")[i];
+      const bool is_model = entry.at("file") == "model.ply";
+      QCOMPARE(entry.contains("features"), !is_model);
+      if (is_model) continue;
+      const std::string name = "room.plumb.json.features/" + std::to_string(i) + ".json";
+      QCOMPARE(entry.at("features").get<std::string>(), name);
+      QVERIFY(QFileInfo(QFileInfo(files().project).dir(), QString::fromStdString(name)).isFile());
+    }
+
+    reopen();
+    if (QTest::currentTestFailed()) return;
+    AppContext& again = window_->context();
+    scan = static_cast<DatasetLayer*>(findLayerBySource(again.scene, files().scan));
+    reference = findLayerBySource(again.scene, files().reference);
+    model = static_cast<ModelLayer*>(findLayerBySource(again.scene, files().model));
+    QVERIFY(scan && reference && model);
+    QCOMPARE(scan->style().mode, PointColorMode::Scan);
+    QCOMPARE(scan->style().point_size, 4.0);
+    QCOMPARE(static_cast<DatasetLayer*>(reference)->style().mode, PointColorMode::Elevation);
+    QVERIFY(model->style().edges);
+    QCOMPARE(model->style().opacity, 0.5);
+    QCOMPARE(planeCount(scan), scan_planes);
+    QCOMPARE(planeCount(reference), reference_planes);
+    QVERIFY(!featureOverlay(*model));
+    RegistrationPanel& reopened = *again.registration;
+    QCOMPARE(reopened.sourceLayer(), scan);
+    QCOMPARE(reopened.targetLayer(), reference);
+    QVERIFY(!reopened.featuresOutOfDate());
+    auto* use = reopened.findChild<QCheckBox*>("useFeatures");
+    QVERIFY(use && use->isChecked() && !use->text().contains("out of date"));
+
+    // Registering with them: no detection, no "extracting again".
+    QSignalSpy finished(&reopened, &RegistrationPanel::registrationFinished);
+    QTest::mouseClick(reopened.findChild<QPushButton*>("register"), Qt::LeftButton);
+    QVERIFY(finished.wait(kTaskTimeoutMs));
+    QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(again.log.toPlainText()));
+    QVERIFY(!again.log.toPlainText().contains("Detecting features"));
+    QVERIFY(!again.log.toPlainText().contains("detected with other parameters"));
+    QVERIFY(!layerTransform(*scan).isIdentity());
+  }
+
+  // Features saved out of date come back shown but out of date; a changed threshold after
+  // reopening puts up-to-date ones out of date.
+  void outOfDateFeaturesStayOutOfDate() {
+    reopen();  // the project of the test above
+    if (QTest::currentTestFailed()) return;
+    RegistrationPanel& panel = *window_->context().registration;
+    QVERIFY(!panel.featuresOutOfDate());
+    panel.params().plane_extraction.max_planes /= 2;
+    panel.refreshParams();
+    QVERIFY(panel.featuresOutOfDate());
+    saveProject(window_->context(), files().project);
+    QVERIFY(!readProject().at("registration").contains("features-detected-with"));
+    QCOMPARE(featureFiles(readProject()), 2);
+
+    reopen();
+    if (QTest::currentTestFailed()) return;
+    RegistrationPanel& again = *window_->context().registration;
+    QVERIFY(planeCount(again.sourceLayer()) > 0 && planeCount(again.targetLayer()) > 0);
+    QVERIFY(again.featuresOutOfDate());
+    QVERIFY(again.findChild<QCheckBox*>("useFeatures")->text().contains("out of date"));
+  }
+
+ private:
+  /// A fresh window opening the project; fails the test unless every file loads.
+  void reopen() {
+    window_.reset();
+    test::showMainWindow(window_, QSize(1400, 900));
+    if (QTest::currentTestFailed()) return;
+    AppContext& app = window_->context();
+    bool done = false, ok = false;
+    openProject(app, files().project, [&](bool all, const std::vector<Layer*>&) { done = true, ok = all; });
+    QTRY_VERIFY_WITH_TIMEOUT(done, 60000);
+    QVERIFY(ok);
+    QVERIFY(QTest::qWaitFor([&] { return app.tasks.runningCount() == 0; }, kTaskTimeoutMs));
+    QVERIFY2(app.log.errorCount() == 0, qPrintable(app.log.toPlainText()));
+  }
+
+  std::unique_ptr<MainWindow> window_;
+};
+
+int main(int argc, char** argv) { return plumb::test::runGuiTest<GuiProjectStateTest>(argc, argv); }
+#include "test_gui_project_state.moc"
