@@ -1,6 +1,7 @@
 // plumb-cli register SOURCE TARGET [--method auto|planes|openings|segments|icp] [--no-refine]
 //   [--orientation auto|levelled|y-up|any]
-//   [-o REGISTERED.{e57,ply,las}] [--transform T.json] [--report REPORT.{json,html}]... [--seed N]
+//   [-o REGISTERED.{e57,ply,las} [--distances [--distance-max M] [--unsigned-distances]]]
+//   [--transform T.json] [--report REPORT.{json,html}]... [--seed N]
 //   [--params PARAMS.json] [--set GROUP.KEY=VALUE]... [--print-params] [--source-trajectory FILE]
 //   [--target-trajectory FILE]
 // Registers SOURCE onto TARGET (scans or models; a PLY/OBJ with faces or an IFC is a model).
@@ -23,6 +24,12 @@
 // not be read or the parameters are invalid (one-line error naming the file). Every output (-o with its extension, --transform,
 // --report) is checked once the inputs are read and before the registration runs: a bad one
 // is exit 1 with nothing written.
+// --distances adds to -o the distance of every registered point to TARGET as the per-point
+// scalar field "distance" (metres, float32: a PLY vertex property, an E57 prototype field
+// "plumb:distance", a LAS extra-bytes field), measured like the desktop's distance colouring
+// (quality/cloud_distance.hpp): signed, + in front of the target's surface and - behind it,
+// unless --unsigned-distances; NaN where nothing of TARGET lies within --distance-max metres
+// (default 0.1). It needs SOURCE to be a point dataset held in memory (within the budget).
 // --report R.json writes the quality report's JSON; --report R.html the report to hand over
 // (core/report: verdict, every JSON figure with its meaning, distances, per-feature residuals,
 // plan and section pictures, sign-off block), also when the registration failed. --report
@@ -44,6 +51,7 @@
 #include "common/error.hpp"
 #include "io/io.hpp"
 #include "model/trajectory.hpp"
+#include "quality/cloud_distance.hpp"
 #include "io/stream/point_convert.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/registration_input.hpp"
@@ -59,6 +67,8 @@ struct RegisterOptions {
   std::string source_trajectory, target_trajectory;
   bool no_refine = false;
   bool print_params = false;
+  bool distances = false, unsigned_distances = false;  ///< --distances, --unsigned-distances
+  std::string distance_max;  ///< --distance-max; empty: the default
   std::string seed;  ///< empty: not given; range-checked in loadParams
   std::string orientation;  ///< empty: not given; else orientation.source (issue 14)
   std::string memory_budget;  ///< empty: not given; else memory.budget (MB)
@@ -127,6 +137,39 @@ void load(Side& s, const std::string& path, const std::string& trajectory, const
   }
 }
 
+/// The distance parameters of --distances; InputError for a distance option without it, or
+/// without -o.
+DistanceParams distanceParams(const RegisterOptions& o) {
+  DistanceParams d;
+  if (!o.distances) {
+    if (o.unsigned_distances || !o.distance_max.empty())
+      throw InputError("register: --distance-max and --unsigned-distances need --distances");
+    return d;
+  }
+  if (o.output.empty()) throw InputError("register: --distances needs -o (the distances are written with the points)");
+  d.signed_distances = !o.unsigned_distances;
+  if (!o.distance_max.empty()) {
+    ParamSpec spec = DistanceParams::schema().find("max-distance")->spec;
+    spec.key = "distance-max";
+    d.max_distance = parseOption(spec, o.distance_max);
+  }
+  return d;
+}
+
+/// --distances needs the registered points in memory: a point dataset, not streamed. A
+/// streamed target is measured as its subsample (said on stderr).
+void checkDistanceInputs(const RegisterOptions& o, const Side& src, const Side& tgt) {
+  if (!o.distances) return;
+  if (tgt.subsampled)
+    std::cerr << "plumb-cli: --distances: measured to the subsample of " << o.target
+              << " (it exceeds the memory budget)\n";
+  if (src.subsampled)
+    throw InputError("register: --distances: " + o.source + " exceeds the memory budget and would be streamed "
+                     "to -o; raise --memory-budget");
+  if (!std::holds_alternative<Dataset>(src.data))
+    throw InputError("register: --distances: " + o.source + " is a model; distances are written for points");
+}
+
 void checkOutputs(const RegisterOptions& o, std::optional<bool> model_source) {
   if (!o.output.empty())
     checkOutputPath(o.output, model_source.value_or(isModelFormat(formatFromExtension(o.output))));
@@ -151,7 +194,13 @@ void checkOutputs(const RegisterOptions& o, std::optional<bool> model_source) {
     }
 }
 
-void writeRegistered(const RegisterOptions& o, const Side& src, const RigidTransform& T, const MemoryParams& memory);
+struct Registered {
+  const Side& source;
+  const Side& target;
+  RigidTransform transform;
+};
+void writeRegistered(const RegisterOptions& o, const Registered& r, const DistanceParams& distances,
+                     const MemoryParams& memory);
 
 int run(const RegisterOptions& o) {
   const PipelineParams p = loadParams(o);
@@ -159,6 +208,7 @@ int run(const RegisterOptions& o) {
     std::cout << pipelineParamsToJson(p).dump(2) << "\n";
     return 0;
   }
+  const DistanceParams distances = distanceParams(o);
   if (o.source.empty() || o.target.empty())
     throw InputError("register: SOURCE and TARGET are required (or --print-params)");
   const FileFormat source_format = formatFromExtension(o.source);  // checked before the slow part
@@ -168,6 +218,7 @@ int run(const RegisterOptions& o) {
   load(src, o.source, o.source_trajectory, "--source-trajectory", p);
   load(tgt, o.target, o.target_trajectory, "--target-trajectory", p);
   checkOutputs(o, std::holds_alternative<BimModel>(src.data));
+  checkDistanceInputs(o, src, tgt);
   // Progress on a terminal only (logs stay clean).
   const bool tty = isatty(2);
   Progress progress([tty](double f, std::string_view stage) {
@@ -192,13 +243,17 @@ int run(const RegisterOptions& o) {
   }
   const RigidTransform& T = r.transform();
   if (!o.transform.empty()) writeTransformFile(o.transform, T);
-  if (!o.output.empty()) writeRegistered(o, src, T, p.memory);
+  if (!o.output.empty()) writeRegistered(o, {src, tgt, T}, distances, p.memory);
   return code;
 }
 
 /// -o: the source moved by T. A subsampled source is streamed again from its file at full
 /// resolution (convertPointFile: T applied per chunk, or per station for E57), never merged.
-void writeRegistered(const RegisterOptions& o, const Side& src, const RigidTransform& T, const MemoryParams& memory) {
+/// --distances: each scan gets its "distance" field to the target (checkDistanceInputs).
+void writeRegistered(const RegisterOptions& o, const Registered& r, const DistanceParams& distances,
+                     const MemoryParams& memory) {
+  const Side& src = r.source;
+  const RigidTransform& T = r.transform;
   if (src.subsampled) {
     ConvertParams convert;
     convert.transform = T;
@@ -209,6 +264,8 @@ void writeRegistered(const RegisterOptions& o, const Side& src, const RigidTrans
   } else if (auto* d = std::get_if<Dataset>(&src.data)) {
     Dataset moved = *d;
     moved.transform(T);
+    if (o.distances)
+      attachDistanceField(moved, datasetDistances(moved, {}, distanceTarget(r.target.input), distances).per_scan);
     WriteReport written;
     WriteOptions options;
     options.report = &written;
@@ -240,6 +297,12 @@ void addRegisterCommand(CLI::App& app, Action& action) {
       ->check(CLI::IsMember({"auto", "levelled", "y-up", "any"}));
   cmd->add_option("--memory-budget", opts->memory_budget, memoryBudgetHelp() + "; same as --set memory.budget=MB");
   cmd->add_option("-o,--output", opts->output, "Write the registered SOURCE (e57, ply, las...)");
+  cmd->add_flag("--distances", opts->distances,
+                "With -o: add each point's distance to TARGET as the scalar field 'distance' (metres; "
+                "signed: + in front of the target's surface, - behind; NaN beyond --distance-max)");
+  cmd->add_option("--distance-max", opts->distance_max,
+                  "--distances: search radius, metres (default 0.1); farther points get NaN");
+  cmd->add_flag("--unsigned-distances", opts->unsigned_distances, "--distances: unsigned (all >= 0)");
   cmd->add_option("--transform", opts->transform, "Write the transform (JSON or 4x4 text)");
   cmd->add_option("--report", opts->reports,
                   "Write the quality report: R.json (every figure) or R.html (the report to hand over); "

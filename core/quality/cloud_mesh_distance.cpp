@@ -1,5 +1,5 @@
 // Cloud-to-mesh distances: closest points on the triangles (simulation/mesh_closest_points.hpp,
-// CGAL's AABB tree).
+// CGAL's AABB tree), signed by the closest triangle's winding normal.
 #include <tbb/parallel_for.h>
 
 #include <cmath>
@@ -14,6 +14,7 @@ namespace plumb {
 DistanceResult cloudToMeshDistances(const PointCloud& source, const RigidTransform& source_to_world,
                                     const TriangleMesh& mesh, const RigidTransform& mesh_to_world,
                                     const DistanceParams& params, Progress* progress) {
+  validateParams(DistanceParams::schema(), params);
   if (mesh.triangles.empty()) throw InputError("distance: the model has no triangles");
   reportProgress(progress, 0.0, "distance: AABB tree");
   // Measured in the mesh frame, relative to the mesh's box centre (small coordinates).
@@ -43,7 +44,10 @@ DistanceResult cloudToMeshDistances(const PointCloud& source, const RigidTransfo
                           MeshClosestPoints::Closest c;
                           tree.closest(q, c);
                           const double d = (c.point - q).norm();
-                          if (d <= params.max_distance) r.distances[i] = float(d);
+                          if (d > params.max_distance) continue;
+                          const bool behind = params.signed_distances &&
+                                              (q - c.point).dot(mesh.triangleNormal(c.triangle)) < 0;
+                          r.distances[i] = float(behind ? -d : d);
                         }
                       });
   }

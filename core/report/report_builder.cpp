@@ -59,6 +59,7 @@ DistanceResult measure(const ReportInputs& in, const PointCloud& sample, const R
                        const ReportParams& p, Progress* progress) {
   DistanceParams dp;
   dp.max_distance = p.max_distance;
+  dp.signed_distances = false;  // the report's histogram is of distances over [0, max]
   return in.target_model ? cloudToMeshDistances(sample, t, in.target_model->mesh, RigidTransform(), dp, progress)
                          : cloudToCloudDistances(sample, t, *in.target_cloud, RigidTransform(), dp, progress);
 }

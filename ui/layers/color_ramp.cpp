@@ -27,8 +27,27 @@ constexpr std::array<std::array<double, 3>, 11> kViridis = {{
     {0.993248, 0.906157, 0.143936},
 }};
 
+// Blue, cyan, green, yellow, red at equal steps (CloudCompare-like deviation scale).
+constexpr std::array<std::array<double, 3>, 5> kDeviation = {
+    {{0.0, 0.0, 1.0}, {0.0, 1.0, 1.0}, {0.0, 1.0, 0.0}, {1.0, 1.0, 0.0}, {1.0, 0.0, 0.0}}};
+
+// ColorBrewer's RdBu ends and near-white middle, blue first: symmetric around t = 0.5.
+constexpr std::array<std::array<double, 3>, 3> kBlueWhiteRed = {
+    {{0.129, 0.400, 0.675}, {0.969, 0.969, 0.969}, {0.698, 0.094, 0.169}}};
+
 std::uint8_t toByte(double v) {
   return static_cast<std::uint8_t>(std::clamp(v, 0.0, 1.0) * 255.0 + 0.5);
+}
+
+/// Linear interpolation between equally spaced stops, t in [0, 1].
+template <std::size_t N>
+Rgb interpolate(const std::array<std::array<double, 3>, N>& stops, double t) {
+  const double x = t * (N - 1);
+  const auto i = std::min<std::size_t>(static_cast<std::size_t>(x), N - 2);
+  const double f = x - static_cast<double>(i);
+  Rgb c{};
+  for (int k = 0; k < 3; ++k) c[k] = toByte(stops[i][k] * (1 - f) + stops[i + 1][k] * f);
+  return c;
 }
 
 }  // namespace
@@ -40,23 +59,9 @@ Rgb rampColor(RampKind ramp, double t) {
     const auto g = toByte(0.15 + 0.85 * t);
     return {g, g, g};
   }
-  if (ramp == RampKind::Distance) {
-    // Blue, cyan, green, yellow, red at equal steps (CloudCompare-like deviation scale).
-    static constexpr std::array<std::array<double, 3>, 5> kStops = {
-        {{0.0, 0.0, 1.0}, {0.0, 1.0, 1.0}, {0.0, 1.0, 0.0}, {1.0, 1.0, 0.0}, {1.0, 0.0, 0.0}}};
-    const double x = t * (kStops.size() - 1);
-    const auto i = std::min<std::size_t>(static_cast<std::size_t>(x), kStops.size() - 2);
-    const double f = x - static_cast<double>(i);
-    Rgb c{};
-    for (int k = 0; k < 3; ++k) c[k] = toByte(kStops[i][k] * (1 - f) + kStops[i + 1][k] * f);
-    return c;
-  }
-  const double x = t * (kViridis.size() - 1);
-  const auto i = std::min<std::size_t>(static_cast<std::size_t>(x), kViridis.size() - 2);
-  const double f = x - static_cast<double>(i);
-  Rgb c{};
-  for (int k = 0; k < 3; ++k) c[k] = toByte(kViridis[i][k] * (1 - f) + kViridis[i + 1][k] * f);
-  return c;
+  if (ramp == RampKind::Distance) return interpolate(kDeviation, t);
+  if (ramp == RampKind::Diverging) return interpolate(kBlueWhiteRed, t);
+  return interpolate(kViridis, t);
 }
 
 Rgb categoryColor(std::size_t i) {

@@ -14,6 +14,7 @@ enum class RampKind {
   Viridis,  ///< perceptually uniform; elevation, scalar fields, distances
   Grey,     ///< intensity
   Distance, ///< registration QA: blue (on the target) -> green -> yellow -> red (far)
+  Diverging, ///< signed distances: blue (behind the target) -> white (on it) -> red (in front)
 };
 
 /// Colour of t in [0,1] (clamped) on the ramp.

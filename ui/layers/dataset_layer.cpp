@@ -111,11 +111,10 @@ Task* DatasetLayer::requestStyle(const PointStyle& style, TaskManager& tasks,
   return coloring_task_;
 }
 
-void DatasetLayer::setDistances(std::vector<std::vector<float>> per_scan, double max_distance) {
+void DatasetLayer::setDistances(std::vector<std::vector<float>> per_scan, const DistanceScale& scale) {
   const auto list = scans();
   for (std::size_t i = 0; i < list.size(); ++i)
-    list[i]->setDistances(i < per_scan.size() ? std::move(per_scan[i]) : std::vector<float>{},
-                          max_distance);
+    list[i]->setDistances(i < per_scan.size() ? std::move(per_scan[i]) : std::vector<float>{}, scale);
   has_distances_ = !per_scan.empty();
   if (has_distances_ && style_.mode != PointColorMode::Distance) {
     mode_before_distances_ = style_.mode;
@@ -124,8 +123,15 @@ void DatasetLayer::setDistances(std::vector<std::vector<float>> per_scan, double
   colours_stale_ = true;
 }
 
+std::vector<std::shared_ptr<const std::vector<float>>> DatasetLayer::distances() const {
+  std::vector<std::shared_ptr<const std::vector<float>>> out;
+  if (!has_distances_) return out;
+  for (const ScanLayer* s : scans()) out.push_back(s->distances());
+  return out;
+}
+
 void DatasetLayer::clearDistances() {
-  for (ScanLayer* s : scans()) s->setDistances({}, 1.0);
+  for (ScanLayer* s : scans()) s->setDistances({}, DistanceScale{});
   if (style_.mode == PointColorMode::Distance) style_.mode = mode_before_distances_;
   has_distances_ = false;
   colours_stale_ = true;

@@ -11,6 +11,7 @@
 
 #include "model/dataset.hpp"
 #include "ui/layers/layer.hpp"
+#include "ui/layers/point_coloring.hpp"
 #include "ui/layers/point_style.hpp"
 #include "ui/layers/prepared_dataset.hpp"
 
@@ -63,10 +64,12 @@ class DatasetLayer : public Layer {
   void setShowsTransform(bool show);
 
   /// Distance to the registration target per point of each scan (NaN: no match), drawn by the
-  /// Distance colour mode on a ramp over [0, max_distance]; switches the style to it. The
-  /// colours follow in the background once the scene is told (Scene::layerChanged).
-  void setDistances(std::vector<std::vector<float>> per_scan, double max_distance);
+  /// Distance colour mode on `scale`; switches the style to it. The colours follow in the
+  /// background once the scene is told (Scene::layerChanged).
+  void setDistances(std::vector<std::vector<float>> per_scan, const DistanceScale& scale);
   bool hasDistances() const { return has_distances_; }
+  /// The distances of each scan (exported as the "distance" field); empty without distances.
+  std::vector<std::shared_ptr<const std::vector<float>>> distances() const;
   /// Drops the distances; the colour mode goes back to the one before them.
   void clearDistances();
   /// The colour mode without the distances: style().mode, or the one before them.

@@ -56,11 +56,11 @@ void fillFromValues(std::span<const float> values, double lo, double hi, RampKin
 
 }  // namespace
 
-void fillDistanceColors(std::span<const float> distances, double max_distance, std::span<Rgb> out) {
-  const double scale = max_distance > 0 ? 1.0 / max_distance : 1.0;
+void fillDistanceColors(std::span<const float> distances, const DistanceScale& scale, std::span<Rgb> out) {
+  const Rgb unmatched = scale.signed_values ? Rgb{110, 110, 110} : Rgb{190, 190, 190};
+  const RampKind ramp = scale.ramp();
   fillEach(out, [&](std::size_t i) {
-    return std::isfinite(distances[i]) ? rampColor(RampKind::Distance, distances[i] * scale)
-                                       : Rgb{190, 190, 190};
+    return std::isfinite(distances[i]) ? rampColor(ramp, scale.at(distances[i])) : unmatched;
   });
 }
 

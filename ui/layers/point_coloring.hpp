@@ -25,6 +25,17 @@ struct PointColoring {
   double value_max = 0.0;
 };
 
+/// The scale of the distance colours: signed distances on the diverging ramp over [-max, max]
+/// (white at 0), unsigned ones on the distance ramp over [0, max].
+struct DistanceScale {
+  double max = 1.0;  ///< metres, > 0
+  bool signed_values = false;
+  double lo() const { return signed_values ? -max : 0.0; }
+  RampKind ramp() const { return signed_values ? RampKind::Diverging : RampKind::Distance; }
+  /// Where the distance v lies on the ramp (0 at lo(), 1 at max; not clamped).
+  double at(double v) const { return (v - lo()) / (max - lo()); }
+};
+
 /// Mode actually used: RGB without colours, intensity without intensity, or a missing scalar
 /// field fall back to elevation.
 PointColorMode effectiveMode(const PointCloud& cloud, const PointStyle& style);
@@ -33,8 +44,9 @@ PointColorMode effectiveMode(const PointCloud& cloud, const PointStyle& style);
 /// Distance mode is the layer's business, not judged here).
 std::string missingColourData(const PointCloud& cloud, const PointStyle& style);
 /// Writes one colour per point of `cloud` into `out` (out.size() == cloud.size()).
-/// Distance colours: the distance ramp over [0, max_distance]; NaN (no match) light grey.
-void fillDistanceColors(std::span<const float> distances, double max_distance, std::span<Rgb> out);
+/// Distance colours on `scale`; NaN (no match) grey (darker for signed distances, whose zero
+/// is near white).
+void fillDistanceColors(std::span<const float> distances, const DistanceScale& scale, std::span<Rgb> out);
 void fillPointColors(const PointCloud& cloud, const PointColoring& coloring, std::span<Rgb> out);
 
 }  // namespace plumb::ui

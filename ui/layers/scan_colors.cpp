@@ -9,7 +9,7 @@ std::vector<Rgba> ScanColorJob::compute(Progress* progress) const {
   const bool by_distance = coloring.style.mode == PointColorMode::Distance && distances &&
                            distances->size() == cloud.size();
   if (by_distance) {
-    fillDistanceColors(*distances, distance_max, colors);
+    fillDistanceColors(*distances, distance_scale, colors);
   } else {
     PointColoring c = coloring;
     if (c.style.mode == PointColorMode::Distance) c.style.mode = PointColorMode::Elevation;
@@ -26,7 +26,7 @@ ScanColorJob makeScanColorJob(std::shared_ptr<const Dataset> data, std::size_t s
                               const RigidTransform& dataset_transform, const PointStyle& style,
                               double z_min, double z_max,
                               std::shared_ptr<const std::vector<float>> distances,
-                              double distance_max) {
+                              const DistanceScale& distance_scale) {
   ScanColorJob job;
   job.coloring.style = style;
   job.coloring.scan_index = scan_index;
@@ -39,7 +39,8 @@ ScanColorJob makeScanColorJob(std::shared_ptr<const Dataset> data, std::size_t s
   job.data = std::move(data);
   job.scan_index = scan_index;
   job.distances = std::move(distances);
-  job.distance_max = distance_max > 0 ? distance_max : 1.0;
+  job.distance_scale = distance_scale;
+  if (!(job.distance_scale.max > 0)) job.distance_scale.max = 1.0;
   return job;
 }
 

@@ -25,7 +25,7 @@ struct ScanColorJob {
   PointColoring coloring;
   /// Per-point distances of the Distance mode (null or wrong size: elevation instead).
   std::shared_ptr<const std::vector<float>> distances;
-  double distance_max = 1.0;
+  DistanceScale distance_scale;
 
   /// Colours in the scan's random order (permuteColors with scanOrderSeed). Parallel (TBB);
   /// checks `progress` for cancellation between its passes.
@@ -38,6 +38,6 @@ ScanColorJob makeScanColorJob(std::shared_ptr<const Dataset> data, std::size_t s
                               const RigidTransform& dataset_transform, const PointStyle& style,
                               double z_min, double z_max,
                               std::shared_ptr<const std::vector<float>> distances = {},
-                              double distance_max = 1.0);
+                              const DistanceScale& distance_scale = {});
 
 }  // namespace plumb::ui

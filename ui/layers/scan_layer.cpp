@@ -115,7 +115,7 @@ void ScanLayer::setStyle(const PointStyle& style, double z_min, double z_max) {
 
 ScanColorJob ScanLayer::colorJob(const PointStyle& style, double z_min, double z_max) const {
   ScanColorJob job = makeScanColorJob(data_, scan_index_, dataset_transform_, style, z_min, z_max,
-                                      distances_, distance_max_);
+                                      distances_, distance_scale_);
   job.coloring.scan_index = colour_index_;
   job.coloring.dataset_index = dataset_colour_index_;
   return job;
@@ -132,14 +132,10 @@ void ScanLayer::setPointSize(double pixels) {
   moving_actor_->GetProperty()->SetPointSize(static_cast<float>(pixels));
 }
 
-void ScanLayer::setDistances(std::vector<float> distances, double max_distance) {
+void ScanLayer::setDistances(std::vector<float> distances, const DistanceScale& scale) {
   distances_ = std::make_shared<const std::vector<float>>(std::move(distances));
-  distance_max_ = max_distance > 0 ? max_distance : 1.0;
-}
-
-const std::vector<float>& ScanLayer::distances() const {
-  static const std::vector<float> none;
-  return distances_ ? *distances_ : none;
+  distance_scale_ = scale;
+  if (!(distance_scale_.max > 0)) distance_scale_.max = 1.0;
 }
 
 std::vector<vtkProp*> ScanLayer::props() const { return {still_actor_, moving_actor_}; }

@@ -72,9 +72,10 @@ class ScanLayer : public Layer {
   /// the buffer and re-points both actors' colour arrays at it (only colours re-upload).
   void applyColors(std::vector<Rgba> permuted);
   void setPointSize(double pixels);
-  /// Per-point distances (Distance colour mode), ramp over [0, max_distance]; NaN drawn grey.
-  void setDistances(std::vector<float> distances, double max_distance);
-  const std::vector<float>& distances() const;
+  /// Per-point distances (Distance colour mode) drawn on `scale`; NaN drawn grey.
+  void setDistances(std::vector<float> distances, const DistanceScale& scale);
+  /// The distances set (null before any).
+  std::shared_ptr<const std::vector<float>> distances() const { return distances_; }
   /// Scan points -> world.
   Eigen::Matrix4d localToWorld() const;
 
@@ -109,7 +110,7 @@ class ScanLayer : public Layer {
   vtkNew<vtkActor> still_actor_;
   vtkNew<vtkActor> moving_actor_;
   std::shared_ptr<const std::vector<float>> distances_;  ///< shared with colour jobs
-  double distance_max_ = 1.0;
+  DistanceScale distance_scale_;
   bool reduced_ = false;
   bool shown_ = true;
 };

@@ -31,19 +31,23 @@ void HistogramWidget::paintEvent(QPaintEvent*) {
   const QRectF area(4, 4, width() - 8, height() - 8 - label_h);
   const double peak = double(*std::max_element(counts.begin(), counts.end()));
   const double w = area.width() / double(counts.size());
+  // A range starting below zero holds signed distances: the diverging ramp, as in the view.
+  const bool signed_values = histogram_.lo < 0;
+  const RampKind ramp = signed_values ? RampKind::Diverging : RampKind::Distance;
   for (std::size_t i = 0; i < counts.size(); ++i) {
     const double h = peak > 0 ? area.height() * double(counts[i]) / peak : 0.0;
-    const Rgb c = rampColor(RampKind::Distance, (double(i) + 0.5) / double(counts.size()));
+    const Rgb c = rampColor(ramp, (double(i) + 0.5) / double(counts.size()));
     p.fillRect(QRectF(area.left() + double(i) * w, area.bottom() - h, std::max(1.0, w - 1), h),
                QColor(c[0], c[1], c[2]));
   }
   p.setPen(palette().text().color());
   const QRectF labels(area.left(), area.bottom() + 2, area.width(), label_h);
-  p.drawText(labels, Qt::AlignLeft, QString::number(histogram_.lo, 'f', 2) + " m");
-  p.drawText(labels, Qt::AlignRight, QString::number(histogram_.hi, 'f', 2) + " m");
-  if (histogram_.above + histogram_.invalid > 0)
-    p.drawText(labels, Qt::AlignHCenter,
-               tr("%1 beyond / unmatched").arg(histogram_.above + histogram_.invalid));
+  const QString lo = QString::number(histogram_.lo, 'f', 2) + " m";
+  const QString hi = (signed_values ? "+" : "") + QString::number(histogram_.hi, 'f', 2) + " m";
+  p.drawText(labels, Qt::AlignLeft, signed_values ? tr("%1 behind").arg(lo) : lo);
+  p.drawText(labels, Qt::AlignRight, signed_values ? tr("in front %1").arg(hi) : hi);
+  const std::size_t outside = histogram_.below + histogram_.above + histogram_.invalid;
+  if (outside > 0) p.drawText(labels, Qt::AlignHCenter, tr("%1 beyond / unmatched").arg(outside));
 }
 
 }  // namespace plumb::ui

@@ -1,5 +1,6 @@
 #pragma once
-// A small bar chart of the distance histogram (registration QA), bars coloured like the points.
+// A small bar chart of the distance histogram (registration QA), bars coloured like the points:
+// a range starting below zero is of signed distances (blue-white-red, "behind" / "in front").
 #include <QWidget>
 
 #include "quality/cloud_distance.hpp"

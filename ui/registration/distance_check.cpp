@@ -13,7 +13,26 @@ namespace plumb::ui {
 
 namespace {
 constexpr int kHistogramBins = 40;
+
+/// What was measured, how much matched, the figures of the magnitudes and, for signed
+/// distances, the sign convention and the mean signed value (a bias along the normals).
+QString statisticsLine(const DistanceResult& a, bool to_model, bool signed_values) {
+  const QString what = to_model ? QObject::tr("cloud-to-mesh") : QObject::tr("cloud-to-cloud");
+  QString line = QObject::tr("%1: %2 of %3 points matched; mean %4 m, median %5 m, 95%: %6 m, RMS %7 m")
+                     .arg(what)
+                     .arg(a.matched)
+                     .arg(a.distances.size())
+                     .arg(a.mean, 0, 'f', 4)
+                     .arg(a.median, 0, 'f', 4)
+                     .arg(a.p95, 0, 'f', 4)
+                     .arg(a.rms, 0, 'f', 4);
+  if (signed_values)
+    line += QObject::tr("; signed: + in front of the target's surface (%1), - behind; mean signed %2 m")
+                .arg(to_model ? QObject::tr("the side its triangles face") : QObject::tr("the scanner's side"))
+                .arg(a.mean_signed, 0, 'f', 4);
+  return line;
 }
+}  // namespace
 
 DistanceCheck::DistanceCheck(Scene& scene, vtkRenderer* renderer, HistogramWidget& histogram,
                              QLabel& stats)
@@ -30,22 +49,13 @@ void DistanceCheck::show(std::shared_ptr<const LayerDistances> d, DatasetLayer& 
   distances_ = std::move(d);
   source_ = LayerRef(source);
   target_ = LayerRef(const_cast<Layer&>(target));
-  source.setDistances(distances_->per_scan, max);
+  const DistanceScale scale{max, distances_->signed_values};
+  source.setDistances(distances_->per_scan, scale);
   scene_.layerChanged(&source);
-  legend_->show(max, QObject::tr("Distance (m)"));
-  histogram_.setHistogram(distanceHistogram(distances_->all.distances, 0.0, max, kHistogramBins));
-  const DistanceResult& a = distances_->all;
-  const QString what = target.kind() == LayerKind::Model ? QObject::tr("cloud-to-mesh")
-                                                         : QObject::tr("cloud-to-cloud");
-  stats_.setText(QObject::tr("%1: %2 of %3 points matched; mean %4 m, median %5 m, 95%: %6 m, "
-                             "RMS %7 m")
-                     .arg(what)
-                     .arg(a.matched)
-                     .arg(a.distances.size())
-                     .arg(a.mean, 0, 'f', 4)
-                     .arg(a.median, 0, 'f', 4)
-                     .arg(a.p95, 0, 'f', 4)
-                     .arg(a.rms, 0, 'f', 4));
+  legend_->show(scale, scale.signed_values ? QObject::tr("Signed distance (m)\n+ in front, - behind")
+                                           : QObject::tr("Distance (m)"));
+  histogram_.setHistogram(distanceHistogram(distances_->all.distances, scale.lo(), max, kHistogramBins));
+  stats_.setText(statisticsLine(distances_->all, target.kind() == LayerKind::Model, scale.signed_values));
 }
 
 void DistanceCheck::clear() {

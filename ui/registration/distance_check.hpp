@@ -25,7 +25,9 @@ class DistanceCheck {
   DistanceCheck(Scene& scene, vtkRenderer* renderer, HistogramWidget& histogram, QLabel& stats);
   ~DistanceCheck();
 
-  /// Shows `distances` of `source` to `target` on a ramp over [0, max_distance].
+  /// Shows `distances` of `source` to `target`: signed ones on the blue-white-red ramp over
+  /// [-max_distance, max_distance] (the legend and statistics say which side is which),
+  /// unsigned ones on the distance ramp over [0, max_distance].
   void show(std::shared_ptr<const LayerDistances> distances, DatasetLayer& source,
             const Layer& target, double max_distance);
   /// Removes the colours, legend, histogram and statistics.

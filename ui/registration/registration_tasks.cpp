@@ -108,26 +108,11 @@ Task* startDistanceComputation(AppContext& app, Layer& source, Layer& target,
   const LayerRef src(source), tgt(target);
   return app.tasks.run(QObject::tr("Distances %1 to %2").arg(s.name, t.name), [s, t, src, tgt, params, done](
                                                                                    Progress& progress) {
+    // The target in world as registration sees it: its sensor origins orient the signs.
+    const RegistrationInput in_t = inputOf(t, t.to_world);
     auto out = std::make_shared<LayerDistances>();
-    PointCloud target_cloud;
-    if (t.dataset) {
-      target_cloud = t.dataset->merged(false);
-      target_cloud.removeNonFinite();
-    }
-    const std::size_t n = s.dataset->scans.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      Progress p = progress.sub(double(i) / double(n), double(i + 1) / double(n));
-      const Scan& scan = s.dataset->scans[i];
-      const RigidTransform scan_to_world = s.to_world * scan.pose;
-      DistanceResult r =
-          t.dataset ? cloudToCloudDistances(scan.cloud, scan_to_world, target_cloud, t.to_world,
-                                            params, &p)
-                    : cloudToMeshDistances(scan.cloud, scan_to_world, t.model->mesh, t.to_world,
-                                           params, &p);
-      out->all.distances.insert(out->all.distances.end(), r.distances.begin(), r.distances.end());
-      out->per_scan.push_back(std::move(r.distances));
-    }
-    summarizeDistances(out->all);
+    static_cast<DatasetDistances&>(*out) =
+        datasetDistances(*s.dataset, s.to_world, distanceTarget(in_t), params, &progress);
     return [s, t, src, tgt, out, done] {
       Layer& source = stillThere(src, s.name, "the distance computation");
       Layer& target = stillThere(tgt, t.name, "the distance computation");

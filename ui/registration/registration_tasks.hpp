@@ -51,10 +51,7 @@ Task* startRegistration(AppContext& app, Layer& source, Layer& target, const Pip
 
 /// Per-scan distances of a dataset layer to the target (cloud-to-cloud for a dataset,
 /// cloud-to-mesh for a model), as shown (current transforms).
-struct LayerDistances {
-  std::vector<std::vector<float>> per_scan;
-  DistanceResult all;  ///< statistics over all scans (distances concatenated)
-};
+struct LayerDistances : DatasetDistances {};
 using DistancesDone = std::function<void(std::shared_ptr<const LayerDistances> distances,
                                          DatasetLayer& source, Layer& target)>;
 Task* startDistanceComputation(AppContext& app, Layer& source, Layer& target,

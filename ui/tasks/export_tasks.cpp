@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "io/io.hpp"
 #include "io/stream/point_convert.hpp"
+#include "quality/cloud_distance.hpp"
 #include "ui/app_context.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
@@ -24,18 +25,29 @@ void logWriterNotes(AppContext& app, const QString& path, const std::vector<std:
   for (const auto& n : notes)
     app.log.warning(QObject::tr("%1: %2").arg(path, QString::fromStdString(n)));
 }
+/// The distances the layer is coloured by, as each scan's "distance" field (none when the
+/// layer shows no distances).
+void attachShownDistances(Dataset& d, const std::vector<std::shared_ptr<const std::vector<float>>>& shown) {
+  if (shown.empty()) return;
+  std::vector<std::vector<float>> per_scan;
+  for (const auto& s : shown) per_scan.push_back(s ? *s : std::vector<float>{});
+  attachDistanceField(d, per_scan);
+}
 }  // namespace
 
 Task* exportRegisteredDataset(AppContext& app, const Layer& layer, const QString& path) {
   if (layer.kind() != LayerKind::Dataset)
     throw InputError("export: '" + layer.name().toStdString() + "' is not a point dataset");
-  const auto data = static_cast<const DatasetLayer&>(layer).sharedDataset();
+  const auto& dataset_layer = static_cast<const DatasetLayer&>(layer);
+  const auto data = dataset_layer.sharedDataset();
   refuseSameFile(data->source, path.toStdString());  // an export never replaces its own input
   const RigidTransform T = layerTransform(layer);
   Task* task = app.tasks.run(QObject::tr("Exporting %1").arg(layer.name()),
-                             [&app, data, T, path](Progress& progress) -> Task::Apply {
+                             [&app, data, T, path, distances = dataset_layer.distances()](
+                                 Progress& progress) -> Task::Apply {
                                Dataset moved = *data;
                                moved.transform(T);
+                               attachShownDistances(moved, distances);
                                WriteReport report;
                                WriteOptions options;
                                options.report = &report;

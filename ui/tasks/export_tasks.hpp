@@ -1,7 +1,8 @@
 #pragma once
 // Exports in the background: a registered dataset (PLY, E57 with the registered scan poses,
-// LAS; format by extension through plumb::writeDataset, like plumb-cli register -o) and a
-// layer's transform (JSON or 4x4 text through plumb::writeTransformFile).
+// LAS; format by extension through plumb::writeDataset, like plumb-cli register -o), with the
+// distances it is coloured by as the scalar field "distance" (like register --distances), and
+// a layer's transform (JSON or 4x4 text through plumb::writeTransformFile).
 #include <QString>
 
 namespace plumb::ui {

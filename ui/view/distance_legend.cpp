@@ -6,18 +6,11 @@
 #include <vtkSmartPointer.h>
 #include <vtkTextProperty.h>
 
-#include "ui/layers/color_ramp.hpp"
+#include "ui/layers/point_coloring.hpp"
 
 namespace plumb::ui {
 
 DistanceLegend::DistanceLegend(vtkRenderer* renderer) : renderer_(renderer) {
-  constexpr int kColors = 64;
-  table_->SetNumberOfTableValues(kColors);
-  for (int i = 0; i < kColors; ++i) {
-    const Rgb c = rampColor(RampKind::Distance, (i + 0.5) / kColors);
-    table_->SetTableValue(i, c[0] / 255.0, c[1] / 255.0, c[2] / 255.0, 1.0);
-  }
-  table_->Build();
   bar_->SetLookupTable(table_);
   bar_->SetNumberOfLabels(5);
   bar_->SetLabelFormat("%.3f");
@@ -32,8 +25,15 @@ DistanceLegend::DistanceLegend(vtkRenderer* renderer) : renderer_(renderer) {
 
 DistanceLegend::~DistanceLegend() { renderer_->RemoveViewProp(bar_); }
 
-void DistanceLegend::show(double max_distance, const QString& title) {
-  table_->SetRange(0.0, max_distance);
+void DistanceLegend::show(const DistanceScale& scale, const QString& title) {
+  constexpr int kColors = 64;
+  table_->SetNumberOfTableValues(kColors);
+  for (int i = 0; i < kColors; ++i) {
+    const Rgb c = rampColor(scale.ramp(), (i + 0.5) / kColors);
+    table_->SetTableValue(i, c[0] / 255.0, c[1] / 255.0, c[2] / 255.0, 1.0);
+  }
+  table_->SetRange(scale.lo(), scale.max);
+  table_->Build();
   bar_->SetTitle(title.toUtf8().constData());
   bar_->SetVisibility(true);
 }

@@ -1,5 +1,6 @@
 #pragma once
-// The colour scale legend of the distance colouring (vtkScalarBarActor over the distance ramp).
+// The colour scale legend of the distance colouring (vtkScalarBarActor over the distance ramp,
+// or the blue-white-red ramp from -max to +max for signed distances).
 #include <QString>
 
 #include <vtkNew.h>
@@ -11,11 +12,13 @@ class vtkScalarBarActor;
 
 namespace plumb::ui {
 
+struct DistanceScale;
+
 class DistanceLegend {
  public:
   explicit DistanceLegend(vtkRenderer* renderer);
   ~DistanceLegend();
-  void show(double max_distance, const QString& title);
+  void show(const DistanceScale& scale, const QString& title);
   void hide();
   bool visible() const;
 

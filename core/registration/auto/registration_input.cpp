@@ -74,4 +74,8 @@ RegistrationInput makeRegistrationInput(const BimModel& m, const RigidTransform&
   return in;
 }
 
+DistanceTarget distanceTarget(const RegistrationInput& in) {
+  return in.model ? DistanceTarget{nullptr, &in.model->mesh} : DistanceTarget{&in.cloud, nullptr};
+}
+
 }  // namespace plumb

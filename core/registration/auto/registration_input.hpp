@@ -6,6 +6,7 @@
 
 #include "model/bim_model.hpp"
 #include "model/dataset.hpp"
+#include "quality/cloud_distance.hpp"
 #include "registration/auto/registration_pipeline.hpp"
 
 namespace plumb {
@@ -28,5 +29,9 @@ struct RegistrationInput {
 RegistrationInput makeRegistrationInput(const Dataset& data, const RigidTransform& to_world);
 /// Throws FileError when the model has no triangles.
 RegistrationInput makeRegistrationInput(const BimModel& model, const RigidTransform& to_world);
+
+/// What distances to this side are measured to: the model's triangles, else the merged cloud
+/// (its sensor origins orient the signs). Points into `in`.
+DistanceTarget distanceTarget(const RegistrationInput& in);
 
 }  // namespace plumb

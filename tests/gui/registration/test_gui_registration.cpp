@@ -5,6 +5,8 @@
 // point pairs + ICP, project save/open, exports. Screenshots go to
 // <build>/test-artifacts/gui_registration/.
 #include <QApplication>
+#include <QCheckBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QDoubleSpinBox>
@@ -14,6 +16,8 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 
@@ -179,13 +183,16 @@ class GuiRegistrationTest : public QObject {
     QVERIFY(d && d->all.matched > d->all.distances.size() / 2);
     // Registered on its model: the median distance is at the noise level (2 mm sigma TLS).
     QVERIFY2(d->all.median < 0.01, qPrintable(QString::number(d->all.median)));
-    // Histogram over [0, 0.1 m): most matched points in the bins below 1 cm.
+    // Signed distances, histogram over [-0.1, 0.1 m): most matched points within 1 cm of 0.
     const DistanceHistogram& h = panel.histogram().histogram();
+    QVERIFY(d->signed_values);
+    QCOMPARE(h.lo, -0.1);
     QCOMPARE(h.hi, 0.1);
     std::size_t in_bins = 0, below_cm = 0;
     for (std::size_t i = 0; i < h.counts.size(); ++i) {
       in_bins += h.counts[i];
-      if ((double(i) + 1) * h.binWidth() <= 0.01 + 1e-12) below_cm += h.counts[i];
+      const double from = h.lo + double(i) * h.binWidth();
+      if (from >= -0.01 - 1e-12 && from + h.binWidth() <= 0.01 + 1e-12) below_cm += h.counts[i];
     }
     QCOMPARE(in_bins, d->all.matched);
     QVERIFY2(below_cm > in_bins / 2, qPrintable(QString("%1 of %2").arg(below_cm).arg(in_bins)));
@@ -197,14 +204,58 @@ class GuiRegistrationTest : public QObject {
     QVERIFY(panel.legendVisible());
     const QImage qa = grabView(app.view);
     saveScreenshot(app.view, artefact("distance_colours.png"));
-    // Points near the model are blue on the distance ramp: many blue pixels.
-    const int blue = countHue(qa, 240);
-    QVERIFY2(blue > qa.width() * qa.height() / 100, qPrintable(QString::number(blue)));
+    // Points on the model's surfaces are near white on the blue-white-red ramp (left of the
+    // legend).
+    const QImage points = qa.copy(0, 0, qa.width() * 4 / 5, qa.height());
+    const int white = countColor(points, QColor(247, 247, 247), 16);
+    QVERIFY2(white > points.width() * points.height() / 50, qPrintable(QString::number(white)));
 
     // Reverting the result puts the source back.
     model_->setVisible(true);
     panel.revert();
     QVERIFY(layerTransform(*indoor_).isIdentity());
+  }
+
+  void signedDistancesUnsignedOptionAndExport() {
+    AppContext& app = window_->context();
+    RegistrationPanel& panel = *app.registration;
+    setLayerTransform(app.scene, *indoor_, demo().truth);  // registered without running it
+    colourByDistance();
+    const auto d = panel.lastDistances();
+    QVERIFY(d && d->signed_values && d->all.matched > d->all.distances.size() / 2);
+    // Scanner noise puts points on both sides of the model's surfaces, without a bias.
+    std::size_t behind = 0, in_front = 0;
+    for (const float v : d->all.distances) {
+      behind += v < 0 ? 1 : 0;
+      in_front += v > 0 ? 1 : 0;
+    }
+    QVERIFY2(behind > d->all.matched / 5 && in_front > d->all.matched / 5,
+             qPrintable(QString("%1 behind, %2 in front").arg(behind).arg(in_front)));
+    QVERIFY2(std::abs(d->all.mean_signed) < 0.003, qPrintable(QString::number(d->all.mean_signed)));
+    const auto* stats = panel.findChild<QLabel*>("distanceStats");
+    QVERIFY(stats && stats->text().contains("+ in front of the target's surface"));
+
+    // Exports carry the distances shown as the "distance" field, in each format.
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    const QStringList files = {artefact("signed.ply"), artefact("signed.e57"), artefact("signed.las")};
+    for (const QString& f : files) exportRegisteredDataset(app, *indoor_, f);
+    QVERIFY(idle.wait(kTaskTimeoutMs));
+    QTRY_VERIFY_WITH_TIMEOUT(app.tasks.runningCount() == 0, kTaskTimeoutMs);
+    QCOMPARE(app.log.errorCount(), 0);
+    const Dataset& shown = static_cast<DatasetLayer*>(indoor_)->dataset();
+    for (const QString& f : files) expectDistanceField(f, shown, d->per_scan);
+
+    // The unsigned option (the dock's "Signed" box): every distance >= 0, the ramp from 0.
+    auto* signed_box = panel.findChild<QCheckBox*>("signed");
+    QVERIFY(signed_box && signed_box->isChecked());
+    signed_box->setChecked(false);
+    QVERIFY(!panel.distanceParams().signed_distances);
+    colourByDistance();
+    const auto u = panel.lastDistances();
+    QVERIFY(u && !u->signed_values);
+    QVERIFY(std::none_of(u->all.distances.begin(), u->all.distances.end(), [](float v) { return v < 0; }));
+    QCOMPARE(panel.histogram().histogram().lo, 0.0);
+    QVERIFY(!stats->text().contains("signed"));
   }
 
   void manualPairsThenIcp() {
@@ -423,6 +474,37 @@ class GuiRegistrationTest : public QObject {
 
  private:
   /// Zooms on the bulk of the indoor scans (they also see far ground through the windows).
+  void colourByDistance() {
+    RegistrationPanel& panel = *window_->context().registration;
+    QSignalSpy done(&panel, &RegistrationPanel::distancesComputed);
+    QTest::mouseClick(panel.findChild<QPushButton*>("colourByDistance"), Qt::LeftButton);
+    QVERIFY(done.wait(kTaskTimeoutMs));
+    QVERIFY(done.at(0).at(0).toBool());
+  }
+
+  /// `file` read back holds the field "distance" equal to `per_scan` (the points of `shown`'s
+  /// scans in order; writers that drop points without coordinates drop their distance too).
+  static void expectDistanceField(const QString& file, const Dataset& shown,
+                                  const std::vector<std::vector<float>>& per_scan) {
+    std::vector<float> all, finite;
+    for (std::size_t s = 0; s < shown.scans.size(); ++s)
+      for (std::size_t i = 0; i < per_scan[s].size(); ++i) {
+        all.push_back(per_scan[s][i]);
+        if (shown.scans[s].cloud.positions[i].allFinite()) finite.push_back(per_scan[s][i]);
+      }
+    std::vector<float> got;
+    for (const auto& scan : readDataset(file.toStdString()).scans) {
+      const ScalarField* f = scan.cloud.findScalarField("distance");
+      QVERIFY2(f, qPrintable(file));
+      got.insert(got.end(), f->values.begin(), f->values.end());
+    }
+    const std::vector<float>& expected = got.size() == all.size() ? all : finite;
+    QCOMPARE(got.size(), expected.size());
+    for (std::size_t i = 0; i < got.size(); ++i)
+      QVERIFY2(std::isnan(got[i]) ? std::isnan(expected[i]) : got[i] == expected[i],
+               qPrintable(QString("%1: point %2").arg(file).arg(i)));
+  }
+
   void frameIndoor() {
     AppContext& app = window_->context();
     double b[6];

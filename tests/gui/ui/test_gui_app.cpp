@@ -195,8 +195,8 @@ class GuiAppTest : public QObject {
     std::vector<float> distances(source.size());
     for (std::size_t i = 0; i < distances.size(); ++i) distances[i] = float(i % 1000) / 1000.0f;
     std::vector<Rgb> expected(source.size());
-    fillDistanceColors(distances, 1.0, expected);
-    scan->setDistances(distances, 1.0);
+    fillDistanceColors(distances, DistanceScale{1.0, false}, expected);
+    scan->setDistances(distances, DistanceScale{1.0, false});
     PointStyle by_distance;
     by_distance.mode = PointColorMode::Distance;
     scan->setStyle(by_distance, 0.0, 1.0);

@@ -217,7 +217,7 @@ class GuiResponsiveTest : public QObject {
     // Distances (registration QA): the distance colours are computed in the background too.
     std::vector<float> distances(kPoints);
     for (std::size_t i = 0; i < kPoints; ++i) distances[i] = static_cast<float>(i % 1000) * 1e-4f;
-    layer->setDistances({distances}, 0.1);
+    layer->setDistances({distances}, DistanceScale{0.1, false});
     scene.layerChanged(layer);
     QCOMPARE(layer->style().mode, PointColorMode::Distance);
     QVERIFY(layer->coloringPending());

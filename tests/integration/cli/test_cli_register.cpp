@@ -6,6 +6,8 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
+#include <cstdlib>
 #include <random>
 #include <sstream>
 
@@ -76,8 +78,17 @@ TEST(CliRegister, SimulatedScanToModelMatchesTruth) {
   ASSERT_EQ(truth.at("datasets").at(0).at("file"), "indoor.e57");
   const Eigen::Matrix4d expected = transformOf(truth["datasets"][0]["transform"]["matrix"]).matrix();
 
+  // Distance options are checked before anything is read or written.
+  const CliResult no_output = plumbCli(dir, "register sim/indoor.e57 sim/model.ply --distances");
+  EXPECT_EQ(no_output.exit_code, 1);
+  EXPECT_NE(no_output.err.find("--distances needs -o"), std::string::npos) << no_output.err;
+  const CliResult bad_max = plumbCli(dir, "register sim/indoor.e57 sim/model.ply -o x.e57 --distances --distance-max 0");
+  EXPECT_EQ(bad_max.exit_code, 1);
+  EXPECT_NE(bad_max.err.find("--distance-max"), std::string::npos) << bad_max.err;
+  EXPECT_FALSE(fs::exists(dir / "x.e57"));
+
   const CliResult r = plumbCli(dir, "register sim/indoor.e57 sim/model.ply --seed 3 --transform T.json "
-                              "--report R.json -o registered.e57");
+                              "--report R.json -o registered.e57 --distances");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Eigen::Matrix4d got =
       transformOf(nlohmann::json::parse(readAll(dir / "T.json"))["matrix"]).matrix();
@@ -108,6 +119,19 @@ TEST(CliRegister, SimulatedScanToModelMatchesTruth) {
   const CliResult info = plumbCli(dir, "info registered.e57");
   ASSERT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find("scans:     4\n"), std::string::npos) << info.out;
+  // --distances: every scan carries the "distance" field, signed (points on both sides of the
+  // model's surfaces, 2 mm noise), within the default 0.1 m radius; the independent E57 parser
+  // sees it as a float32 prototype field.
+  const auto described = nlohmann::json::parse(plumbCli(dir, "info registered.e57 --json").out);
+  for (const auto& scan : described.at(0).at("scans")) {
+    const auto fields = scan.at("fields").get<std::vector<std::string>>();
+    EXPECT_NE(std::find(fields.begin(), fields.end(), "distance"), fields.end()) << scan.dump();
+  }
+  const fs::path inspect = dir / "inspect.txt";
+  ASSERT_EQ(std::system(("python3 " PLUMB_E57_INSPECT " '" + (dir / "registered.e57").string() + "' > '" +
+                         inspect.string() + "'").c_str()), 0);
+  const std::string parsed = readAll(inspect);
+  EXPECT_NE(parsed.find("plumb:distance:Float/single"), std::string::npos) << parsed;
 
   // Check visually (exit 3): without refinement the degrees of freedom are not checked on the
   // points; the results are written and the warning is repeated on stderr.

@@ -177,8 +177,9 @@ def inspect(path):
         proto = [c for c in pts if strip_ns(c.tag) == 'prototype'][0]
         fields = fields_of(proto, nsrev)
         print('  recordCount=%d fileOffset=%s' % (count, pts.get('fileOffset')))
-        print('  prototype:', ' '.join('%s:%s%s' % (n, f['type'], ('[%d,%d]' % (f['min'], f['max'])
-                                        if 'min' in f else '')) for n, f in fields))
+        print('  prototype:', ' '.join('%s:%s%s%s' % (n, f['type'], ('[%d,%d]' % (f['min'], f['max'])
+                                        if 'min' in f else ''), ('/' + f['precision'] if 'precision' in f else ''))
+                                       for n, f in fields))
         try:
             v = decode_points(lg, pts, fields, count, len(raw))
         except Exception as e:  # noqa

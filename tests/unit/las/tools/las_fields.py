@@ -7,6 +7,9 @@ written from docs/LAS_FORMAT.md; no code shared with core/io/las).
   las_fields.py dump FILE.las    prints the header facts, then one line per point with every
                                  field but X/Y/Z, in a form that does not depend on the format
                                  (so a PDRF 6 file and its conversion compare line by line)
+  las_fields.py extra FILE.las   prints the Extra Bytes VLR (LASF_Spec 4) descriptors, one line
+                                 'field NAME type T at OFFSET', then one line per point,
+                                 'point I NAME=VALUE ...' (float/double fields, raw values)
 """
 import struct
 import sys
@@ -87,5 +90,35 @@ def dump(path):
                source, gps, rgb))
 
 
+def extra(path):
+    """The Extra Bytes VLR: 54-byte VLR headers walked from the header size; each 192-byte
+    descriptor has data_type @2 (9 float, 10 double) and a 32-byte name @4; described fields
+    follow one another from the end of the format's core record."""
+    b = open(path, 'rb').read()
+    assert b[0:4] == b'LASF', 'not a LAS file'
+    header_size, offset, nvlr, fmt, reclen = struct.unpack_from('<HIIBH', b, 94)
+    fmt &= 0x3F
+    minor = b[25]
+    count = struct.unpack_from('<Q', b, 247)[0] if minor >= 4 else struct.unpack_from('<I', b, 107)[0]
+    fields, pos, at = [], header_size, SIZE[fmt]
+    for _ in range(nvlr):
+        user = b[pos + 2:pos + 18].rstrip(b'\0').decode()
+        rid, length = struct.unpack_from('<HH', b, pos + 18)
+        if user == 'LASF_Spec' and rid == 4:
+            for d in range(length // 192):
+                desc = b[pos + 54 + 192 * d: pos + 54 + 192 * (d + 1)]
+                kind = desc[2]
+                name = desc[4:36].rstrip(b'\0').decode()
+                size = {9: 4, 10: 8}[kind]
+                fields.append((name, kind, at))
+                print('field %s type %d at %d' % (name, kind, at))
+                at += size
+        pos += 54 + length
+    for i in range(count):
+        r = b[offset + i * reclen: offset + (i + 1) * reclen]
+        vals = ['%s=%r' % (n, struct.unpack_from('<f' if k == 9 else '<d', r, o)[0]) for n, k, o in fields]
+        print('point %d %s' % (i, ' '.join(vals)))
+
+
 if __name__ == '__main__':
-    {'make': make, 'dump': dump}[sys.argv[1]](sys.argv[2])
+    {'make': make, 'dump': dump, 'extra': extra}[sys.argv[1]](sys.argv[2])
