@@ -8,6 +8,15 @@ find_package(CLI11 REQUIRED)
 find_package(CGAL REQUIRED)
 find_package(PROJ 9 REQUIRED CONFIG)  # coordinate systems: EPSG codes to WKT (LAS 1.4)
 
+# IFC++ (libifcplusplus-dev, no CMake config): the IFC reader plumb-import falls back to when
+# assimp cannot read an IFC. Its headers are many and noisy: included as system headers.
+find_path(IFCPP_INCLUDE_DIR ifcpp/reader/ReaderSTEP.h REQUIRED)
+find_library(IFCPP_LIBRARY IfcPlusPlus PATH_SUFFIXES ifcplusplus REQUIRED)
+find_library(CARVE_LIBRARY carve PATH_SUFFIXES ifcplusplus REQUIRED)
+add_library(ifcpp::ifcpp INTERFACE IMPORTED)
+target_include_directories(ifcpp::ifcpp SYSTEM INTERFACE ${IFCPP_INCLUDE_DIR})
+target_link_libraries(ifcpp::ifcpp INTERFACE ${IFCPP_LIBRARY} ${CARVE_LIBRARY})
+
 # PCL's config asks VTK for GUISupportQt, which Debian builds against Qt5 and which would
 # poison this Qt6 project (docs/QT_VTK.md). Hide VTK from PCL: its targets then link no VTK.
 set(CMAKE_DISABLE_FIND_PACKAGE_VTK TRUE)

@@ -30,7 +30,7 @@ echo "contents: $(wc -l <contents.txt) entries, binaries + desktop entry + icon 
 dpkg-deb -f "$deb" Package Version Architecture Depends >control.txt
 cat control.txt
 depends=$(sed -n 's/^Depends: //p' control.txt)
-for lib in libc6 libstdc++6 libqt6widgets6 libqt6openglwidgets6 libqt6svg6 libvtk9.1 libproj25; do
+for lib in libc6 libstdc++6 libqt6widgets6 libqt6openglwidgets6 libqt6svg6 libvtk9.1 libproj25 libifcplusplus; do
   echo "$depends" | grep -q "$lib" || fail "Depends lacks $lib (shlibdeps): $depends"
 done
 echo "$depends" | grep -qi "qt5" && fail "Depends names a Qt5 package: $depends"

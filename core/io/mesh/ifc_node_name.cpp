@@ -1,5 +1,8 @@
-// IFC node names as assimp writes them: "<IfcType>_<Name>_<GlobalId>" (built into plumb_io_mesh
-// for tests and into the plumb-import helper, which names the elements it sends).
+// IFC names: node names as assimp writes them ("<IfcType>_<Name>_<GlobalId>"), IFC types as
+// Plumb reports them, the schema a file declares (built into plumb_io_mesh and into the
+// plumb-import helper, which names the elements it sends).
+#include <fstream>
+
 #include "io/mesh/mesh_io.hpp"
 
 namespace plumb {
@@ -22,12 +25,30 @@ BimElement elementFromIfcNodeName(const std::string& node_name) {
     rest.clear();
   }
   e.name = rest;
+  e.type = ifcBaseType(e.type);
+  return e;
+}
+
+std::string ifcBaseType(std::string type) {
   for (const char* suffix : {"StandardCase", "ElementedCase"}) {
     const std::string s(suffix);
-    if (e.type.size() > s.size() && e.type.compare(e.type.size() - s.size(), s.size(), s) == 0)
-      e.type.erase(e.type.size() - s.size());
+    if (type.size() > s.size() && type.compare(type.size() - s.size(), s.size(), s) == 0)
+      type.erase(type.size() - s.size());
   }
-  return e;
+  return type;
+}
+
+std::string ifcFileSchema(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  for (int i = 0; i < 200 && std::getline(in, line); ++i) {
+    const auto k = line.find("FILE_SCHEMA");
+    if (k == std::string::npos) continue;
+    const auto a = line.find('\'', k);
+    const auto b = a == std::string::npos ? a : line.find('\'', a + 1);
+    if (b != std::string::npos) return line.substr(a + 1, b - a - 1);
+  }
+  return "";
 }
 
 }  // namespace plumb

@@ -15,13 +15,13 @@ using helper_failure::signalName;
 
 constexpr const char* kWhatToDo = "export the model again from the authoring tool, or as glTF/OBJ, and import that file";
 
-[[noreturn]] void crashed(const std::filesystem::path& file, const import_process::Outcome& o) {
+[[noreturn]] void crashed(const std::filesystem::path& file, const import_process::Outcome& o, const std::string& parser) {
   const std::string note = lastLine(o.error_tail);
   if (note.find("stack overflow") != std::string::npos)
-    throw FileError(file, "assimp overflowed its stack (" + signalName(o.signal) +
+    throw FileError(file, parser + " overflowed its stack (" + signalName(o.signal) +
                               ") importing this file: its node hierarchy nests too deeply; flatten "
                               "the hierarchy, or " + std::string(kWhatToDo));
-  std::string msg = "assimp crashed (" + signalName(o.signal) + ") importing this file";
+  std::string msg = parser + " crashed (" + signalName(o.signal) + ") importing this file";
   if (!note.empty() && o.signal == SIGABRT) msg += " (" + note + ")";
   msg += "; Plumb itself is unaffected. The file is probably damaged";
   FileLocation where;
@@ -53,13 +53,14 @@ std::string danglingReference(const std::filesystem::path& ifc, FileLocation& wh
   return found;
 }
 
-void raise(const std::filesystem::path& file, const import_process::Outcome& o, const Limits& limits) {
-  static const helper_failure::Wording kWording{
+void raise(const std::filesystem::path& file, const import_process::Outcome& o, const Limits& limits,
+           const std::string& parser) {
+  const helper_failure::Wording wording{
       "importing this model", "the model import",
-      " (assimp is slow on very large polygons and some damaged files); raise the limit with "
+      " (" + parser + " is slow on very large polygons and some damaged files); raise the limit with "
       "PLUMB_IMPORT_TIMEOUT=SECONDS, or simplify/triangulate the model and export it again",
       "", "split the model"};
-  helper_failure::raise(file, o, limits, kWording, [&](const import_process::Outcome& out) { crashed(file, out); });
+  helper_failure::raise(file, o, limits, wording, [&](const import_process::Outcome& out) { crashed(file, out, parser); });
 }
 
 }  // namespace plumb::import_failure

@@ -1,10 +1,12 @@
-// readMesh: the assimp import, isolated in the plumb-import helper process (mesh_io.hpp).
+// readMesh: the assimp import, and the IFC++ one for IFC that assimp cannot read, each isolated
+// in a plumb-import helper process (mesh_io.hpp).
 #include <stdlib.h>
 #include <unistd.h>
 
 #include <fstream>
 #include <optional>
 #include <system_error>
+#include <vector>
 
 #include "common/error.hpp"
 #include "io/isolation/import_process.hpp"
@@ -65,9 +67,70 @@ IfcPlacement ifcPlacement(const std::filesystem::path& path) {
 
 /// The helper's output as a model, or the FileError it or its end describe.
 BimModel interpret(const std::filesystem::path& file, const import_process::Outcome& o,
-                   const import_failure::Limits& limits) {
+                   const import_failure::Limits& limits, const std::string& parser) {
   return helper_failure::resultOrThrow(file, o, "the model import helper", model_stream::decode,
-                                       [&] { import_failure::raise(file, o, limits); });
+                                       [&] { import_failure::raise(file, o, limits, parser); });
+}
+
+/// One file's helper runs: where the helper is, the limits, and the IFC's placement.
+struct HelperRun {
+  std::filesystem::path helper;
+  import_failure::Limits limits;
+  IfcPlacement placement;
+  Progress* progress;
+
+  /// Runs the helper with `options` (none: assimp) and collects its outcome.
+  import_process::Outcome start(const std::filesystem::path& path, const std::vector<std::string>& options) const {
+    std::optional<TempIfc> copy;
+    try {
+      if (placement.shift) copy.emplace(placement.shift->text);
+      return import_process::run({helper, options, copy ? copy->path() : path, limits.seconds, limits.memory_mib, 0},
+                                 progress);
+    } catch (const std::system_error& e) {  // no pipe, no process, no temporary file
+      throw FileError(path, std::string("cannot run the model import helper ") + helper.string() + ": " + e.what());
+    }
+  }
+
+  /// The model of an outcome of `parser`, placed in the world, or its FileError.
+  BimModel finish(const std::filesystem::path& path, const import_process::Outcome& outcome,
+                  const std::string& parser) const {
+    BimModel model = interpret(path, outcome, limits, parser);
+    if (placement.shift)
+      for (auto& v : model.mesh.vertices) v += placement.shift->metres;
+    if (placement.map) ifc_georef::applyMapConversion(*placement.map, model.mesh);
+    return model;
+  }
+};
+
+/// Whether IFC++ should have a go after assimp's `outcome` on an IFC: assimp refused the file
+/// with an error of its own, or crashed on a file that defines every entity it refers to (one
+/// that does not is damaged, and the crash report says where). Not after the time or memory
+/// limit: those say the limits are the problem.
+bool worthIfcpp(const std::filesystem::path& path, const import_process::Outcome& outcome) {
+  if (outcome.exited) return outcome.exit_code == 1;
+  if (outcome.timed_out) return false;
+  FileLocation unused;
+  return import_failure::danglingReference(path, unused).empty();
+}
+
+/// assimp. Under ModelParser::automatic, an IFC that assimp cannot read (worthIfcpp) is read
+/// by IFC++; if IFC++ fails too, the error gives both reasons.
+BimModel readWithFallback(const std::filesystem::path& path, const HelperRun& run, ModelParser parser) {
+  const import_process::Outcome assimp = run.start(path, {});
+  if (parser != ModelParser::automatic || lowerExtension(path) != ".ifc" || !worthIfcpp(path, assimp))
+    return run.finish(path, assimp, "assimp");
+  std::optional<FileError> assimp_error;
+  try {
+    return run.finish(path, assimp, "assimp");
+  } catch (const FileError& e) {
+    assimp_error = e;
+  }
+  try {
+    return run.finish(path, run.start(path, {"--ifcpp"}), "IFC++");
+  } catch (const FileError& e) {
+    throw FileError(path, assimp_error->message() + ". IFC++ cannot read it either: " + e.message(),
+                    assimp_error->where());
+  }
 }
 
 }  // namespace
@@ -78,29 +141,20 @@ ImportLimits ImportLimits::fromEnvironment() {
   return {l.seconds, l.memory_mib};
 }
 
-BimModel readMesh(const std::filesystem::path& path, Progress* progress, const ImportLimits& limits) {
+BimModel readMesh(const std::filesystem::path& path, Progress* progress, const ImportLimits& limits,
+                  ModelParser parser) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw FileError(path, "no such file");
   if (std::filesystem::file_size(path, ec) == 0) throw FileError(path, "file is empty (0 bytes)");
+  const bool ifc = lowerExtension(path) == ".ifc";
+  if (parser == ModelParser::ifcpp && !ifc) throw FileError(path, "IFC++ reads only IFC files (.ifc)");
   reportProgress(progress, 0.0, "importing model");
-  const auto helper = helper_failure::helperOrThrow(path, "import models");
-  const import_failure::Limits used{limits.seconds,
-                                    limits.memory_mib ? limits.memory_mib : helper_failure::defaultMemoryMib()};
-  const IfcPlacement placement = ifcPlacement(path);
-  const auto& shift = placement.shift;
-  std::optional<TempIfc> copy;
-  import_process::Outcome outcome;
-  try {
-    if (shift) copy.emplace(shift->text);
-    outcome = import_process::run({helper, {}, copy ? copy->path() : path, used.seconds, used.memory_mib, 0}, progress);
-  } catch (const std::system_error& e) {  // no pipe, no process, no temporary file
-    throw FileError(path, std::string("cannot run the model import helper ") + helper.string() + ": " + e.what());
-  }
-  BimModel model = interpret(path, outcome, used);
+  const HelperRun run{helper_failure::helperOrThrow(path, "import models"),
+                      {limits.seconds, limits.memory_mib ? limits.memory_mib : helper_failure::defaultMemoryMib()},
+                      ifcPlacement(path), progress};
+  BimModel model = parser == ModelParser::ifcpp ? run.finish(path, run.start(path, {"--ifcpp"}), "IFC++")
+                                                : readWithFallback(path, run, parser);
   model.source = path;
-  if (shift)
-    for (auto& v : model.mesh.vertices) v += shift->metres;
-  if (placement.map) ifc_georef::applyMapConversion(*placement.map, model.mesh);
   reportProgress(progress, 1.0, "importing model");
   return model;
 }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -35,7 +36,8 @@ std::filesystem::path edited(const std::string& ifc, const std::string& from, co
     }
   }
   EXPECT_TRUE(found) << from;
-  const auto path = test::scratchDir("ifc_georef") / name;
+  // One folder per file: scratchDir empties it, and the tests run in parallel.
+  const auto path = test::scratchDir("ifc_georef_" + std::filesystem::path(name).stem().string()) / name;
   test::writeAll(path, out.str());
   return path;
 }

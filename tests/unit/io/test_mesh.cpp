@@ -1,6 +1,7 @@
 // assimp import of the shared IFC files (element counts verified by verify_shared_data.py's
-// entity regex and shared/data/README.md), axis conversion, the IFC4 failure message, and
-// OBJ/STL/glTF round trips.
+// entity regex and shared/data/README.md), axis conversion, the IFC4 failure message, the
+// IFC++ import where assimp fails (and against assimp where both read), and OBJ/STL/glTF round
+// trips.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -87,10 +88,10 @@ TEST(Mesh, IfcOpenHouse) {
   EXPECT_LT(walls.size().x(), 30.0);
 }
 
-TEST(Mesh, UnreadableIfc4GivesActionableError) {
+TEST(Mesh, AssimpAloneRejectsFzkWithActionableError) {
   const auto path = test::sharedData("ifc/AC20-FZK-Haus.ifc");
   try {
-    readMesh(path);
+    readMesh(path, nullptr, ImportLimits::fromEnvironment(), ModelParser::assimp);
     FAIL() << "assimp 5.2 is expected to reject this IFC4 file";
   } catch (const FileError& e) {
     const std::string m = e.what();
@@ -100,6 +101,50 @@ TEST(Mesh, UnreadableIfc4GivesActionableError) {
     EXPECT_NE(m.find("IFC2X3"), std::string::npos) << m;
     EXPECT_NE(m.find("glTF/OBJ"), std::string::npos) << m;
     EXPECT_EQ(e.where().line.value_or(0), 11879u);  // grep -n '^#20909=' AC20-FZK-Haus.ifc
+  }
+}
+
+TEST(Mesh, IfcppReadsTheIfc4ThatAssimpRejects) {
+  // File and shared/data/README.md: IfcWall 13, IfcWindow 11, IfcDoor 5, IfcSlab 4; a 2-storey
+  // house about 12 x 10 m and 6-7 m high (walls, windows, roof).
+  const BimModel m = readMesh(test::sharedData("ifc/AC20-FZK-Haus.ifc"));
+  expectElementCounts(m, {{"IfcWall", 13}, {"IfcWindow", 11}, {"IfcDoor", 5}, {"IfcSlab", 4}});
+  EXPECT_EQ(m.format, "ifc");
+  EXPECT_GT(m.mesh.triangleCount(), 5000u);
+  ASSERT_EQ(m.triangle_element.size(), m.mesh.triangleCount());
+  for (const BimElement& e : m.elements) EXPECT_EQ(e.guid.size(), 22u) << e.type << " " << e.name;
+  const Eigen::Vector3d size = m.mesh.bounds().size();
+  EXPECT_GT(size.x(), 10.0);
+  EXPECT_LT(size.x(), 20.0);
+  EXPECT_GT(size.z(), 5.0);
+  EXPECT_LT(size.z(), 9.0);
+}
+
+TEST(Mesh, IfcppAndAssimpAgreeOnTheDuplex) {
+  const auto path = test::sharedData("ifc/duplex.ifc");
+  const BimModel a = readMesh(path, nullptr, ImportLimits::fromEnvironment(), ModelParser::assimp);
+  const BimModel i = readMesh(path, nullptr, ImportLimits::fromEnvironment(), ModelParser::ifcpp);
+  for (const char* type : {"IfcWall", "IfcWindow", "IfcDoor", "IfcSlab"})
+    EXPECT_EQ(i.elementCountOfType(type), a.elementCountOfType(type)) << type;
+  // The same frame (Z up, metres, same origin): the wall boxes agree to the centimetre.
+  const auto wallBounds = [](const BimModel& m) {
+    Bounds b;
+    for (auto t : m.trianglesOfType("IfcWall"))
+      for (auto v : m.mesh.triangles[t]) b.extend(m.mesh.vertices[v]);
+    return b;
+  };
+  EXPECT_LT((wallBounds(a).min - wallBounds(i).min).norm(), 0.01);
+  EXPECT_LT((wallBounds(a).max - wallBounds(i).max).norm(), 0.01);
+}
+
+TEST(Mesh, IfcppReadsOnlyIfc) {
+  const auto dir = test::scratchDir("mesh_ifcpp_obj");
+  test::writeAll(dir / "a.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n");
+  try {
+    readMesh(dir / "a.obj", nullptr, ImportLimits::fromEnvironment(), ModelParser::ifcpp);
+    FAIL();
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("IFC++ reads only IFC files"), std::string::npos) << e.what();
   }
 }
 
@@ -163,7 +208,8 @@ TEST(Mesh, EmptyAndGarbageFiles) {
   try {
     readMesh(dir / "g.ifc");
     FAIL();
-  } catch (const FileError& e) {
+  } catch (const FileError& e) {  // assimp refuses it, and so does IFC++ after it
     EXPECT_NE(std::string(e.what()).find("g.ifc"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("IFC++ cannot read it either"), std::string::npos) << e.what();
   }
 }

@@ -1,14 +1,17 @@
 // The model import runs assimp in the plumb-import helper: files that crash assimp, overflow
-// its stack or run past the time limit end in a FileError naming the file; Plumb survives.
+// its stack or run past the time limit end in a FileError naming the file; Plumb survives. An
+// IFC that assimp refuses goes to IFC++; when both refuse, the error gives both reasons.
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
 #include <string>
 
 #include "common/error.hpp"
 #include "io/io.hpp"
 #include "io/mesh/mesh_io.hpp"
 #include "support/damaged_models.hpp"
+#include "support/scoped_env.hpp"
 #include "support/test_support.hpp"
 
 using namespace plumb;
@@ -85,13 +88,42 @@ TEST(MeshIsolation, ParsedIfcErrorsKeepEntityAndLine) {
   // The error assimp reports (not a crash) still names the entity and its line.
   const auto path = test::sharedData("ifc/AC20-FZK-Haus.ifc");
   try {
-    readMesh(path);
+    readMesh(path, nullptr, ImportLimits::fromEnvironment(), ModelParser::assimp);
     FAIL();
   } catch (const FileError& e) {
     EXPECT_NE(std::string(e.what()).find("entity #20909 (IfcSpace)"), std::string::npos) << e.what();
     EXPECT_EQ(e.where().line.value_or(0), 11879u);
     EXPECT_EQ(e.file(), path);
   }
+}
+
+TEST(MeshIsolation, IfcBothParsersRefuseGivesBothReasons) {
+  // assimp 5.2 wants an owner history on IfcBuilding #50; IFC++ cannot parse the arcs of the
+  // IfcIndexedPolyCurve profile #308, the only geometry (tests/data/ifc/README.md).
+  const auto path = std::filesystem::path(PLUMB_SOURCE_DIR) / "tests/data/ifc/slab-standard-case.ifc";
+  try {
+    readMesh(path);
+    FAIL() << "neither parser is expected to read " << path;
+  } catch (const FileError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("entity #50 (IfcRoot)"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("IFC++ cannot read it either"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("IfcIndexedPolyCurve"), std::string::npos) << msg;
+    EXPECT_EQ(e.where().line.value_or(0), 31u);  // assimp's entity keeps its line (grep -n '^#50=')
+  }
+}
+
+TEST(MeshIsolation, IfcppCrashIsWordedForIfcpp) {
+  // The helper's fault hook makes the IFC++ run die as a crashing parser would.
+  const auto path = std::filesystem::path(PLUMB_SOURCE_DIR) / "tests/data/ifc/wall-standard-case.ifc";
+  std::string msg;
+  try {
+    test::ScopedEnv fault("PLUMB_IMPORT_HELPER_FAULT", "segv");
+    readMesh(path, nullptr, ImportLimits::fromEnvironment(), ModelParser::ifcpp);
+  } catch (const FileError& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("IFC++ crashed (SIGSEGV"), std::string::npos) << msg;
 }
 
 TEST(MeshIsolation, CancelStopsTheHelper) {

@@ -15,23 +15,14 @@
 #include "io/io.hpp"
 #include "io/pcd/helper/pcd_pcl_reader.hpp"
 #include "io/pcd/pcd_io.hpp"
+#include "support/scoped_env.hpp"
 #include "support/test_support.hpp"
 
 using namespace plumb;
 
 namespace {
 
-/// Sets an environment variable for the life of this object.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) { setenv(name, value.c_str(), 1); }
-  ~ScopedEnv() { unsetenv(name_); }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  const char* name_;
-};
+using test::ScopedEnv;
 
 template <class T, class A>
 bool sameBytes(const std::vector<T, A>& a, const std::vector<T, A>& b) {

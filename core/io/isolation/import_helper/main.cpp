@@ -1,10 +1,10 @@
 // plumb-import: runs one third-party parser on one file in its own process and writes the
 // result to its standard output as a stream: assimp for models (io/mesh/model_stream.hpp, run
-// by plumb::readMesh), PCL's PCD reader with --pcd (io/pcd/pcd_stream.hpp, run by
-// plumb::readPcd). The reader that runs it kills it at its time limit and turns a crash into a
-// FileError; not meant to be run by hand.
+// by plumb::readMesh), IFC++ for IFC models with --ifcpp (same stream), PCL's PCD reader with
+// --pcd (io/pcd/pcd_stream.hpp, run by plumb::readPcd). The reader that runs it kills it at its
+// time limit and turns a crash into a FileError; not meant to be run by hand.
 //
-//   plumb-import [--memory-mib N] [--pcd] FILE
+//   plumb-import [--memory-mib N] [--pcd | --ifcpp] FILE
 //
 // Exit status: 0 result written, 1 error record written, 2 usage, 3 out of memory (under
 // --memory-mib, set here as RLIMIT_AS). A stack overflow is noted on stderr before the
@@ -20,6 +20,7 @@
 #include "common/error.hpp"
 #include "io/isolation/import_helper/helper_process.hpp"
 #include "io/mesh/helper/assimp_reader.hpp"
+#include "io/mesh/helper/ifcpp_reader.hpp"
 #include "io/mesh/model_stream.hpp"
 #include "io/pcd/helper/pcd_pcl_reader.hpp"
 #include "io/pcd/pcd_stream.hpp"
@@ -40,13 +41,25 @@ bool readModel(int out, const std::filesystem::path& path) {
   return plumb::model_stream::writeModel(out, helper::importWithAssimp(path));
 }
 
+bool readIfcWithIfcpp(int out, const std::filesystem::path& path) {
+  return plumb::model_stream::writeModel(out, helper::importWithIfcpp(path));
+}
+
 bool readPcd(int out, const std::filesystem::path& path) {
   const plumb::PclPcd pcd = plumb::readWithPcl(path, plumb::checkPcdFile(path));
   return plumb::pcd_stream::writeCloud(out, pcd.layout, pcd.points);
 }
 
 const Format kModel{"assimp", readModel, plumb::model_stream::writeFailure};
+const Format kIfcpp{"IFC++", readIfcWithIfcpp, plumb::model_stream::writeFailure};
 const Format kPcd{"PCL", readPcd, plumb::pcd_stream::writeFailure};
+
+/// The format an option names ("--pcd", "--ifcpp"), or null.
+const Format* formatOption(const std::string& option) {
+  if (option == "--pcd") return &kPcd;
+  if (option == "--ifcpp") return &kIfcpp;
+  return nullptr;
+}
 
 /// Reads and answers; never returns. std::_Exit: the result is written, nothing is left to tidy
 /// (no leak-checker verdict on the parsers either, which would change the exit status under
@@ -77,12 +90,9 @@ int main(int argc, char** argv) {
     memory_mib = std::strtoull(argv[i + 1], nullptr, 10);
     i += 2;
   }
-  if (i < argc && std::string(argv[i]) == "--pcd") {
-    format = &kPcd;
-    ++i;
-  }
+  if (i < argc && formatOption(argv[i])) format = formatOption(argv[i++]);
   if (i != argc - 1) {
-    helper::say("usage: plumb-import [--memory-mib N] [--pcd] FILE (run by Plumb to import models and PCD)\n");
+    helper::say("usage: plumb-import [--memory-mib N] [--pcd | --ifcpp] FILE (run by Plumb to import models and PCD)\n");
     return 2;
   }
   helper::installFaultHandler(&here);

@@ -5,23 +5,10 @@
 #include "common/error.hpp"
 #include "io/mesh/file_extension.hpp"
 #include "io/mesh/helper/assimp_reader.hpp"
+#include "io/mesh/mesh_io.hpp"
 
 namespace plumb::import_helper {
 namespace {
-
-/// FILE_SCHEMA(('IFC4')) of an IFC file's header, or "".
-std::string ifcSchema(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  for (int i = 0; i < 200 && std::getline(in, line); ++i) {
-    const auto k = line.find("FILE_SCHEMA");
-    if (k == std::string::npos) continue;
-    const auto a = line.find('\'', k);
-    const auto b = a == std::string::npos ? a : line.find('\'', a + 1);
-    if (b != std::string::npos) return line.substr(a + 1, b - a - 1);
-  }
-  return "";
-}
 
 /// 1-based line where "#id=" starts an entity in an IFC file (0 if not found).
 std::uint64_t ifcEntityLine(const std::filesystem::path& path, const std::string& id) {
@@ -44,7 +31,7 @@ void throwImportError(const std::filesystem::path& path, const std::string& err)
   std::string entity_id, entity_type;
   if (std::regex_search(err, m, std::regex(R"(entity #(\d+))"))) entity_id = m[1];
   if (std::regex_search(err, m, std::regex(R"(to (Ifc[A-Za-z0-9]+))"))) entity_type = m[1];
-  const std::string schema = ifcSchema(path);
+  const std::string schema = ifcFileSchema(path);
   std::string msg = "assimp cannot read this IFC";
   if (!schema.empty()) msg += " (schema " + schema + ")";
   if (!entity_id.empty()) msg += ": it fails on entity #" + entity_id + (entity_type.empty() ? "" : " (" + entity_type + ")");
