@@ -25,8 +25,16 @@ struct Index {
   std::vector<std::uint64_t> top_level;  ///< IfcLocalPlacement with PlacementRelTo $
   std::uint64_t site = 0, project = 0, max_id = 0;
   std::size_t last_end = 0;
-  bool whole = true;  ///< every entity of the text was seen (step::forEachEntity)
+  /// Every entity of the text was seen (step::forEachEntity), and no two of those read here
+  /// share an id.
+  bool whole = true;
 };
+
+/// Stores `e`; another entity with its id makes the index not whole.
+void keep(Index& ix, const step::Entity& e) {
+  const auto [at, added] = ix.by_id.emplace(e.id, e);
+  if (!added && at->second.begin != e.begin) ix.whole = false;
+}
 
 bool isHeadEntity(std::string_view type) {
   static const char* const types[] = {"IFCLOCALPLACEMENT", "IFCSITE", "IFCPROJECT", "IFCUNITASSIGNMENT",
@@ -38,7 +46,7 @@ bool isHeadEntity(std::string_view type) {
 void collectWanted(std::string_view text, const std::unordered_set<std::uint64_t>& wanted, Index& ix) {
   if (wanted.empty()) return;
   step::forEachEntity(text, [&](const step::Entity& e) {
-    if (wanted.count(e.id)) ix.by_id[e.id] = e;
+    if (wanted.count(e.id)) keep(ix, e);
   });
 }
 
@@ -61,17 +69,18 @@ std::unordered_set<std::uint64_t> referenced(const Index& ix, const std::vector<
 /// and directions of those.
 Index buildIndex(std::string_view text) {
   Index ix;
-  ix.whole = step::forEachEntity(text, [&](const step::Entity& e) {
+  const bool scanned = step::forEachEntity(text, [&](const step::Entity& e) {
     ix.max_id = std::max(ix.max_id, e.id);
     ix.last_end = e.end;
     if (!isHeadEntity(e.type)) return;
     const bool top = e.type == "IFCLOCALPLACEMENT" && step::splitArguments(e.args)[0] == "$";
     if (e.type == "IFCLOCALPLACEMENT" && !top) return;
-    ix.by_id[e.id] = e;
+    keep(ix, e);
     if (top) ix.top_level.push_back(e.id);
     if (e.type == "IFCSITE" && !ix.site) ix.site = e.id;
     if (e.type == "IFCPROJECT" && !ix.project) ix.project = e.id;
   });
+  ix.whole = ix.whole && scanned;
   std::vector<std::uint64_t> contexts;
   for (const auto& [id, e] : ix.by_id)
     if (e.type == "IFCGEOMETRICREPRESENTATIONCONTEXT") contexts.push_back(id);
@@ -239,7 +248,8 @@ std::optional<Shift> plan(std::string_view text) {
   const Index ix = buildIndex(text);
   const auto project = ix.by_id.find(ix.project);
   // A damaged text (a string or comment left open, an instance not of the #id=TYPE(...) shape)
-  // may hide entities whose ids the new ones would take; ids near 2^64 would wrap.
+  // may hide entities whose ids the new ones would take, and two entities with one id leave
+  // it unclear which the plan should read; ids near 2^64 would wrap.
   if (!ix.whole || ix.max_id >= kLargestId || project == ix.by_id.end()) return std::nullopt;
   const step::Entity* context = worldContext(ix, project->second);
   const auto wcs = context ? placement(ix, arg(*context, 4)) : std::nullopt;

@@ -15,7 +15,8 @@
 //     applies it (IfcSIUnit prefix, e.g. MILLI -> 0.001; assimp ignores conversion-based
 //     units such as feet, and so does the shift, so the two stay consistent).
 // The rewrite happens only when some component of the shift is 100 m or more, is finite, and
-// the file's text is whole (no string or comment left open, every instance "#id=TYPE(...);").
+// the file's text is whole (no string or comment left open, every instance "#id=TYPE(...);",
+// no id shared by two of the entities the plan reads).
 // New entities are appended after the last entity of the DATA section, so entity lines in error
 // messages stay those of the user's file.
 // Not handled (imported as before, in float): large translations below the top level (an
