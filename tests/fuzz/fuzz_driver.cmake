@@ -1,6 +1,7 @@
 # cmake -P script behind the fuzz CTest tests (see tests/fuzz/CMakeLists.txt).
 #   MODE=build: configure + build the clang tree FUZZ_ROOT/tree for MODULES.
-#   MODE=run:   run FUZZ_ROOT/tree/fuzz_MODULE for SECONDS on its corpus; fail on a crash.
+#   MODE=run:   run FUZZ_ROOT/tree/fuzz_MODULE for SECONDS on its corpus with libFuzzer's
+#               -seed=FUZZ_SEED (0: random); fail on a crash.
 cmake_minimum_required(VERSION 3.25)
 
 if(MODE STREQUAL "build")
@@ -51,8 +52,13 @@ set(crash_dir ${FUZZ_ROOT}/crashes/${MODULE})
 file(REMOVE_RECURSE ${seed_dir})
 file(MAKE_DIRECTORY ${seed_dir} ${corpus_dir} ${crash_dir})
 # Seeds: every file up to 1 MiB (big seeds slow every run) of shared/data/<module>,
-# tests/fuzz/seeds/<module> and tests/unit/<module>/data, whichever exist.
-set(source_seeds ${SHARED_DATA_DIR}/${MODULE} ${PLUMB_SOURCE_DIR}/tests/fuzz/seeds/${MODULE}
+# tests/fuzz/seeds/<module> and tests/unit/<module>/data, whichever exist. The model path's
+# shared files are the IFC models (its in-process parsers read IFC text).
+set(shared_name ${MODULE})
+if(MODULE STREQUAL "model")
+  set(shared_name ifc)
+endif()
+set(source_seeds ${SHARED_DATA_DIR}/${shared_name} ${PLUMB_SOURCE_DIR}/tests/fuzz/seeds/${MODULE}
                  ${PLUMB_SOURCE_DIR}/tests/unit/${MODULE}/data)
 set(count 0)
 foreach(dir ${source_seeds})
@@ -71,20 +77,26 @@ foreach(dir ${source_seeds})
     endif()
   endforeach()
 endforeach()
-message(STATUS "fuzz_${MODULE}: ${count} seeds, ${SECONDS} s")
+if(NOT DEFINED FUZZ_SEED)
+  set(FUZZ_SEED 1)
+endif()
+message(STATUS "fuzz_${MODULE}: ${count} seeds, ${SECONDS} s, -seed=${FUZZ_SEED}")
 
 # The PCD seeds of shared/data are ~1 MB LZF captures: whole, they leave fuzz_pcd 34 inputs/s
 # (decompressed and converted under ASan). Cut to 16 KiB they still reach every header and size
 # check and PCL's truncation paths, while the small seeds of tests/fuzz/seeds/pcd go through.
+# The IFC seeds (113-710 KB) likewise: whole, fuzz_model ran 6 inputs/s (each input goes
+# through about ten scans); cut to 16 KiB, 180/s, and their heads still hold the project, units,
+# contexts and often the site, while tests/fuzz/seeds/model covers the georeferencing.
 set(extra_options)
-if(MODULE STREQUAL "pcd")
+if(MODULE STREQUAL "pcd" OR MODULE STREQUAL "model")
   list(APPEND extra_options -max_len=16384)
 endif()
 
 set(ENV{ASAN_OPTIONS} "detect_leaks=1:abort_on_error=0")
 set(ENV{UBSAN_OPTIONS} "halt_on_error=1:print_stacktrace=1")
 execute_process(
-  COMMAND ${binary} -max_total_time=${SECONDS} -rss_limit_mb=2048 -timeout=10
+  COMMAND ${binary} -max_total_time=${SECONDS} -rss_limit_mb=2048 -timeout=10 -seed=${FUZZ_SEED}
     -print_final_stats=1 ${extra_options} -artifact_prefix=${crash_dir}/ ${corpus_dir} ${seed_dir}
   RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)

@@ -10,9 +10,6 @@
 //      must be a std::runtime_error, never undefined behaviour).
 // Any input must either read or raise plumb::FileError. PLUMB_FUZZ_PCD_HEADER_ONLY=1 fuzzes
 // only our checks (checkPcdHeader). Runs so far: tests/unit/pcd/regressions/README.md.
-#include <sys/mman.h>
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -26,22 +23,13 @@
 
 namespace {
 
-/// What pcd_stream::writeCloud sends for `pcd` (through a memfd: a pipe would fill up).
-std::string encoded(const plumb::PclPcd& pcd) {
-  static const int fd = memfd_create("fuzz_pcd_stream", 0);
-  if (fd < 0 || ftruncate(fd, 0) != 0 || lseek(fd, 0, SEEK_SET) != 0) std::abort();
-  if (!plumb::pcd_stream::writeCloud(fd, pcd.layout, pcd.points)) std::abort();
-  std::string bytes(static_cast<std::size_t>(lseek(fd, 0, SEEK_CUR)), '\0');
-  if (pread(fd, bytes.data(), bytes.size(), 0) != static_cast<ssize_t>(bytes.size())) std::abort();
-  return bytes;
-}
-
 /// 1 and 2: the in-process read, and the same records through the stream.
 plumb::Dataset readBothWays(const std::filesystem::path& path) {
   const plumb::PcdHeader header = plumb::checkPcdFile(path);
   const plumb::PclPcd pcd = plumb::readWithPcl(path, header);
   plumb::Dataset direct = plumb::pcdToDataset(path, header.data, pcd.layout, pcd.points);
-  const std::string bytes = encoded(pcd);
+  const std::string bytes =
+      plumb::fuzz::writtenBytes([&](int fd) { return plumb::pcd_stream::writeCloud(fd, pcd.layout, pcd.points); });
   const auto decoded = plumb::pcd_stream::decode(bytes);
   const auto& cloud = std::get<plumb::pcd_stream::Cloud>(decoded);
   const plumb::Dataset streamed = plumb::pcdToDataset(path, header.data, cloud.layout, cloud.points);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <unordered_map>
@@ -16,6 +17,7 @@ namespace plumb::ifc_georef {
 namespace {
 
 constexpr double kThresholdMetres = 100.0;
+constexpr std::uint64_t kLargestId = std::uint64_t{1} << 62;  ///< real files stay below 10^9
 
 /// The entities the plan reads, by id, and where the DATA section ends.
 struct Index {
@@ -23,7 +25,16 @@ struct Index {
   std::vector<std::uint64_t> top_level;  ///< IfcLocalPlacement with PlacementRelTo $
   std::uint64_t site = 0, project = 0, max_id = 0;
   std::size_t last_end = 0;
+  /// Every entity of the text was seen (step::forEachEntity), and no two of those read here
+  /// share an id.
+  bool whole = true;
 };
+
+/// Stores `e`; another entity with its id makes the index not whole.
+void keep(Index& ix, const step::Entity& e) {
+  const auto [at, added] = ix.by_id.emplace(e.id, e);
+  if (!added && at->second.begin != e.begin) ix.whole = false;
+}
 
 bool isHeadEntity(std::string_view type) {
   static const char* const types[] = {"IFCLOCALPLACEMENT", "IFCSITE", "IFCPROJECT", "IFCUNITASSIGNMENT",
@@ -35,7 +46,7 @@ bool isHeadEntity(std::string_view type) {
 void collectWanted(std::string_view text, const std::unordered_set<std::uint64_t>& wanted, Index& ix) {
   if (wanted.empty()) return;
   step::forEachEntity(text, [&](const step::Entity& e) {
-    if (wanted.count(e.id)) ix.by_id[e.id] = e;
+    if (wanted.count(e.id)) keep(ix, e);
   });
 }
 
@@ -58,17 +69,18 @@ std::unordered_set<std::uint64_t> referenced(const Index& ix, const std::vector<
 /// and directions of those.
 Index buildIndex(std::string_view text) {
   Index ix;
-  step::forEachEntity(text, [&](const step::Entity& e) {
+  const bool scanned = step::forEachEntity(text, [&](const step::Entity& e) {
     ix.max_id = std::max(ix.max_id, e.id);
     ix.last_end = e.end;
     if (!isHeadEntity(e.type)) return;
     const bool top = e.type == "IFCLOCALPLACEMENT" && step::splitArguments(e.args)[0] == "$";
     if (e.type == "IFCLOCALPLACEMENT" && !top) return;
-    ix.by_id[e.id] = e;
+    keep(ix, e);
     if (top) ix.top_level.push_back(e.id);
     if (e.type == "IFCSITE" && !ix.site) ix.site = e.id;
     if (e.type == "IFCPROJECT" && !ix.project) ix.project = e.id;
   });
+  ix.whole = ix.whole && scanned;
   std::vector<std::uint64_t> contexts;
   for (const auto& [id, e] : ix.by_id)
     if (e.type == "IFCGEOMETRICREPRESENTATIONCONTEXT") contexts.push_back(id);
@@ -90,7 +102,7 @@ std::string_view arg(const step::Entity& e, std::size_t i) {
   return i < a.size() ? a[i] : std::string_view("$");
 }
 
-/// "(1.,2.,3.)" -> numbers; missing coordinates are 0.
+/// "(1.,2.,3.)" -> numbers; missing coordinates are 0; nullopt when one is not a finite number.
 std::optional<Eigen::Vector3d> triple(std::string_view list) {
   if (list.size() < 2 || list.front() != '(' || list.back() != ')') return std::nullopt;
   const auto parts = step::splitArguments(list.substr(1, list.size() - 2));
@@ -99,7 +111,7 @@ std::optional<Eigen::Vector3d> triple(std::string_view list) {
     const std::string s(parts[i]);
     char* end = nullptr;
     v[static_cast<int>(i)] = std::strtod(s.c_str(), &end);
-    if (end == s.c_str()) return std::nullopt;
+    if (end == s.c_str() || !std::isfinite(v[static_cast<int>(i)])) return std::nullopt;
   }
   return v;
 }
@@ -192,7 +204,9 @@ struct Rewrite {
     args.resize(3, "$");
     return add("IFCAXIS2PLACEMENT3D(#" + std::to_string(pt) + "," + std::string(args[1]) + "," + std::string(args[2]) + ")");
   }
-  std::string apply(std::string_view text, std::size_t data_end) const {
+  /// The text with the replacements, and the new entities after the last one (`last_end`: not
+  /// before the ENDSEC, which might be inside a comment).
+  std::string apply(std::string_view text, std::size_t last_end) const {
     std::string out;
     out.reserve(text.size() + appended.size());
     std::size_t at = 0;
@@ -201,9 +215,9 @@ struct Rewrite {
       out += r.second;
       at = r.first;
     }
-    out.append(text.substr(at, data_end - at));
+    out.append(text.substr(at, last_end - at));
     out += "\n" + appended;
-    out.append(text.substr(data_end));
+    out.append(text.substr(last_end));
     return out;
   }
 };
@@ -214,7 +228,7 @@ bool moveTopLevel(const Index& ix, std::string_view text, const Eigen::Vector3d&
     const step::Entity& local = ix.by_id.at(id);
     auto args = step::splitArguments(local.args);
     const auto p = args.size() == 2 ? placement(ix, args[1]) : std::nullopt;
-    if (!p) return false;
+    if (!p || !(p->location - t).allFinite()) return false;
     const std::string ref = "#" + std::to_string(rw.movedPlacement(*p, p->location - t));
     args[1] = ref;
     rw.replaceArgs(local, text, args);
@@ -233,7 +247,10 @@ double lengthUnit(std::string_view text) {
 std::optional<Shift> plan(std::string_view text) {
   const Index ix = buildIndex(text);
   const auto project = ix.by_id.find(ix.project);
-  if (project == ix.by_id.end()) return std::nullopt;
+  // A damaged text (a string or comment left open, an instance not of the #id=TYPE(...) shape)
+  // may hide entities whose ids the new ones would take, and two entities with one id leave
+  // it unclear which the plan should read; ids near 2^64 would wrap.
+  if (!ix.whole || ix.max_id >= kLargestId || project == ix.by_id.end()) return std::nullopt;
   const step::Entity* context = worldContext(ix, project->second);
   const auto wcs = context ? placement(ix, arg(*context, 4)) : std::nullopt;
   if (context && !wcs) return std::nullopt;  // an IfcAxis2Placement2D world system, say
@@ -249,7 +266,7 @@ std::optional<Shift> plan(std::string_view text) {
   const Eigen::Matrix3d r = wcs ? wcs->rotation : Eigen::Matrix3d::Identity();
   Shift shift;
   shift.metres = lengthScale(ix, project->second) * (r * t + w);
-  if (shift.metres.cwiseAbs().maxCoeff() < kThresholdMetres) return std::nullopt;
+  if (!shift.metres.allFinite() || shift.metres.cwiseAbs().maxCoeff() < kThresholdMetres) return std::nullopt;
   Rewrite rw{ix.max_id + 1, {}, {}};
   if (!t.isZero() && !moveTopLevel(ix, text, t, rw)) return std::nullopt;
   if (!w.isZero()) {
@@ -258,9 +275,8 @@ std::optional<Shift> plan(std::string_view text) {
     args[4] = ref;
     rw.replaceArgs(*context, text, args);
   }
-  const auto data_end = text.find("ENDSEC", ix.last_end);
-  if (data_end == std::string_view::npos) return std::nullopt;
-  shift.text = rw.apply(text, data_end);
+  if (text.find("ENDSEC", ix.last_end) == std::string_view::npos) return std::nullopt;
+  shift.text = rw.apply(text, ix.last_end);
   return shift;
 }
 

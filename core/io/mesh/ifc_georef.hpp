@@ -14,9 +14,11 @@
 //   - shift = s (R t + w), R the WorldCoordinateSystem's rotation, s the length unit as assimp
 //     applies it (IfcSIUnit prefix, e.g. MILLI -> 0.001; assimp ignores conversion-based
 //     units such as feet, and so does the shift, so the two stay consistent).
-// The rewrite happens only when some component of the shift is 100 m or more. New entities are
-// appended at the end of the DATA section, so entity lines in error messages stay those of the
-// user's file.
+// The rewrite happens only when some component of the shift is 100 m or more, is finite, and
+// the file's text is whole (no string or comment left open, every instance "#id=TYPE(...);",
+// no id shared by two of the entities the plan reads).
+// New entities are appended after the last entity of the DATA section, so entity lines in error
+// messages stay those of the user's file.
 // Not handled (imported as before, in float): large translations below the top level (an
 // IfcBuilding placed relative to a site at the origin), coordinates written directly in the
 // geometry, IfcAxis2Placement2D world systems. IfcMapConversion (IFC4), which assimp 5.2 does

@@ -11,6 +11,10 @@
 namespace plumb::ifc_georef {
 namespace {
 
+/// Map units per metre of the model: a micrometre to a thousand kilometres. Beyond that the
+/// file is wrong, and a vertex could be moved to infinity.
+constexpr double kSmallestScale = 1e-6, kLargestScale = 1e6;
+
 /// A STEP real, or `fallback` for "$" (an omitted optional attribute).
 std::optional<double> real(std::string_view arg, double fallback) {
   if (arg == "$" || arg.empty()) return fallback;
@@ -45,6 +49,9 @@ MapConversion parse(const step::Entity& e, const std::unordered_map<std::uint64_
   m.origin = {*east, *north, *height};
   m.rotation_rad = std::atan2(*ordinate, *abscissa);
   m.scale = *scale / length_unit;
+  if (!(m.scale >= kSmallestScale && m.scale <= kLargestScale))
+    unusable(e, "Scale " + std::to_string(*scale) + " makes one metre of the model " + std::to_string(m.scale) +
+                    " map units (accepted: 1e-6 to 1e6)");
   m.line = e.line;
   if (const auto it = crs_names.find(step::reference(a[1])); it != crs_names.end()) m.crs = it->second;
   return m;

@@ -29,7 +29,7 @@ struct MapConversion {
 
 /// The file's map conversion, or nullopt when it has none (u above is the project's length
 /// unit, ifc_georef::lengthUnit, looked up only when there is a conversion). Throws InputError
-/// naming the entity's line when it is unusable (zero x axis, scale <= 0).
+/// naming the entity's line when it is unusable (zero x axis, k outside 1e-6..1e6).
 std::optional<MapConversion> readMapConversion(std::string_view ifc_text);
 
 /// Moves every vertex of `mesh` from engineering to map coordinates (formulas above).

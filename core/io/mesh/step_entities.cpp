@@ -1,5 +1,6 @@
 #include "io/mesh/step_entities.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 
@@ -12,15 +13,18 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-/// Index just past the string starting at `i` (text[i] == '\''); text.size() if unterminated.
-std::size_t skipString(std::string_view text, std::size_t i) {
+/// Index just past the string starting at `i` (text[i] == '\''); npos if unterminated.
+std::size_t stringEnd(std::string_view text, std::size_t i) {
   for (++i; i < text.size(); ++i) {
     if (text[i] != '\'') continue;
     if (i + 1 < text.size() && text[i + 1] == '\'') ++i;
     else return i + 1;
   }
-  return text.size();
+  return std::string_view::npos;
 }
+
+/// stringEnd, or text.size() if unterminated.
+std::size_t skipString(std::string_view text, std::size_t i) { return std::min(stringEnd(text, i), text.size()); }
 
 /// Index of the ';' ending the instance that starts at `i`, or npos.
 std::size_t instanceEnd(std::string_view text, std::size_t i, std::uint64_t& newlines) {
@@ -55,42 +59,53 @@ bool parseInstance(std::string_view s, Entity& e) {
   return true;
 }
 
+/// When a string or a comment starts at `i`: the index just past it (its newlines counted into
+/// `line`; `whole` cleared when it is left open). Else `i`.
+std::size_t pastStringOrComment(std::string_view text, std::size_t i, std::uint64_t& line, bool& whole) {
+  std::size_t end = std::string_view::npos;
+  if (text[i] == '\'') {
+    end = stringEnd(text, i);
+  } else if (text.compare(i, 2, "/*") == 0) {
+    const auto close = text.find("*/", i + 2);
+    if (close != std::string_view::npos) end = close + 2;
+  } else {
+    return i;
+  }
+  whole = whole && end != std::string_view::npos;
+  end = std::min(end, text.size());
+  line += static_cast<std::uint64_t>(std::count(text.begin() + static_cast<std::ptrdiff_t>(i),
+                                                text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+  return end;
+}
+
 }  // namespace
 
-void forEachEntity(std::string_view text, const std::function<void(const Entity&)>& visit) {
+bool forEachEntity(std::string_view text, const std::function<void(const Entity&)>& visit) {
   std::uint64_t line = 1;
   std::size_t i = 0;
+  bool whole = true;
   while (i < text.size()) {
-    const char c = text[i];
-    if (c == '\n') ++line;
-    if (c == '\'') {
-      const std::size_t j = skipString(text, i);
-      for (std::size_t k = i; k < j; ++k) line += text[k] == '\n';
-      i = j;
+    if (const std::size_t past = pastStringOrComment(text, i, line, whole); past != i) {
+      i = past;
       continue;
     }
-    if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
-      const auto j = text.find("*/", i + 2);
-      const std::size_t stop = j == std::string_view::npos ? text.size() : j + 2;
-      for (std::size_t k = i; k < stop; ++k) line += text[k] == '\n';
-      i = stop;
-      continue;
-    }
-    if (c != '#') {
-      ++i;
+    if (text[i] != '#') {
+      line += text[i++] == '\n';
       continue;
     }
     std::uint64_t newlines = 0;
     const std::size_t semi = instanceEnd(text, i, newlines);
-    if (semi == std::string_view::npos) return;
+    if (semi == std::string_view::npos) return false;
     Entity e;
     e.begin = i;
     e.end = semi + 1;
     e.line = line;
     if (parseInstance(text.substr(i, semi - i), e)) visit(e);
+    else whole = false;
     line += newlines;
     i = semi + 1;
   }
+  return whole;
 }
 
 std::vector<std::string_view> splitArguments(std::string_view args) {

@@ -19,8 +19,10 @@ struct Entity {
   std::uint64_t line = 0; ///< 1-based line of '#'
 };
 
-/// Calls `visit` for each "#id=TYPE(...);" instance of `text`, in file order.
-void forEachEntity(std::string_view text, const std::function<void(const Entity&)>& visit);
+/// Calls `visit` for each "#id=TYPE(...);" instance of `text`, in file order. Returns false
+/// when the text is damaged so that entities may have been missed: an instance, string or
+/// comment left open (the scan stops there), or an instance not of that shape (skipped).
+bool forEachEntity(std::string_view text, const std::function<void(const Entity&)>& visit);
 
 /// Top-level arguments of an argument list, split at commas outside strings and parentheses,
 /// trimmed: "#3,$,(1.,2.)" -> {"#3", "$", "(1.,2.)"}.

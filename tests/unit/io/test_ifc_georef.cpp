@@ -14,6 +14,8 @@
 #include "io/mesh/ifc_georef.hpp"
 #include "io/mesh/ifc_map_conversion.hpp"
 #include "io/mesh/mesh_io.hpp"
+#include "io/mesh/step_entities.hpp"
+#include "support/ifc_prepass_checks.hpp"
 #include "support/test_support.hpp"
 
 using namespace plumb;
@@ -84,21 +86,31 @@ TEST(IfcGeoref, MillimetreWorldSystemOffsetIsScaled) {
   EXPECT_LE(importedDeviation("ifc/IfcOpenHouse_IFC4.ifc", path, {651000.123, 6860000.456, 40.0}), 1e-4);
 }
 
+namespace {
+/// A site 500 km / 6000 km from the origin, its placement shared by a second top-level placement.
+const std::string kSmallSite =
+    "ISO-10303-21;\nHEADER;\nFILE_SCHEMA(('IFC2X3'));\nENDSEC;\nDATA;\n"
+    "#1=IFCCARTESIANPOINT((500000.,6000000.,10.));\n"
+    "#2=IFCAXIS2PLACEMENT3D(#1,$,$);\n"
+    "#3=IFCLOCALPLACEMENT($,#2);\n"
+    "#4=IFCSITE('g',$,$,$,$,#3,$,$,.ELEMENT.,$,$,$,$,$);\n"
+    "#5=IFCLOCALPLACEMENT($,#2);\n"
+    "#6=IFCSIUNIT(*,.LENGTHUNIT.,$,.METRE.);\n"
+    "#7=IFCUNITASSIGNMENT((#6));\n"
+    "#8=IFCCARTESIANPOINT((0.,0.,0.));\n"
+    "#9=IFCAXIS2PLACEMENT3D(#8,$,$);\n"
+    "#10=IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-5,#9,$);\n"
+    "#11=IFCPROJECT('p',$,'x',$,$,$,$,(#10),#7);\n"
+    "ENDSEC;\nEND-ISO-10303-21;\n";
+
+/// kSmallSite with `extra` before its ENDSEC.
+std::string smallSiteWith(const std::string& extra) {
+  return std::string(kSmallSite).insert(kSmallSite.find("ENDSEC;\nEND-ISO"), extra);
+}
+}  // namespace
+
 TEST(IfcGeoref, PlanLeavesSharedPointsAloneAndKeepsLines) {
-  const std::string text =
-      "ISO-10303-21;\nHEADER;\nFILE_SCHEMA(('IFC2X3'));\nENDSEC;\nDATA;\n"
-      "#1=IFCCARTESIANPOINT((500000.,6000000.,10.));\n"
-      "#2=IFCAXIS2PLACEMENT3D(#1,$,$);\n"
-      "#3=IFCLOCALPLACEMENT($,#2);\n"
-      "#4=IFCSITE('g',$,$,$,$,#3,$,$,.ELEMENT.,$,$,$,$,$);\n"
-      "#5=IFCLOCALPLACEMENT($,#2);\n"
-      "#6=IFCSIUNIT(*,.LENGTHUNIT.,$,.METRE.);\n"
-      "#7=IFCUNITASSIGNMENT((#6));\n"
-      "#8=IFCCARTESIANPOINT((0.,0.,0.));\n"
-      "#9=IFCAXIS2PLACEMENT3D(#8,$,$);\n"
-      "#10=IFCGEOMETRICREPRESENTATIONCONTEXT($,'Model',3,1.E-5,#9,$);\n"
-      "#11=IFCPROJECT('p',$,'x',$,$,$,$,(#10),#7);\n"
-      "ENDSEC;\nEND-ISO-10303-21;\n";
+  const std::string& text = kSmallSite;
   const auto shift = ifc_georef::plan(text);
   ASSERT_TRUE(shift);
   EXPECT_EQ(shift->metres, Eigen::Vector3d(500000.0, 6000000.0, 10.0));
@@ -109,6 +121,22 @@ TEST(IfcGeoref, PlanLeavesSharedPointsAloneAndKeepsLines) {
   EXPECT_NE(out.find("#12=IFCCARTESIANPOINT((0.,0.,0.));\n#13=IFCAXIS2PLACEMENT3D(#12,$,$);"), std::string::npos) << out;
   // A model near the origin is left alone.
   EXPECT_FALSE(ifc_georef::plan(std::string(text).replace(text.find("500000.,6000000.,10."), 20, "5.,6.,1.")));
+}
+
+TEST(IfcGeoref, PlanLeavesADamagedTextAloneAndAppendsAfterTheLastEntity) {
+  const auto ignore = [](const step::Entity&) {};
+  EXPECT_TRUE(step::forEachEntity(kSmallSite, ignore));
+  // A quote left open hides what follows from the scanner, and so do an open comment and an
+  // instance the scanner cannot read: the rewrite could reuse hidden ids.
+  for (const char* damage : {"#12=IFCWALL('w,$);\n", "/* note\n", "#12=;\n"}) {
+    EXPECT_FALSE(step::forEachEntity(smallSiteWith(damage), ignore)) << damage;
+    EXPECT_FALSE(ifc_georef::plan(smallSiteWith(damage))) << damage;
+  }
+  // An ENDSEC inside a comment after the last entity: the new entities go before the comment.
+  const auto shift = ifc_georef::plan(smallSiteWith("/* ENDSEC; */\n"));
+  ASSERT_TRUE(shift);
+  EXPECT_NE(shift->text.find("(#10),#7);\n#12=IFCCARTESIANPOINT("), std::string::npos) << shift->text;
+  EXPECT_EQ(test::planProblem(smallSiteWith("/* ENDSEC; */\n")), "");
 }
 
 namespace {
