@@ -1,7 +1,8 @@
 # cmake -P script behind the fuzz CTest tests (see tests/fuzz/CMakeLists.txt).
 #   MODE=build: configure + build the clang tree FUZZ_ROOT/tree for MODULES.
-#   MODE=run:   run FUZZ_ROOT/tree/fuzz_MODULE for SECONDS on its corpus with libFuzzer's
-#               -seed=FUZZ_SEED (0: random); fail on a crash.
+#   MODE=run:   run FUZZ_ROOT/tree/fuzz_MODULE on its corpus for a fixed number of inputs (scaled
+#               by SECONDS) with libFuzzer's -seed=FUZZ_SEED (0: random, for SECONDS); fail on
+#               a crash, printing the report and the crash input replayed alone.
 cmake_minimum_required(VERSION 3.25)
 
 if(MODE STREQUAL "build")
@@ -80,7 +81,6 @@ endforeach()
 if(NOT DEFINED FUZZ_SEED)
   set(FUZZ_SEED 1)
 endif()
-message(STATUS "fuzz_${MODULE}: ${count} seeds, ${SECONDS} s, -seed=${FUZZ_SEED}")
 
 # The PCD seeds of shared/data are ~1 MB LZF captures: whole, they leave fuzz_pcd 34 inputs/s
 # (decompressed and converted under ASan). Cut to 16 KiB they still reach every header and size
@@ -93,13 +93,55 @@ if(MODULE STREQUAL "pcd" OR MODULE STREQUAL "model")
   list(APPEND extra_options -max_len=16384)
 endif()
 
+# How many inputs each fuzzer tries: about what PLUMB_FUZZ_SECONDS (15 s) gave each of them on
+# a 2-core CI machine. A fixed count instead of a time limit makes the run the same everywhere:
+# same binary, same seed files, same -seed, same inputs, whatever the machine's speed or load.
+# The time limit stays as a cap (8x) so a slow machine cannot hang the suite.
+set(runs_e57 2000)
+set(runs_las 4500)
+set(runs_model 3500)
+set(runs_pcd 100000)
+set(runs_ply 120000)
+set(runs_text 140000)
+set(runs 20000)
+if(DEFINED runs_${MODULE})
+  set(runs ${runs_${MODULE}})
+endif()
+math(EXPR runs "${runs} * ${SECONDS} / 15")
+math(EXPR cap "${SECONDS} * 8")
+if(FUZZ_SEED EQUAL 0)  # a hunt for new bugs: as many inputs as the time allows
+  set(runs -1)
+  set(cap ${SECONDS})
+endif()
+message(STATUS "fuzz_${MODULE}: ${count} seeds, -seed=${FUZZ_SEED}, -runs=${runs} (at most ${cap} s)")
+
 set(ENV{ASAN_OPTIONS} "detect_leaks=1:abort_on_error=0")
 set(ENV{UBSAN_OPTIONS} "halt_on_error=1:print_stacktrace=1")
+set(log ${FUZZ_ROOT}/fuzz_${MODULE}.log)
 execute_process(
-  COMMAND ${binary} -max_total_time=${SECONDS} -rss_limit_mb=2048 -timeout=10 -seed=${FUZZ_SEED}
-    -print_final_stats=1 ${extra_options} -artifact_prefix=${crash_dir}/ ${corpus_dir} ${seed_dir}
-  RESULT_VARIABLE rc)
+  COMMAND ${binary} -runs=${runs} -max_total_time=${cap} -rss_limit_mb=2048 -timeout=10
+    -seed=${FUZZ_SEED} -print_final_stats=1 ${extra_options} -artifact_prefix=${crash_dir}/
+    ${corpus_dir} ${seed_dir}
+  OUTPUT_FILE ${log} ERROR_FILE ${log} RESULT_VARIABLE rc)
+file(STRINGS ${log} stats REGEX "^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb)")
+string(JOIN "\n" stats ${stats})
+message(STATUS "fuzz_${MODULE}: exit ${rc}; full log ${log}\n${stats}")
 if(NOT rc EQUAL 0)
+  # CI shows the end of the output: put the report there, then each crash input replayed alone
+  # (does it crash by itself, or only after the inputs before it?) and its first bytes.
+  file(STRINGS ${log} report REGEX "ERROR|SUMMARY|^ *#[0-9]+ 0x|==[0-9]+==|runtime error|Test unit written")
+  list(SUBLIST report 0 60 report)
+  string(JOIN "\n" report ${report})
+  message("fuzz_${MODULE} report:\n${report}")
   file(GLOB crashes ${crash_dir}/*)
+  foreach(crash ${crashes})
+    execute_process(COMMAND ${binary} -runs=1 ${extra_options} ${crash}
+                    OUTPUT_VARIABLE out ERROR_VARIABLE out RESULT_VARIABLE replay_rc)
+    string(REGEX MATCHALL "[^\n]*(ERROR|SUMMARY|runtime error|#[0-9]+ 0x)[^\n]*" replay "${out}")
+    list(SUBLIST replay 0 30 replay)
+    string(JOIN "\n" replay ${replay})
+    file(READ ${crash} head LIMIT 256 HEX)
+    message("replayed alone: ${crash} (exit ${replay_rc})\n${replay}\nfirst bytes (hex): ${head}")
+  endforeach()
   message(FATAL_ERROR "fuzz_${MODULE} failed (exit ${rc}); crash inputs: ${crashes}")
 endif()
