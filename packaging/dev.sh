@@ -42,8 +42,10 @@ deps() {
 }
 
 build() {
-  # The desktop app and its GUI tests are part of every build (a cached OFF must not drop them).
-  cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPLUMB_BUILD_UI=ON
+  # The desktop app and its GUI tests are part of every build, and the whole suite runs under
+  # the sanitizers too (a cached OFF of an older tree must not drop them).
+  cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPLUMB_BUILD_UI=ON \
+    -DPLUMB_SANITIZE_SUITE=ON
   cmake --build "$BUILD" -j "$JOBS"
 }
 
