@@ -122,11 +122,15 @@ std::string barsSvg(const BarPicture& p, int w, int h) {
       << num(std::max(1.0, bw - 1.0)) << "\" height=\"" << num(bh) << "\" fill=\"" << escapeXml(b.colour)
       << "\"><title>" << escapeXml(b.label) << "</title></rect>";
   }
-  for (const auto& [label, at] : p.markers) {
+  // Each marker's label a line below the previous one: close markers (RMS and 95 %) would
+  // write over each other.
+  for (std::size_t m = 0; m < p.markers.size(); ++m) {
+    const auto& [label, at] = p.markers[m];
     const double x = kMargin + at * bw;
     s << "<line x1=\"" << num(x) << "\" y1=\"" << kMargin << "\" x2=\"" << num(x) << "\" y2=\""
       << h - kMargin << "\" stroke=\"#c00\" stroke-dasharray=\"4 3\"/><text x=\"" << num(x + 3)
-      << "\" y=\"" << kMargin + 10 << "\" font-size=\"10\" fill=\"#c00\">" << escapeXml(label) << "</text>";
+      << "\" y=\"" << kMargin + 10 + 12 * int(m) << "\" font-size=\"10\" fill=\"#c00\">" << escapeXml(label)
+      << "</text>";
   }
   s << "<line x1=\"" << kMargin << "\" y1=\"" << h - kMargin << "\" x2=\"" << w - kMargin << "\" y2=\""
     << h - kMargin << "\" stroke=\"black\"/><text x=\"" << kMargin - 4 << "\" y=\"" << kMargin + 4

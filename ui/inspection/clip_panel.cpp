@@ -13,6 +13,7 @@
 #include "ui/layers/layer_transform.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/focus_wheel.hpp"
+#include "ui/view/scene_framing.hpp"
 
 namespace plumb::ui {
 
@@ -70,7 +71,10 @@ ClipPanel::ClipPanel(AppContext& app, QWidget* parent)
   count_->setObjectName("clipCount");
   layout->addWidget(count_);
   layout->addStretch(1);
-  connect(mode_, &QComboBox::currentIndexChanged, this, [this] { apply(); });
+  connect(mode_, &QComboBox::currentIndexChanged, this, [this] {
+    apply();
+    lookAtSlice();
+  });
   connect(fit, &QPushButton::clicked, this, &ClipPanel::fitToData);
   apply();
 }
@@ -106,6 +110,16 @@ std::optional<ClipBox> ClipPanel::box() const {
     box.max[a] = centre_[a]->value() + size_[a]->value() / 2;
   }
   return box;
+}
+
+void ClipPanel::lookAtSlice() {
+  switch (static_cast<Mode>(mode_->currentIndex())) {
+    case Mode::PlanSlice: frameScene(app_.scene, app_.view, StandardView::Top); break;
+    case Mode::SectionX: frameScene(app_.scene, app_.view, StandardView::Right); break;
+    case Mode::SectionY: frameScene(app_.scene, app_.view, StandardView::Front); break;
+    case Mode::Off:
+    case Mode::Box: break;  // the camera stays where the user put it
+  }
 }
 
 void ClipPanel::apply() {

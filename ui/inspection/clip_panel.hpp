@@ -2,7 +2,8 @@
 // The Clipping dock (issue 17, inspection): a plan slice (a horizontal slab around a height), a
 // section across X or Y (a vertical slab), or a box, in world coordinates; the view draws only
 // what is inside (Scene::setClipBox) and the dock counts the points inside (core countInside,
-// exact). "Fit to data" centres it on the visible data's robust extent.
+// exact). "Fit to data" centres it on the visible data's robust extent. Choosing a slice turns
+// the camera to look at it square on (plan from the top, a section along its normal).
 #include <QWidget>
 
 #include <array>
@@ -34,6 +35,8 @@ class ClipPanel : public QWidget {
 
  private:
   void apply();
+  /// A slice chosen is seen square on: a plan slice from the top, a section along its normal.
+  void lookAtSlice();
   AppContext& app_;
   QComboBox* mode_;
   std::array<QDoubleSpinBox*, 3> centre_{}, size_{};

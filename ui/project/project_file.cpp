@@ -13,7 +13,9 @@
 
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/params_json.hpp"
 #include "features/export/feature_export.hpp"
+#include "quality/cloud_distance.hpp"
 #include "registration/auto/pipeline_param_groups.hpp"
 #include "ui/app_context.hpp"
 #include "ui/layers/dataset_layer.hpp"
@@ -97,7 +99,8 @@ void saveProject(const AppContext& app, const QString& path) {
   if (app.registration) {
     j["registration"] = {{"source", source},
                          {"target", target},
-                         {"params", pipelineParamsToJson(app.registration->params())}};
+                         {"params", pipelineParamsToJson(app.registration->params())},
+                         {"distance-check", paramsToJson(DistanceParams::schema(), app.registration->distanceParams())}};
     // Only features up to date for this source, target and parameters are marked so.
     const std::string detected_with = app.registration->featuresDetectedWith();
     if (!detected_with.empty()) j["registration"]["features-detected-with"] = json::parse(detected_with);
@@ -181,22 +184,39 @@ Entry readEntry(const json& e, std::size_t i, const QDir& dir, const std::string
   return entry;
 }
 
-/// The project's registration setup; its parameters go to the Registration dock at once.
+/// Runs `read` on registration.<key> when the project has it; errors name the file and the key.
+template <class Read>
+void readSection(const json& registration, const char* key, const std::string& file, Read read) {
+  if (!registration.contains(key)) return;
+  try {
+    read(registration.at(key));
+  } catch (const std::exception& ex) {
+    throw FileError(file, std::string("registration.") + key + ": " + ex.what());
+  }
+}
+
+/// The project's registration setup; its parameters and the distance check's settings go to
+/// the Registration dock at once.
 RegistrationSetup readRegistration(AppContext& app, const json& j, const std::string& file) {
   if (!j.contains("registration") || !app.registration) return {};
   const json& r = j.at("registration");
   RegistrationSetup setup{r.value("source", -1), r.value("target", -1), {}};
   if (r.contains("features-detected-with")) setup.features_detected_with = r.at("features-detected-with").dump();
-  if (r.contains("params")) {
-    PipelineParams p;
-    try {
-      pipelineParamsFromJson(r.at("params"), p);
-    } catch (const std::exception& ex) {
-      throw FileError(file, std::string("registration.params: ") + ex.what());
-    }
-    app.registration->params() = p;
-    app.registration->refreshParams();
-  }
+  PipelineParams params = app.registration->params();
+  readSection(r, "params", file, [&](const json& v) {
+    params = PipelineParams();
+    pipelineParamsFromJson(v, params);
+  });
+  // Projects written before the distance check was saved keep the dock's current settings.
+  DistanceParams distance = app.registration->distanceParams();
+  readSection(r, "distance-check", file,
+              [&](const json& v) {
+                distance = DistanceParams();
+                paramsFromJson(DistanceParams::schema(), v, distance);
+              });
+  app.registration->params() = params;
+  app.registration->distanceParams() = distance;
+  app.registration->refreshParams();
   return setup;
 }
 

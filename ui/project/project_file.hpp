@@ -9,7 +9,10 @@
 //                "features": "site.plumb.json.features/0.json"},
 //               {"file": "mms.las", "trajectory": "mms_trajectory.txt", ...}, ...],
 //    "registration": {"source": 0, "target": 1, "params": {"method": "auto", ...},
+//                     "distance-check": {"max-distance": 0.1, "signed": true, ...},
 //                     "features-detected-with": {"plane-extraction": {...}, ...}}}
+// "distance-check" holds the settings of the dock's Colour by distance (DistanceParams); files
+// without it (written before) keep the dock's current settings.
 // "features-detected-with" is written only when the features shown on the source and target
 // were detected for them with the current parameters; reopened, they are up to date again.
 #include <QString>

@@ -23,6 +23,58 @@ Eigen::Vector3d displayToRender(vtkRenderer* r, double x, double y, double z) {
   return Eigen::Vector3d(w[0], w[1], w[2]) / (w[3] != 0.0 ? w[3] : 1.0);
 }
 
+/// The view ray under display (x, y), world coordinates, and how far from it a point may lie.
+/// Perspective: the ray starts at the eye and the tolerance is a cone opening from there (not
+/// from the near clipping plane, which VTK puts just in front of the data: a cone from there
+/// closes on the nearest points and clicks beside them missed). Parallel: a cylinder as wide
+/// as the cone of a perspective view of the same height.
+struct PickRay {
+  Eigen::Vector3d from, dir;
+  double radius_per_metre = 0.0;  ///< perspective: radius = this * distance along the ray
+  double radius = 0.0;            ///< parallel: a fixed radius, metres
+};
+
+PickRay pickRay(vtkRenderer* r, const Eigen::Vector3d& origin, int x, int y, double tolerance_deg) {
+  vtkCamera* camera = r->GetActiveCamera();
+  const Eigen::Vector3d near = displayToRender(r, x, y, 0.0) + origin;
+  const Eigen::Vector3d far = displayToRender(r, x, y, 1.0) + origin;
+  if (camera->GetParallelProjection())
+    return {near, (far - near).normalized(), 0.0, 2.0 * camera->GetParallelScale() * tolerance_deg / camera->GetViewAngle()};
+  double eye[3];
+  camera->GetPosition(eye);
+  const Eigen::Vector3d from = Eigen::Vector3d(eye[0], eye[1], eye[2]) + origin;
+  return {from, (far - from).normalized(), std::tan(tolerance_deg * M_PI / 180.0), 0.0};
+}
+
+enum class PickRule { FrontMost, NearestToRay };
+
+/// Of the visible points of `layer` within `widen` times the ray's tolerance: the front-most
+/// one or the one nearest the ray (relative to the tolerance there), in world coordinates.
+std::optional<Eigen::Vector3d> pointOnRay(const DatasetLayer& layer, const PickRay& ray, double widen, PickRule rule) {
+  std::optional<Eigen::Vector3d> best;
+  float best_score = std::numeric_limits<float>::infinity();
+  const float per_metre = float(widen * ray.radius_per_metre), fixed = float(widen * ray.radius);
+  for (const ScanLayer* scan : layer.scans()) {
+    if (!scan->effectivelyVisible()) continue;
+    const Eigen::Matrix4d m = scan->localToWorld();
+    const Eigen::Matrix4d inv = m.inverse();  // rigid: distances along the ray are preserved
+    const Eigen::Vector3f fa = (inv * ray.from.homogeneous()).head<3>().cast<float>();
+    const Eigen::Vector3f fd = (inv.topLeftCorner<3, 3>() * ray.dir).normalized().cast<float>();
+    const auto& pts = scan->scan().cloud.positions;
+    std::size_t best_i = pts.size();
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const Eigen::Vector3f v = pts[i] - fa;
+      const float along = v.dot(fd);
+      if (!(along > 0.0f)) continue;
+      const float off = (v - along * fd).norm() / (fixed + per_metre * along);
+      const float score = rule == PickRule::FrontMost ? along : off;
+      if (off <= 1.0f && score < best_score) best_score = score, best_i = i;
+    }
+    if (best_i < pts.size()) best = (m * pts[best_i].cast<double>().homogeneous()).head<3>();
+  }
+  return best;
+}
+
 }  // namespace
 
 std::optional<Eigen::Vector3d> pickLayerPoint(vtkRenderer* renderer, const Scene& scene,
@@ -39,39 +91,12 @@ std::optional<Eigen::Vector3d> pickLayerPoint(vtkRenderer* renderer, const Scene
     return Eigen::Vector3d(p[0], p[1], p[2]) + origin;
   }
   if (layer.kind() != LayerKind::Dataset) return std::nullopt;
-  // The ray in world coordinates.
-  const Eigen::Vector3d a = displayToRender(renderer, x, y, 0.0) + origin;
-  const Eigen::Vector3d b = displayToRender(renderer, x, y, 1.0) + origin;
-  const Eigen::Vector3d dir = (b - a).normalized();
-  const double tol = std::tan(tolerance_deg * M_PI / 180.0);
-  // The front-most point within the angular tolerance of the ray.
-  std::optional<Eigen::Vector3d> best;
-  double best_along = std::numeric_limits<double>::infinity();
-  for (const ScanLayer* scan : static_cast<const DatasetLayer&>(layer).scans()) {
-    if (!scan->effectivelyVisible()) continue;
-    const Eigen::Matrix4d m = scan->localToWorld();
-    const Eigen::Matrix4d inv = m.inverse();  // rigid: distances along the ray are preserved
-    const Eigen::Vector3f fa = (inv * a.homogeneous()).head<3>().cast<float>();
-    const Eigen::Vector3f fd = (inv.topLeftCorner<3, 3>() * dir).normalized().cast<float>();
-    const auto& pts = scan->scan().cloud.positions;
-    const float ftol = float(tol);
-    std::size_t best_i = pts.size();
-    float scan_best = float(best_along);
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      const Eigen::Vector3f v = pts[i] - fa;
-      const float along = v.dot(fd);
-      if (!(along > 0.0f) || along >= scan_best) continue;
-      if ((v - along * fd).norm() <= ftol * along) {
-        scan_best = along;
-        best_i = i;
-      }
-    }
-    if (best_i < pts.size()) {
-      best_along = scan_best;
-      best = (m * pts[best_i].cast<double>().homogeneous()).head<3>();
-    }
-  }
-  return best;
+  // A point under the cursor (about a pixel): the front-most one, so dense surfaces pick
+  // what is seen. None: snap to the point nearest the ray within the whole tolerance.
+  const auto& dataset = static_cast<const DatasetLayer&>(layer);
+  const PickRay ray = pickRay(renderer, origin, x, y, tolerance_deg);
+  if (auto under = pointOnRay(dataset, ray, 0.1, PickRule::FrontMost)) return under;
+  return pointOnRay(dataset, ray, 1.0, PickRule::NearestToRay);
 }
 
 std::optional<ScenePick> pickScenePoint(vtkRenderer* renderer, const Scene& scene, int x, int y,

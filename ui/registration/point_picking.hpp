@@ -14,7 +14,10 @@ class Layer;
 class Scene;
 
 /// World position of the point of `layer` (dataset or model) under display position (x, y)
-/// (VTK convention: y up, device pixels), within `tolerance_deg` of the ray; nullopt if none.
+/// (VTK convention: y up, device pixels): the front-most point within about a pixel of the
+/// cursor, else the point nearest the ray within `tolerance_deg` of it (seen from the eye; in a
+/// parallel view as many pixels as in a perspective one): clicks beside a sparse point snap to
+/// it. nullopt if none.
 std::optional<Eigen::Vector3d> pickLayerPoint(vtkRenderer* renderer, const Scene& scene,
                                               const Layer& layer, int x, int y,
                                               double tolerance_deg = 0.5);

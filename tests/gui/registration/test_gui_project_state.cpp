@@ -1,13 +1,17 @@
 // A saved project keeps what the user set up besides files and transforms (issue 17): each
 // layer's display style and its detected features, and whether those features are up to date
 // for the registration's layers and parameters. Reopened in a fresh window, "Use detected
-// features" registers with them without detecting again. On the small synthetic room
+// features" registers with them without detecting again. The distance check's settings come back
+// too. On the small synthetic room
 // (tests/gui/room_scene.hpp) written to PLY files.
 #include <QCheckBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFileInfo>
+#include <QGroupBox>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTest>
 
 #include <fstream>
@@ -17,6 +21,7 @@
 #include "gui/open_window.hpp"
 #include "gui/room_scene.hpp"
 #include "io/io.hpp"
+#include "quality/cloud_distance.hpp"
 #include "support/test_support.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/feature_layer.hpp"
@@ -66,6 +71,14 @@ int featureFiles(const nlohmann::json& project) {
 std::size_t planeCount(const Layer* layer) {
   const Layer* overlay = layer ? featureOverlay(*layer) : nullptr;
   return overlay ? static_cast<const FeatureLayer*>(overlay)->features().planes.size() : 0;
+}
+
+/// The dock's "Visual check" group: the distance panel's editors (keys such as
+/// "normal-neighbours" name editors of other groups too).
+QWidget* visualCheck(RegistrationPanel& panel) {
+  for (auto* box : panel.findChildren<QGroupBox*>())
+    if (box->title() == "Visual check") return box;
+  return nullptr;
 }
 
 }  // namespace
@@ -165,6 +178,49 @@ class GuiProjectStateTest : public QObject {
     QVERIFY(planeCount(again.sourceLayer()) > 0 && planeCount(again.targetLayer()) > 0);
     QVERIFY(again.featuresOutOfDate());
     QVERIFY(again.findChild<QCheckBox*>("useFeatures")->text().contains("out of date"));
+  }
+
+  // The distance check's settings (signed or not, search radius, neighbours for normals) come
+  // back with the project; a project written without them keeps the dock's defaults.
+  void distanceSettingsSurviveSaveAndOpen() {
+    reopen();  // the project of the tests above
+    if (QTest::currentTestFailed()) return;
+    // Chosen in the dock's distance panel, as the user does.
+    RegistrationPanel& panel = *window_->context().registration;
+    QWidget* check = visualCheck(panel);
+    QVERIFY(check);
+    auto* signed_box = check->findChild<QCheckBox*>("signed");
+    auto* max_distance = check->findChild<QDoubleSpinBox*>("max-distance");
+    auto* neighbours = check->findChild<QSpinBox*>("normal-neighbours");
+    QVERIFY(signed_box && max_distance && neighbours && signed_box->isChecked());
+    signed_box->setChecked(false);
+    max_distance->setValue(0.35);
+    neighbours->setValue(20);
+    QCOMPARE(panel.distanceParams().max_distance, 0.35);
+    saveProject(window_->context(), files().project);
+    const nlohmann::json saved = readProject().at("registration").at("distance-check");
+    QCOMPARE(saved.at("signed").get<bool>(), false);
+    QCOMPARE(saved.at("max-distance").get<double>(), 0.35);
+
+    reopen();
+    if (QTest::currentTestFailed()) return;
+    const DistanceParams& restored = window_->context().registration->distanceParams();
+    QCOMPARE(restored.signed_distances, false);
+    QCOMPARE(restored.max_distance, 0.35);
+    QCOMPARE(restored.normal_neighbours, 20);
+    QWidget* shown = visualCheck(*window_->context().registration);
+    QVERIFY(shown && !shown->findChild<QCheckBox*>("signed")->isChecked());
+    QCOMPARE(shown->findChild<QDoubleSpinBox*>("max-distance")->value(), 0.35);
+    QCOMPARE(shown->findChild<QSpinBox*>("normal-neighbours")->value(), 20);
+
+    nlohmann::json older = readProject();
+    older.at("registration").erase("distance-check");
+    test::writeAll(files().project.toStdString(), older.dump(2));
+    reopen();
+    if (QTest::currentTestFailed()) return;
+    const DistanceParams& defaults = window_->context().registration->distanceParams();
+    QCOMPARE(defaults.signed_distances, DistanceParams().signed_distances);
+    QCOMPARE(defaults.max_distance, DistanceParams().max_distance);
   }
 
  private:

@@ -244,6 +244,14 @@ class GuiRegistrationTest : public QObject {
     QCOMPARE(app.log.errorCount(), 0);
     const Dataset& shown = static_cast<DatasetLayer*>(indoor_)->dataset();
     for (const QString& f : files) expectDistanceField(f, shown, d->per_scan);
+    // The exported E57 is a new version of each scan: a GUID of its own, the one read kept as
+    // its original (exports used to copy the source file's GUIDs).
+    const Dataset exported = readDataset(artefact("signed.e57").toStdString());
+    QCOMPARE(exported.scans.size(), shown.scans.size());
+    for (std::size_t s = 0; s < shown.scans.size(); ++s) {
+      QVERIFY(!shown.scans[s].guid.empty() && exported.scans[s].guid != shown.scans[s].guid);
+      QCOMPARE(exported.scans[s].original_guids, std::vector<std::string>{shown.scans[s].guid});
+    }
 
     // The unsigned option (the dock's "Signed" box): every distance >= 0, the ramp from 0.
     auto* signed_box = panel.findChild<QCheckBox*>("signed");

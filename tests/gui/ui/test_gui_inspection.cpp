@@ -34,6 +34,12 @@ using namespace plumb::ui;
 namespace {
 constexpr double kSpacing = 0.1;
 
+/// Whether the camera looks along world axis `axis` (either way).
+bool lookingAlong(ui::AppContext& app, int axis) {
+  const double* d = app.view.renderer()->GetActiveCamera()->GetDirectionOfProjection();
+  return std::abs(std::abs(d[axis]) - 1.0) < 1e-6;
+}
+
 /// A red 10 x 10 m floor at 0.1 m spacing, at national-grid coordinates, and a green 1 x 1 m
 /// block top 1.5 m above it at (8..9, 8..9) (11 x 11 points).
 std::shared_ptr<const Dataset> floorAndBlock(const Eigen::Vector3d& offset) {
@@ -121,6 +127,7 @@ class GuiInspectionTest : public QObject {
     // A plan slice 0.2 m thick at the block top's height: only the block is drawn and counted.
     auto* mode = clip->findChild<QComboBox*>("clipMode");
     mode->setCurrentIndex(static_cast<int>(ClipPanel::Mode::PlanSlice));
+    QVERIFY(lookingAlong(app, 2));  // the slice seen from the top
     clip->setAxis(2, grid.z() + 1.5, 0.2);
     QCOMPARE(clip->pointsInside(), std::size_t{121});
     QCOMPARE(clip->findChild<QLabel*>("clipCount")->text(), QString("121 points inside"));
@@ -130,6 +137,7 @@ class GuiInspectionTest : public QObject {
     QVERIFY(test::countHue(slice, 120) > 50);  // the block top is
     // A section across X through the block: one row of the floor on each side plus the block.
     mode->setCurrentIndex(static_cast<int>(ClipPanel::Mode::SectionX));
+    QVERIFY(lookingAlong(app, 0));  // the section seen along its normal
     clip->setAxis(0, grid.x() + 8.5, kSpacing / 2);  // exactly the column x = 8.5
     QCOMPARE(clip->pointsInside(), std::size_t{101});
     // A box around the block's top.

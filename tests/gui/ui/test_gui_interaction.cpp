@@ -395,9 +395,12 @@ class GuiInteractionTest : public QObject {
 
     ManualAlignPanel& manual = *app.manual;
     manual.setPicking(true);
+    // Each click lands beside its marker (about 6 px off, outside the 6 px dot): picking snaps
+    // to the marker itself, so the fit below is exact.
+    const QPoint beside(5, 4);
     for (const auto& m : markers) {
-      clickView(app, projectToView(app, m));                // the source marker...
-      clickView(app, projectToView(app, truth.apply(m)));  // ...then the same on the target
+      clickView(app, projectToView(app, m) + beside);                // the source marker...
+      clickView(app, projectToView(app, truth.apply(m)) + beside);  // ...then the same on the target
     }
     QCOMPARE(manual.pairCount(), static_cast<int>(markers.size()));
     // Clicks in the view went to the pairs, not to feature picking.
