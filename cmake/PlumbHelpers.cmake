@@ -13,6 +13,15 @@ function(plumb_core_module name)
   set_property(GLOBAL APPEND PROPERTY PLUMB_CORE_MODULES plumb_${name})
 endfunction()
 
+# plumb_sanitized_timeout(VAR): in a sanitizer tree (tests/sanitize, tsan) the same tests run
+# 2-5 times slower, more on a loaded machine: their time limits are 4 times the normal ones.
+function(plumb_sanitized_timeout var)
+  if(PLUMB_SANITIZE OR PLUMB_TSAN)
+    math(EXPR scaled "${${var}} * 4")
+    set(${var} ${scaled} PARENT_SCOPE)
+  endif()
+endfunction()
+
 # plumb_add_test(NAME SOURCES files... LIBS targets... [LABELS labels...] [TIMEOUT s] [RUNS_CLI])
 # A GoogleTest executable registered with CTest, one CTest test per gtest case.
 function(plumb_add_test name)
@@ -23,6 +32,7 @@ function(plumb_add_test name)
   if(NOT ARG_LABELS)
     set(ARG_LABELS unit)
   endif()
+  plumb_sanitized_timeout(ARG_TIMEOUT)
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main plumb_test_support)
   # Test code at -O1 in Release: a quarter less compile time than -O2 (measured on the CLI,
