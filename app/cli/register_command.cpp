@@ -3,9 +3,12 @@
 //   [-o REGISTERED.{e57,ply,las} [--distances [--distance-max M] [--unsigned-distances]]]
 //   [--transform T.json] [--report REPORT.{json,html}]... [--seed N]
 //   [--params PARAMS.json] [--set GROUP.KEY=VALUE]... [--print-params] [--source-trajectory FILE]
-//   [--target-trajectory FILE]
+//   [--target-trajectory FILE] [--model-elements IfcWall,IfcSlab] [--model-element-ids ID,...]
 // Registers SOURCE onto TARGET (scans or models; a PLY/OBJ with faces or an IFC is a model).
 // The inputs are built with makeRegistrationInput, exactly like the desktop app.
+// --model-elements / --model-element-ids restrict a model TARGET to chosen IFC types or
+// elements (GlobalId or name) before its features and refinement surface are built; the report
+// says what the registration rests on (core/model/model_element_filter.hpp).
 // --source-trajectory / --target-trajectory: a mobile scan without per-point sensor origins
 // (LAS, E57 from other tools) gets them from the vehicle trajectory ("t x y z" per line, in
 // that dataset's frame) interpolated at each point's timestamp; the openings method needs them.
@@ -73,7 +76,16 @@ struct RegisterOptions {
   std::string orientation;  ///< empty: not given; else orientation.source (issue 14)
   std::string memory_budget;  ///< empty: not given; else memory.budget (MB)
   std::vector<std::string> settings;  ///< --set GROUP.KEY=VALUE or KEY=VALUE
+  std::vector<std::string> model_elements;  ///< per modelElementOptions(), comma-separated lists
 };
+
+/// --model-elements / --model-element-ids as the filter they describe.
+ModelElementFilter modelElementFilter(const RegisterOptions& o) {
+  ModelElementFilter f;
+  const auto& options = modelElementOptions();
+  for (std::size_t i = 0; i < options.size(); ++i) f.*options[i].member = splitNameList(o.model_elements[i]);
+  return f;
+}
 
 PipelineParams loadParams(const RegisterOptions& o) {
   PipelineParams p;
@@ -122,9 +134,16 @@ bool loadSubsampled(Side& s, const std::string& path, const std::string& traject
   return true;
 }
 
+/// The element options choose parts of a model: InputError for a point-cloud target.
+void checkElementsOnModel(const Side& s, const std::string& path, const ModelElementFilter& elements) {
+  if (!elements.empty() && !s.input.model)
+    throw InputError("register: --model-elements / --model-element-ids: TARGET " + path +
+                     " is a point cloud; they choose elements of a model target");
+}
+
 void load(Side& s, const std::string& path, const std::string& trajectory, const char* option,
-          const PipelineParams& p) {
-  if (loadSubsampled(s, path, trajectory, p)) return;
+          const PipelineParams& p, const ModelElementFilter& elements = {}) {
+  if (loadSubsampled(s, path, trajectory, p)) return checkElementsOnModel(s, path, elements);
   s.data = readFile(path);
   if (!trajectory.empty() && !std::holds_alternative<Dataset>(s.data))
     throw InputError(std::string(option) + ": " + path + " is a model, not a scan: a trajectory only "
@@ -133,8 +152,9 @@ void load(Side& s, const std::string& path, const std::string& trajectory, const
     if (!trajectory.empty()) setSensorOriginsFromTrajectory(*d, readTrajectory(trajectory), trajectory);
     s.input = makeRegistrationInput(*d, RigidTransform());
   } else {
-    s.input = makeRegistrationInput(std::get<BimModel>(s.data), RigidTransform());
+    s.input = makeRegistrationInput(std::get<BimModel>(s.data), RigidTransform(), elements);
   }
+  checkElementsOnModel(s, path, elements);
 }
 
 /// The distance parameters of --distances; InputError for a distance option without it, or
@@ -216,8 +236,11 @@ int run(const RegisterOptions& o) {
                                                    : std::optional<bool>(isModelFormat(source_format)));
   Side src, tgt;
   load(src, o.source, o.source_trajectory, "--source-trajectory", p);
-  load(tgt, o.target, o.target_trajectory, "--target-trajectory", p);
+  load(tgt, o.target, o.target_trajectory, "--target-trajectory", p, modelElementFilter(o));
   checkOutputs(o, std::holds_alternative<BimModel>(src.data));
+  if (tgt.input.model_selection)
+    std::cerr << "plumb-cli: registering onto " << o.target << " restricted to "
+              << selectionSummary(*tgt.input.model_selection) << "\n";
   checkDistanceInputs(o, src, tgt);
   // Progress on a terminal only (logs stay clean).
   const bool tty = isatty(2);
@@ -296,6 +319,9 @@ void addRegisterCommand(CLI::App& app, Action& action) {
                   "handheld, SLAM) or any; same as --set orientation.source=...")
       ->check(CLI::IsMember({"auto", "levelled", "y-up", "any"}));
   cmd->add_option("--memory-budget", opts->memory_budget, memoryBudgetHelp() + "; same as --set memory.budget=MB");
+  opts->model_elements.resize(modelElementOptions().size());
+  for (std::size_t i = 0; i < modelElementOptions().size(); ++i)
+    cmd->add_option("--" + modelElementOptions()[i].key, opts->model_elements[i], modelElementOptions()[i].help);
   cmd->add_option("-o,--output", opts->output, "Write the registered SOURCE (e57, ply, las...)");
   cmd->add_flag("--distances", opts->distances,
                 "With -o: add each point's distance to TARGET as the scalar field 'distance' (metres; "

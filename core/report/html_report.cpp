@@ -10,6 +10,7 @@
 
 #include "report/figure_meanings.hpp"
 #include "report/html_style.hpp"
+#include "report/model_selection_report.hpp"
 #include "report/svg_plots.hpp"
 
 namespace plumb::report {
@@ -165,6 +166,7 @@ std::string reportHtml(const RegistrationReport& r) {
   header(h, r);
   verdict(h, r.quality);
   inputs(h, r);
+  if (r.target_selection) modelSelectionHtml(h, *r.target_selection);
   transform(h, r.quality);
   pictures(h, r.pictures);
   if (r.distances.sampled > 0) distances(h, r.distances);

@@ -6,6 +6,9 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include "model/model_element_filter.hpp"
 #include "quality/quality_report.hpp"
 #include "report/feature_residuals.hpp"
 
@@ -42,6 +45,7 @@ struct RegistrationReport {
   DistanceSummary distances;
   std::vector<FeatureResidual> residuals;
   std::vector<Picture> pictures;  ///< plan view, section, histogram, residuals
+  std::optional<ModelSelection> target_selection;  ///< the chosen model elements, when restricted
 };
 
 }  // namespace plumb::report

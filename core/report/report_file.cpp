@@ -5,6 +5,7 @@
 #include "io/mesh/file_extension.hpp"
 #include "registration/refine/icp_refinement.hpp"
 #include "report/html_report.hpp"
+#include "report/model_selection_report.hpp"
 #include "report/report_builder.hpp"
 
 namespace plumb::report {
@@ -36,7 +37,9 @@ RegistrationReport reportOfRegistration(const RegistrationInput& source, const R
   if (target.model) in.target_model = &*target.model;
   else in.target_cloud = &target.cloud;
   in.seed = seed;
-  return buildRegistrationReport(in, result, {}, progress);
+  RegistrationReport report = buildRegistrationReport(in, result, {}, progress);
+  report.target_selection = target.model_selection;
+  return report;
 }
 
 void writeReportFile(const std::string& path, const RegistrationInput& source,
@@ -44,7 +47,10 @@ void writeReportFile(const std::string& path, const RegistrationInput& source,
                      const std::string& target_name, const PipelineResult& result,
                      std::uint64_t seed, Progress* progress) {
   if (!isHtmlReportPath(path)) {
-    writeFileAtomically(path, [&](std::ostream& out) { out << qualityReportToJson(result.report); });
+    const std::string json = qualityReportToJson(result.report);
+    writeFileAtomically(path, [&](std::ostream& out) {
+      out << (target.model_selection ? withModelSelection(json, *target.model_selection) : json);
+    });
     return;
   }
   const std::string html =

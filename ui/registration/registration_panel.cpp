@@ -6,6 +6,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -74,8 +75,25 @@ QLayout* RegistrationPanel::buildInputs() {
   form->addRow(tr("Source (moves)"), &layers_->source());
   form->addRow(tr("Target (reference)"), &layers_->target());
   form->addRow(tr("Method"), method_);
+  addModelElementFields(*form);
   form->addRow(use_features_);
   return form;
+}
+
+/// One text field per model element option (IFC types, element ids: comma-separated), named
+/// by its key; a model target keeps only what they choose.
+void RegistrationPanel::addModelElementFields(QFormLayout& form) {
+  for (const ModelElementOption& option : modelElementOptions()) {
+    auto* edit = new QLineEdit(this);
+    edit->setObjectName(QString::fromStdString(option.key));
+    edit->setPlaceholderText(tr("all elements"));
+    edit->setToolTip(QString::fromStdString(option.help));
+    connect(edit, &QLineEdit::textChanged, this, [this, member = option.member](const QString& text) {
+      runner_->modelElements().*member = splitNameList(text.toStdString());
+      updateFeaturesState();
+    });
+    form.addRow(QString::fromStdString(option.label), edit);
+  }
 }
 
 QLayout* RegistrationPanel::buildActions() {

@@ -11,6 +11,7 @@
 #include "registration/auto/registration_pipeline.hpp"
 
 class QCheckBox;
+class QFormLayout;
 class QComboBox;
 class QLabel;
 class QLayout;
@@ -84,6 +85,7 @@ class RegistrationPanel : public QWidget {
  private:
   QLayout* buildInputs();
   QLayout* buildActions();
+  void addModelElementFields(QFormLayout& form);
   QWidget* buildVisualCheck();
   void connectSignals();
   void followInputs();

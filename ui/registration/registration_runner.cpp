@@ -16,12 +16,13 @@ namespace plumb::ui {
 
 namespace {
 /// The parameters the detected features depend on (the extraction groups), as text.
-std::string extractionParams(const PipelineParams& params) {
+std::string extractionParams(const PipelineParams& params, const ModelElementFilter& elements) {
   const nlohmann::json all = pipelineParamsToJson(params);
   nlohmann::json used;
   for (const char* key : {"plane-extraction", "opening-detection", "segment-detection",
                           "mesh-edges", "model-sample-spacing"})
     if (all.contains(key)) used[key] = all.at(key);
+  if (!elements.empty()) used["model-elements"] = elements.describe();
   return used.dump();
 }
 }  // namespace
@@ -46,7 +47,7 @@ bool RegistrationRunner::featuresShown() const {
 
 bool RegistrationRunner::featuresUpToDate() const {
   return featuresShown() && features_.source.is(source()) && features_.target.is(target()) &&
-         features_.params == extractionParams(params_);
+         features_.params == extractionParams(params_, model_elements_);
 }
 
 std::string RegistrationRunner::featuresDetectedWith() const {
@@ -94,10 +95,10 @@ bool RegistrationRunner::detectFeatures() {
   if (!checkInputs(s, t)) return false;
   setBusy(true);
   app_.log.info(tr("Detecting features on %1 and %2").arg(s->name(), t->name()));
-  const std::string params = extractionParams(params_);
+  const std::string params = extractionParams(params_, model_elements_);
   Task* task = startFeatureDetection(app_, *s, *t, params_, [this, s, t, params] {
     features_ = {LayerRef(*s), LayerRef(*t), params};  // called only while both exist
-  });
+  }, model_elements_);
   whenFinished(task, tr("Feature detection failed: %1"), [this](bool ok) { emit featuresDetected(ok); });
   return true;
 }
@@ -114,12 +115,12 @@ bool RegistrationRunner::startRegistration(bool use_features) {
   app_.log.info(tr("Registering %1 onto %2 (%3)")
                     .arg(s->name(), t->name(), QString::fromStdString(methodName(params_.method))));
   pending_ = RegistrationRecord{nullptr, LayerRef(*s), LayerRef(*t), layerTransform(*s),
-                                layerTransform(*t), params_.seed};
+                                layerTransform(*t), params_.seed, model_elements_};
   Task* task = ui::startRegistration(
       app_, *s, *t, params_, use_features,
       [this](std::shared_ptr<const PipelineResult> r, Layer& source, const RigidTransform& start) {
         applyResult(std::move(r), source, start);
-      });
+      }, model_elements_);
   whenFinished(task, tr("Registration stopped: %1"), [this](bool ok) {
     emit registrationFinished(ok && result_ && result_->success());
   });

@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "model/model_element_filter.hpp"
 #include "model/rigid_transform.hpp"
 #include "quality/cloud_distance.hpp"
 #include "registration/auto/registration_pipeline.hpp"
@@ -31,6 +32,7 @@ struct RegistrationRecord {
   LayerRef source, target;
   RigidTransform source_start, target_start;  ///< data frame -> world when it started
   std::uint64_t seed = 1;
+  ModelElementFilter target_elements;  ///< the model target's chosen elements (issue 14)
 };
 
 class RegistrationRunner : public QObject {
@@ -40,6 +42,8 @@ class RegistrationRunner : public QObject {
 
   PipelineParams& params() { return params_; }
   DistanceParams& distanceParams() { return distance_params_; }
+  /// A model target's chosen elements (types, ids): features and registration use only them.
+  ModelElementFilter& modelElements() { return model_elements_; }
 
   /// The layers the next task works on (a running task keeps those it started with).
   void setInputs(Layer* source, Layer* target);
@@ -102,6 +106,7 @@ class RegistrationRunner : public QObject {
   AppContext& app_;
   PipelineParams params_;
   DistanceParams distance_params_;
+  ModelElementFilter model_elements_;
   LayerRef source_, target_;
   AppliedRegistration* applied_;  ///< the last result applied (child QObject)
   std::shared_ptr<const PipelineResult> result_;

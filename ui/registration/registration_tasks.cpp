@@ -33,7 +33,7 @@ LayerData dataOf(const Layer& layer) {
 
 RegistrationInput inputOf(const LayerData& d, const RigidTransform& to_world) {
   return d.dataset ? makeRegistrationInput(*d.dataset, to_world)
-                   : makeRegistrationInput(*d.model, to_world);
+                   : makeRegistrationInput(*d.model, to_world, d.elements);
 }
 
 Layer* featureOverlay(const Layer& layer) {
@@ -43,8 +43,11 @@ Layer* featureOverlay(const Layer& layer) {
 }
 
 Task* startFeatureDetection(AppContext& app, Layer& source, Layer& target,
-                            const PipelineParams& params, std::function<void()> done) {
-  const LayerData s = dataOf(source), t = dataOf(target);
+                            const PipelineParams& params, std::function<void()> done,
+                            const ModelElementFilter& target_elements) {
+  const LayerData s = dataOf(source);
+  LayerData t = dataOf(target);
+  t.elements = target_elements;
   const LayerRef src(source), tgt(target);
   Task* task = app.tasks.run(QObject::tr("Detecting features"), [&app, s, t, src, tgt, params,
                                                                   done](Progress& progress) {
@@ -77,8 +80,11 @@ Task* startFeatureDetection(AppContext& app, Layer& source, Layer& target,
 }
 
 Task* startRegistration(AppContext& app, Layer& source, Layer& target, const PipelineParams& params,
-                        bool use_features, RegistrationDone done) {
-  const LayerData s = dataOf(source), t = dataOf(target);
+                        bool use_features, RegistrationDone done,
+                        const ModelElementFilter& target_elements) {
+  const LayerData s = dataOf(source);
+  LayerData t = dataOf(target);
+  t.elements = target_elements;
   const LayerRef src(source), tgt(target);
   return app.tasks.run(QObject::tr("Registering %1 onto %2").arg(s.name, t.name),
                        [s, t, src, tgt, params, use_features, done](Progress& progress) {

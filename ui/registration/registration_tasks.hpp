@@ -29,16 +29,19 @@ struct LayerData {
   RigidTransform to_world;
   std::shared_ptr<const FeatureSet> features;  ///< detected overlay, data frame
   QString name;
+  ModelElementFilter elements;  ///< a model's chosen elements (issue 14); empty: all
 };
 /// InputError when the layer is neither a dataset nor a model.
 LayerData dataOf(const Layer& layer);
-/// The registration input of the layer's data placed by `to_world` (on a worker thread).
+/// The registration input of the layer's data placed by `to_world` (on a worker thread); a
+/// model keeps only `data.elements` (InputError when that keeps nothing).
 RegistrationInput inputOf(const LayerData& data, const RigidTransform& to_world);
 
 /// Features of each layer in its own data frame (a scan: planes, openings, segments; a model:
 /// sharp edges), shown as overlays under the layers (replacing earlier ones).
 Task* startFeatureDetection(AppContext& app, Layer& source, Layer& target,
-                            const PipelineParams& params, std::function<void()> done = {});
+                            const PipelineParams& params, std::function<void()> done = {},
+                            const ModelElementFilter& target_elements = {});
 
 /// registerData(source, target) with both sides in world coordinates (their current
 /// transforms). `use_features`: the layers' detected overlays replace extraction. The result's
@@ -47,7 +50,8 @@ Task* startFeatureDetection(AppContext& app, Layer& source, Layer& target,
 using RegistrationDone = std::function<void(std::shared_ptr<const PipelineResult> result,
                                             Layer& source, const RigidTransform& start)>;
 Task* startRegistration(AppContext& app, Layer& source, Layer& target, const PipelineParams& params,
-                        bool use_features, RegistrationDone done);
+                        bool use_features, RegistrationDone done,
+                        const ModelElementFilter& target_elements = {});
 
 /// Per-scan distances of a dataset layer to the target (cloud-to-cloud for a dataset,
 /// cloud-to-mesh for a model), as shown (current transforms).

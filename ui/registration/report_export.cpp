@@ -44,7 +44,8 @@ Task* exportRegistrationReport(AppContext& app, const RegistrationRecord& record
                      "withdrawn result has no report)");
   report::checkReportPath(path.toStdString(), "export report:", true);
   const LayerData source = placedData(record.source, record.source_start);
-  const LayerData target = placedData(record.target, record.target_start);
+  LayerData target = placedData(record.target, record.target_start);
+  target.elements = record.target_elements;  // the report says what the registration rested on
   const auto result = record.result;
   const std::uint64_t seed = record.seed;
   Task* task = app.tasks.run(QObject::tr("Exporting the registration report"),

@@ -1,6 +1,8 @@
 // IFC names: node names as assimp writes them ("<IfcType>_<Name>_<GlobalId>"), IFC types as
 // Plumb reports them, the schema a file declares (built into plumb_io_mesh and into the
 // plumb-import helper, which names the elements it sends).
+#include <algorithm>
+#include <cctype>
 #include <fstream>
 
 #include "io/mesh/mesh_io.hpp"
@@ -27,6 +29,13 @@ BimElement elementFromIfcNodeName(const std::string& node_name) {
   e.name = rest;
   e.type = ifcBaseType(e.type);
   return e;
+}
+
+bool looksLikeIfcNodeName(const std::string& node_name) {
+  const std::string type = node_name.substr(0, node_name.find('_'));
+  if (type.size() < 4 || type.rfind("Ifc", 0) != 0 || !std::isupper(static_cast<unsigned char>(type[3])))
+    return false;
+  return std::all_of(type.begin(), type.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); });
 }
 
 std::string ifcBaseType(std::string type) {

@@ -60,6 +60,8 @@ void writeMesh(const std::filesystem::path& path, const BimModel& model);
 /// "IfcWallStandardCase_Basic Wall:Ext:1234_2O2Fr$t4X7Zf8NOew3FNtn" -> {IfcWall, name, guid};
 /// names that do not start with "Ifc" give {"", node name, ""}. Exposed for tests.
 BimElement elementFromIfcNodeName(const std::string& node_name);
+/// "IfcWall" or "IfcWall_<rest>": an IFC entity name (Ifc, a capital, letters) before any '_'.
+bool looksLikeIfcNodeName(const std::string& node_name);
 
 /// IFC2X3's "StandardCase"/"ElementedCase" subtypes as their base type (IfcWallStandardCase ->
 /// IfcWall), so that IFC2X3 and IFC4 models count alike; other types unchanged.

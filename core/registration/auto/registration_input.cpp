@@ -74,6 +74,15 @@ RegistrationInput makeRegistrationInput(const BimModel& m, const RigidTransform&
   return in;
 }
 
+RegistrationInput makeRegistrationInput(const BimModel& m, const RigidTransform& to_world,
+                                        const ModelElementFilter& filter) {
+  if (filter.empty()) return makeRegistrationInput(m, to_world);
+  FilteredModel kept = filterModelElements(m, filter);
+  RegistrationInput in = makeRegistrationInput(kept.model, to_world);
+  in.model_selection = std::move(kept.selection);
+  return in;
+}
+
 DistanceTarget distanceTarget(const RegistrationInput& in) {
   return in.model ? DistanceTarget{nullptr, &in.model->mesh} : DistanceTarget{&in.cloud, nullptr};
 }

@@ -6,6 +6,7 @@
 
 #include "model/bim_model.hpp"
 #include "model/dataset.hpp"
+#include "model/model_element_filter.hpp"
 #include "quality/cloud_distance.hpp"
 #include "registration/auto/registration_pipeline.hpp"
 
@@ -16,6 +17,8 @@ struct RegistrationInput {
   std::optional<BimModel> model;     ///< transformed copy (models)
   std::optional<Eigen::Vector3d> viewpoint;
   std::optional<FeatureSet> features;  ///< precomputed, world
+  /// A model restricted to chosen elements: the filter and what it kept (issue 14).
+  std::optional<ModelSelection> model_selection;
   /// Pointers into this object: do not move it while the side is in use.
   RegistrationSide side() const;
 };
@@ -29,6 +32,10 @@ struct RegistrationInput {
 RegistrationInput makeRegistrationInput(const Dataset& data, const RigidTransform& to_world);
 /// Throws FileError when the model has no triangles.
 RegistrationInput makeRegistrationInput(const BimModel& model, const RigidTransform& to_world);
+/// The model restricted to the elements of `filter` (filterModelElements; its InputError when
+/// nothing is kept), with the selection recorded; an empty filter keeps the whole model.
+RegistrationInput makeRegistrationInput(const BimModel& model, const RigidTransform& to_world,
+                                        const ModelElementFilter& filter);
 
 /// What distances to this side are measured to: the model's triangles, else the merged cloud
 /// (its sensor origins orient the signs). Points into `in`.

@@ -6,6 +6,7 @@
 // or two.
 #include <QApplication>
 #include <QCheckBox>
+#include <QLineEdit>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSlider>
@@ -305,6 +306,22 @@ class GuiRegistrationDockTest : public QObject {
     QVERIFY(app.log.toPlainText().contains("detected with other parameters"));
     // Detected again with these parameters: up to date.
     QVERIFY(waitForTask(startTask("detectFeatures")) && lastOk_);
+    QVERIFY(!use->text().contains("out of date"));
+  }
+
+  // The model element fields (issue 14) come from the option list, and typing a choice makes
+  // the features shown out of date, like a parameter.
+  void modelElementFieldsMarkFeaturesOutOfDate() {
+    AppContext& app = window_->context();
+    RegistrationPanel& panel = *app.registration;
+    auto* types = panel.findChild<QLineEdit*>("model-elements");
+    QVERIFY(types && panel.findChild<QLineEdit*>("model-element-ids"));
+    auto* use = panel.findChild<QCheckBox*>("useFeatures");
+    QVERIFY(waitForTask(startTask("detectFeatures")) && lastOk_);
+    QVERIFY(!use->text().contains("out of date"));
+    QTest::keyClicks(types, "IfcWall, IfcSlab");
+    QVERIFY2(use->text().contains("out of date"), qPrintable(use->text()));
+    types->clear();
     QVERIFY(!use->text().contains("out of date"));
   }
 

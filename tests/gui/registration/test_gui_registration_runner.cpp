@@ -186,6 +186,30 @@ class GuiRegistrationRunnerTest : public QObject {
     QVERIFY(RigidTransform::translationError(layerTransform(*scan_), test::scanOffset().inverse()) < 0.01);
   }
 
+  // Registration on chosen elements (issue 14): a type the model lacks stops the task with
+  // the types it has; the model's own type registers, and the record keeps the choice for
+  // the report.
+  void registersOntoChosenModelElements() {
+    AppContext& app = window_->context();
+    Layer* model = &app.scene.addModel(test::roomModel());
+    runner_->setInputs(scan_, model);
+    runner_->modelElements().types = {"IfcSlab"};
+    QSignalSpy finished(runner_.get(), &RegistrationRunner::registrationFinished);
+    QVERIFY(runner_->startRegistration(false));
+    QVERIFY(finished.wait(kTaskTimeoutMs));
+    QVERIFY(!finished.at(0).at(0).toBool());
+    QVERIFY2(app.log.toPlainText().contains("no element of type 'IfcSlab' (the model has IfcWall)"),
+             qPrintable(app.log.toPlainText()));
+    QVERIFY(layerTransform(*scan_).isIdentity());
+
+    runner_->modelElements().types = {"IfcWall"};
+    QVERIFY(runner_->startRegistration(false));
+    QVERIFY(finished.wait(kTaskTimeoutMs));
+    QVERIFY2(finished.at(1).at(0).toBool(), qPrintable(app.log.toPlainText()));
+    QCOMPARE(runner_->lastRecord().target_elements.types, std::vector<std::string>{"IfcWall"});
+    QVERIFY(RigidTransform::translationError(layerTransform(*scan_), test::scanOffset().inverse()) < 0.01);
+  }
+
  private:
   std::unique_ptr<MainWindow> window_;
   std::unique_ptr<RegistrationRunner> runner_;

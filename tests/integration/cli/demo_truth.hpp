@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "support/test_support.hpp"
 
@@ -37,7 +38,7 @@ inline Eigen::Isometry3d truthOf(const nlohmann::json& truth, const std::string&
 struct RegistrationError {
   double rotation_deg = 0.0;
   double translation_m = 0.0;  ///< worst building outline corner (ground and z = 3 m)
-  std::size_t corners = 0;     ///< outline corners checked
+  std::size_t corners = 0;     ///< outline corners (or given points) checked
 };
 
 /// Error of `T` (indoor -> outdoor, from `register indoor outdoor --transform`) against the
@@ -57,6 +58,21 @@ inline RegistrationError indoorOutdoorError(const std::filesystem::path& demo_di
       const Eigen::Vector3d p = model_to_indoor * Eigen::Vector3d(v.at(0).get<double>(), v.at(1).get<double>(), z);
       e.translation_m = std::max(e.translation_m, (T * p - expected * p).norm());
     }
+  }
+  return e;
+}
+
+/// Error of `T` (dataset `name` -> model frame, from `register DATASET MODEL --transform`)
+/// against truth.json: the rotation, and the translation error at `model_points` (model frame).
+inline RegistrationError modelFrameError(const nlohmann::json& truth, const std::string& name,
+                                         const Eigen::Isometry3d& T,
+                                         const std::vector<Eigen::Vector3d>& model_points) {
+  const Eigen::Isometry3d expected = truthOf(truth, name);
+  RegistrationError e;
+  e.rotation_deg = Eigen::AngleAxisd(T.linear() * expected.linear().transpose()).angle() * 180.0 / M_PI;
+  for (const Eigen::Vector3d& x : model_points) {
+    ++e.corners;
+    e.translation_m = std::max(e.translation_m, (T * (expected.inverse() * x) - x).norm());
   }
   return e;
 }

@@ -183,6 +183,29 @@ TEST(Mesh, ObjGroupsBecomeElementsAndObjStlRoundTrip) {
   EXPECT_THROW(writeMesh(dir / "c.fbx", m), FileError);
 }
 
+// Plumb's own OBJ export names each group "<IfcType>_<name>" (issue 14: registration on chosen
+// elements needs the types): reading the file back gives the typed elements again.
+TEST(Mesh, ObjGroupsNamedByIfcTypeKeepTheirTypes) {
+  EXPECT_TRUE(looksLikeIfcNodeName("IfcWall_W1"));
+  EXPECT_TRUE(looksLikeIfcNodeName("IfcSlab"));
+  EXPECT_FALSE(looksLikeIfcNodeName("Ifcwall_W1"));
+  EXPECT_FALSE(looksLikeIfcNodeName("Ifc2_x"));
+  EXPECT_FALSE(looksLikeIfcNodeName("floor"));
+  const auto dir = test::scratchDir("mesh_obj_types");
+  test::writeAll(dir / "a.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 0 3\n"
+                                "g IfcSlab_Floor\nf 1 2 3\ng IfcColumn_C1\nf 1 2 4\ng pole\nf 2 3 4\n");
+  const BimModel m = readMesh(dir / "a.obj");
+  writeMesh(dir / "b.obj", m);
+  const BimModel r = readMesh(dir / "b.obj");
+  ASSERT_EQ(r.elements.size(), 3u);
+  EXPECT_EQ(r.elements[0].type, "IfcSlab");
+  EXPECT_EQ(r.elements[0].name, "Floor");
+  EXPECT_EQ(r.elements[1].type, "IfcColumn");
+  EXPECT_EQ(r.elements[2].type, "");
+  EXPECT_EQ(r.elements[2].name, "pole");
+  EXPECT_EQ(r.trianglesOfType("IfcColumn").size(), 1u);
+}
+
 TEST(Mesh, GltfIsTurnedZUp) {
   // One triangle, 2 m along glTF's +Y (up): must come out 2 m along +Z.
   const auto dir = test::scratchDir("mesh_gltf");

@@ -36,8 +36,10 @@ struct Walker {
     auto it = element_of_node.find(owner);
     if (it != element_of_node.end()) return it->second;
     BimElement e;
-    if (ifc) e = elementFromIfcNodeName(owner->mName.C_Str());
-    else e.name = owner->mName.length ? owner->mName.C_Str() : mesh->mName.C_Str();
+    const std::string label = owner->mName.length ? owner->mName.C_Str() : mesh->mName.C_Str();
+    // Plumb's own OBJ/glTF export names each element's group "<IfcType>_<name>": read it back.
+    if (ifc || looksLikeIfcNodeName(label)) e = elementFromIfcNodeName(ifc ? owner->mName.C_Str() : label);
+    else e.name = label;
     model->elements.push_back(e);
     const auto idx = static_cast<std::uint32_t>(model->elements.size() - 1);
     element_of_node.emplace(owner, idx);
