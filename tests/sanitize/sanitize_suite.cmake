@@ -34,7 +34,10 @@ math(EXPR run_s "${t2} - ${t1}")
 message(STATUS "unit and integration tests ran under ${what} in ${run_s} s")
 
 # The GUI lifetime tests (tests/gui/registration): under the caller's display (CI runs the
-# suite under xvfb-run), or a virtual one.
+# suite under xvfb-run), or a virtual one. Without LeakSanitizer: its exit-time scan crashed
+# once among Mesa's and Qt's threads ("Tracer caught signal 11") after every test had passed;
+# these tests look for use after free, which ASan still reports.
+set(ENV{ASAN_OPTIONS} "detect_leaks=0:abort_on_error=0:detect_stack_use_after_return=0")
 set(display_runner)
 if(NOT DEFINED ENV{DISPLAY} OR "$ENV{DISPLAY}" STREQUAL "")
   find_program(xvfb_run xvfb-run REQUIRED)

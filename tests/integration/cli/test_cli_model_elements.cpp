@@ -22,9 +22,12 @@ using plumb::test::transformOf;
 
 namespace {
 
-/// The simulated scan of the L-shaped preset, moved by a random yaw and shift (truth.json).
+/// The simulated scan of the L-shaped preset, moved by a random yaw and shift (truth.json), in a
+/// folder of the test's own: CTest runs the cases in parallel, and the CLI runner keeps each
+/// run's output in its folder.
 fs::path simulatedScan() {
-  const fs::path dir = scratchDir("cli_model_elements");
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = scratchDir(std::string("cli_model_elements_") + info->name());
   const CliResult sim = plumbCli(dir, "simulate --preset l-shaped --tls-rooms --perturb 180,15 --seed 5 "
                                 "--tls-azimuth-step 0.6 --tls-elevation-step 0.6 -o sim");
   EXPECT_EQ(sim.exit_code, 0) << sim.err;
