@@ -16,15 +16,22 @@ message(STATUS "sanitizer tree built in ${build_s} s")
 set(ENV{ASAN_OPTIONS} "detect_leaks=1:abort_on_error=0:detect_stack_use_after_return=0")
 set(ENV{LSAN_OPTIONS} "suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan_suppressions.txt")
 set(ENV{UBSAN_OPTIONS} "print_stacktrace=1:halt_on_error=1:suppressions=${CMAKE_CURRENT_LIST_DIR}/ubsan_suppressions.txt")
-# The longest end-to-end registrations (2-10 min each under the sanitizers on 2 busy cores,
-# 16 tests, two thirds of the suite's time: measured in session 14) stay out of the CI run
-# unless FULL is set (-DPLUMB_SANITIZE_SUITE_FULL=ON): their code (features, candidates,
-# refinement, verdict, network solve, writers) runs under the sanitizers in the lighter tests.
-set(heavy "^(CliNetwork\\.(EveryStation|KeptLinks|StationWithoutLinks|WithTheModel)|TiltedSource\\.|RealPair\\.|CliIndoorOutdoor\\.Demo|CliTrajectory\\.LasWithoutOrigins|CliMemoryBudget\\.TinyBudget|CliRegister\\.SimulatedScanToModel)")
+# The long end-to-end registrations (tests/sanitize/long_tests.txt: 30 s or more each under the
+# sanitizers, five sixths of the suite's time there) stay out of the CI run unless FULL is set
+# (-DPLUMB_SANITIZE_SUITE_FULL=ON): their code runs under the sanitizers in the lighter tests.
 set(exclude)
 if(NOT FULL)
-  set(exclude -E ${heavy})
-  message(STATUS "left out (FULL=OFF): ${heavy}")
+  file(STRINGS ${CMAKE_CURRENT_LIST_DIR}/long_tests.txt lines REGEX "^[A-Za-z]")
+  set(names)
+  foreach(line IN LISTS lines)
+    string(REGEX REPLACE "[ \t]*#.*$" "" name "${line}")
+    string(REPLACE "." "\\." name "${name}")
+    list(APPEND names "${name}")
+  endforeach()
+  list(LENGTH names n_long)
+  list(JOIN names "|" alternatives)
+  set(exclude -E "^(${alternatives})$")
+  message(STATUS "left out (FULL=OFF): the ${n_long} tests of long_tests.txt")
 endif()
 execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --test-dir ${tree} -L "unit|integration" ${exclude} -j2 --no-tests=error
                         --output-on-failure --timeout 1500

@@ -36,11 +36,12 @@ double getDouble(const std::uint8_t* p, std::uint8_t datatype) {
   return datatype == pcd_type::kFloat64 ? load<double>(p) : getFloat(p, datatype);
 }
 
-/// The records and where to find each named field in them.
+/// The records (all of the file's, or a chunk's) and where to find each named field in them.
 struct Records {
   const PcdLayout& layout;
   std::span<const std::uint8_t> bytes;
-  std::size_t size() const { return static_cast<std::size_t>(layout.points()); }
+  std::size_t n;
+  std::size_t size() const { return n; }
   const std::uint8_t* at(std::size_t i, const PcdField& f) const {
     return bytes.data() + i * layout.point_step + f.offset;
   }
@@ -52,25 +53,38 @@ struct Records {
   }
 };
 
-/// Double coordinates: offset from the first finite points (offsetFromSample) and exact locals
+Eigen::Vector3d positionAt(const Records& r, std::size_t i, const PcdField& x, const PcdField& y, const PcdField& z) {
+  return Eigen::Vector3d(getDouble(r.at(i, x), x.datatype), getDouble(r.at(i, y), y.datatype),
+                         getDouble(r.at(i, z), z.datatype));
+}
+
+/// Appends the finite positions of `r` to `sample` until it holds kOffsetSampleSize.
+void samplePositions(const Records& r, const PcdField& x, const PcdField& y, const PcdField& z,
+                     std::vector<Eigen::Vector3d>& sample) {
+  for (std::size_t i = 0; i < r.size() && sample.size() < kOffsetSampleSize; ++i)
+    if (const Eigen::Vector3d w = positionAt(r, i, x, y, z); w.allFinite()) sample.push_back(w);
+}
+
+/// Double coordinates: the given offset (a stream's, chosen from the file's first finite
+/// points), else offsetFromSample of these records' first finite points, and exact locals
 /// through residuals; float coordinates are stored as they are.
-void readPositions(const Records& r, const PcdField& x, const PcdField& y, const PcdField& z, PointCloud& c) {
+void readPositions(const Records& r, const PcdField& x, const PcdField& y, const PcdField& z, PointCloud& c,
+                   const Eigen::Vector3d* offset) {
   const std::size_t n = r.size();
   c.positions.resize(n);
   if (x.datatype != pcd_type::kFloat64) {
     for (std::size_t i = 0; i < n; ++i) c.positions[i] = {r.value(i, x), r.value(i, y), r.value(i, z)};
     return;
   }
-  auto position = [&](std::size_t i) {
-    return Eigen::Vector3d(getDouble(r.at(i, x), x.datatype), getDouble(r.at(i, y), y.datatype),
-                           getDouble(r.at(i, z), z.datatype));
-  };
-  std::vector<Eigen::Vector3d> sample;
-  for (std::size_t i = 0; i < n && sample.size() < kOffsetSampleSize; ++i)
-    if (const Eigen::Vector3d w = position(i); w.allFinite()) sample.push_back(w);
-  c.offset = offsetFromSample(std::move(sample));
+  if (offset) {
+    c.offset = *offset;
+  } else {
+    std::vector<Eigen::Vector3d> sample;
+    samplePositions(r, x, y, z, sample);
+    c.offset = offsetFromSample(std::move(sample));
+  }
   c.position_residuals.resize(n);
-  for (std::size_t i = 0; i < n; ++i) c.setLocal(i, position(i) - c.offset);
+  for (std::size_t i = 0; i < n; ++i) c.setLocal(i, positionAt(r, i, x, y, z) - c.offset);
   c.dropNegligibleResiduals();
 }
 
@@ -117,21 +131,41 @@ std::string readScalarFields(const Records& r, PointCloud& c) {
   return skipped;
 }
 
-/// Organized (height > 1): every grid cell kept, NaN included, with its row and column.
-void keepGridOrDropNaN(const PcdLayout& layout, PointCloud& c) {
+/// Organized (height > 1): every grid cell kept, NaN included, with its row and column
+/// (`first`: the file's index of the first record).
+void keepGridOrDropNaN(const PcdLayout& layout, std::uint64_t first, PointCloud& c) {
   if (layout.height <= 1) {
     c.removeNonFinite();
     return;
   }
-  const std::size_t n = static_cast<std::size_t>(layout.points());
+  const std::size_t n = c.size();
   c.grid_rows = static_cast<std::int32_t>(layout.height);
   c.grid_columns = static_cast<std::int32_t>(layout.width);
   c.row.resize(n);
   c.column.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    c.row[i] = static_cast<std::int32_t>(i / layout.width);
-    c.column[i] = static_cast<std::int32_t>(i % layout.width);
+    c.row[i] = static_cast<std::int32_t>((first + i) / layout.width);
+    c.column[i] = static_cast<std::int32_t>((first + i) % layout.width);
   }
+}
+
+struct XyzFields {
+  const PcdField *x, *y, *z;
+};
+
+XyzFields xyzOrThrow(const std::filesystem::path& path, const Records& r) {
+  const auto *x = r.field("x"), *y = r.field("y"), *z = r.field("z");
+  if (!x || !y || !z) throw FileError(path, "PCD file has no x, y and z fields", atLine(1, "PCD header"));
+  return {x, y, z};
+}
+
+/// The cloud of `r` before the grid or NaN step; the multi-valued fields it skipped.
+PointCloud convert(const Records& r, const XyzFields& xyz, const Eigen::Vector3d* offset, std::string& skipped) {
+  PointCloud c;
+  readPositions(r, *xyz.x, *xyz.y, *xyz.z, c, offset);
+  readAttributes(r, c);
+  skipped = readScalarFields(r, c);
+  return c;
 }
 
 void addMetadata(const std::string& data, const PcdLayout& layout, const std::string& skipped, Dataset& d) {
@@ -150,21 +184,46 @@ Dataset pcdToDataset(const std::filesystem::path& path, const std::string& data,
                      std::span<const std::uint8_t> points) {
   if (const std::string problem = layoutProblem(layout, points.size()); !problem.empty())
     throw FileError(path, "the PCD reader returned inconsistent data: " + problem);
-  const Records r{layout, points};
-  const auto *x = r.field("x"), *y = r.field("y"), *z = r.field("z");
-  if (!x || !y || !z) throw FileError(path, "PCD file has no x, y and z fields", atLine(1, "PCD header"));
+  const Records r{layout, points, static_cast<std::size_t>(layout.points())};
+  const XyzFields xyz = xyzOrThrow(path, r);
   Dataset d;
   d.source = path;
   d.format = "pcd";
   Scan scan;
   scan.name = path.stem().string();
-  readPositions(r, *x, *y, *z, scan.cloud);
-  readAttributes(r, scan.cloud);
-  const std::string skipped = readScalarFields(r, scan.cloud);
-  keepGridOrDropNaN(layout, scan.cloud);
+  std::string skipped;
+  scan.cloud = convert(r, xyz, nullptr, skipped);
+  keepGridOrDropNaN(layout, 0, scan.cloud);
   addMetadata(data, layout, skipped, d);
   d.scans.push_back(std::move(scan));
   return d;
+}
+
+bool samplePcdPositions(const std::filesystem::path& path, const PcdLayout& layout,
+                        std::span<const std::uint8_t> records, std::vector<Eigen::Vector3d>& sample) {
+  const Records r{layout, records, records.size() / layout.point_step};
+  const XyzFields xyz = xyzOrThrow(path, r);
+  if (xyz.x->datatype != pcd_type::kFloat64) return true;
+  samplePositions(r, *xyz.x, *xyz.y, *xyz.z, sample);
+  return sample.size() >= kOffsetSampleSize;
+}
+
+PcdChunk pcdRecordsToCloud(const std::filesystem::path& path, const std::string& data, const PcdLayout& layout,
+                           std::span<const std::uint8_t> records, std::uint64_t first,
+                           const Eigen::Vector3d& offset) {
+  const Records r{layout, records, records.size() / layout.point_step};
+  const XyzFields xyz = xyzOrThrow(path, r);
+  PcdChunk chunk;
+  std::string skipped;
+  chunk.cloud = convert(r, xyz, &offset, skipped);
+  const bool organized = layout.height > 1;
+  if (!organized) chunk.fields = chunk.cloud.fieldNames();  // before the NaN points go
+  keepGridOrDropNaN(layout, first, chunk.cloud);
+  if (organized) chunk.fields = chunk.cloud.fieldNames();  // with row and column
+  Dataset d;
+  addMetadata(data, layout, skipped, d);
+  chunk.metadata = std::move(d.metadata);
+  return chunk;
 }
 
 }  // namespace plumb

@@ -99,12 +99,29 @@ struct HeaderState {
 template <class Fail>
 bool parseKeywordLine(const std::string& key, std::istringstream& words, HeaderState& st, Fail&& fail) {
   PcdHeader& h = st.h;
+  // A repeated keyword replaces the earlier line's values, as in PCL's reader (appending
+  // them made this check's record layout differ from the one PCL reads with; fuzz_pcd).
   auto readAll = [&](auto& vec) {
+    vec.clear();
     typename std::decay_t<decltype(vec)>::value_type v;
     while (words >> v) vec.push_back(v);
     if (!words.eof()) fail("malformed " + key + " line");
   };
-  if (key == "VERSION" || key == "VIEWPOINT") {
+  if (key == "VERSION") {
+  } else if (key == "VIEWPOINT") {
+    // As PCL: with 7 words or more, three floats, then four more through the same variables
+    // (a word that does not parse gives 0, and the values after it keep the earlier ones).
+    const std::string rest = words.eof() ? std::string() : words.str().substr(static_cast<std::size_t>(words.tellg()));
+    std::istringstream count_words(rest), values(rest);
+    std::size_t n = 0;
+    for (std::string w; count_words >> w;) ++n;
+    if (n >= 7) {
+      float x = 0, y = 0, z = 0, w = 0;
+      values >> x >> y >> z;
+      h.viewpoint[0] = x, h.viewpoint[1] = y, h.viewpoint[2] = z;
+      values >> w >> x >> y >> z;
+      h.viewpoint[3] = w, h.viewpoint[4] = x, h.viewpoint[5] = y, h.viewpoint[6] = z;
+    }
   } else if (key == "FIELDS" || key == "COLUMNS") {
     readAll(h.fields);
   } else if (key == "SIZE") {
@@ -112,6 +129,7 @@ bool parseKeywordLine(const std::string& key, std::istringstream& words, HeaderS
   } else if (key == "TYPE") {
     std::vector<std::string> types;
     readAll(types);
+    h.types.clear();
     for (const auto& t : types) {
       if (t.size() != 1) fail("TYPE '" + t + "' is not one of F, I, U");
       h.types.push_back(t[0]);

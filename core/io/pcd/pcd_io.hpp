@@ -23,6 +23,7 @@
 #include <filesystem>
 
 #include "common/progress.hpp"
+#include "io/stream/chunk_sink.hpp"
 #include "model/dataset.hpp"
 
 namespace plumb {
@@ -33,6 +34,19 @@ constexpr double kPcdBytesPerSecond = 5e6;
 
 /// Throws FileError (file, what, where) for malformed headers, truncated data, bad LZF blocks.
 Dataset readPcd(const std::filesystem::path& path, Progress* progress = nullptr);
+
+/// Streaming (issue 16, io/stream/point_stream.hpp): binary and binary_compressed data are read
+/// by Plumb itself a chunk of records at a time (pcd_records.hpp: the records where they lie,
+/// or one streaming LZF decoder per field), after the same header checks, and converted as
+/// readPcd converts them: same offset (the file's first finite points), same columns, same
+/// values. Memory: one chunk, whatever the file's size. ASCII data, padding fields ("_") in
+/// compressed data and 8-byte integer fields are not streamed: streamPcd returns false
+/// without calling the sink, and the caller reads the file whole with readPcd (PCL's ASCII
+/// parsing rules, which the two routes would both have to follow, stay PCL's).
+bool streamPcd(const std::filesystem::path& path, const StreamOptions& options, ChunkSink& sink,
+               Progress* progress = nullptr);
+/// True when streamPcd streams `path` (its header is read and checked; throws FileError).
+bool pcdStreamsInChunks(const std::filesystem::path& path);
 
 /// The header and size checks readPcd runs before PCL reads the file: throws FileError when
 /// the header is malformed or the data section cannot hold what it declares (pcd_header.hpp).

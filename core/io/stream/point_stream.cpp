@@ -6,6 +6,7 @@
 #include "common/error.hpp"
 #include "io/e57/e57_reader.hpp"
 #include "io/las/las_reader.hpp"
+#include "io/pcd/pcd_io.hpp"
 #include "io/ply/ply_reader.hpp"
 #include "io/stream/point_count.hpp"
 #include "io/text/text_io.hpp"
@@ -133,6 +134,13 @@ void streamTextFile(const std::filesystem::path& path, const StreamOptions& opti
 
 bool streamsInChunks(const std::filesystem::path& path) {
   const FileFormat f = formatFromExtension(path);
+  if (f == FileFormat::Pcd) {
+    try {  // ASCII PCD is read whole; a bad header is the whole reader's to report
+      return pcdStreamsInChunks(path);
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
   if (f != FileFormat::Ply) return f == FileFormat::E57 || f == FileFormat::Las || f == FileFormat::Text;
   try {  // a PLY with faces is a model (readFile); a bad header is the whole reader's to report
     return !estimatePointCount(path).model;
@@ -178,6 +186,7 @@ void streamDataset(const std::filesystem::path& path, const StreamOptions& optio
     streamTextFile(path, options, sink, progress);
     return;
   }
+  if (f == FileFormat::Pcd && streamPcd(path, options, sink, progress)) return;
   ReadOptions read;
   read.keep_direction_only = options.keep_direction_only;
   streamInMemory(readDataset(path, read, progress), options, sink);

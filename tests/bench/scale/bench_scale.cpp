@@ -14,11 +14,13 @@
 //   convert e57   plumb-cli convert FILE OUT.e57 (E57StreamWriter, one station at a time)
 //   to ply        plumb-cli convert FILE BIG.ply, then info BIG.ply and convert BIG.ply OUT.las:
 //                 the streaming PLY reader
+//   to pcd        plumb-cli convert FILE BIG.pcd (binary_compressed, written whole), then info
+//                 BIG.pcd and convert BIG.pcd OUT.las: the streaming PCD reader (LZF per field)
 // and the ratios convert/read (wall and CPU) and convert/(read + write floor). "baseline" is plumb-cli --help: the executable's own RSS
 // (libraries), which every plumb-cli row includes.
 //
 // --smoke (CI): one station at 0.3 and at 0.15 degrees; exit 1 when the peak RSS of info,
-// convert --split, info and convert of the PLY at the larger size exceeds the smaller one's by
+// convert --split, info and convert of the PLY and of the PCD at the larger size exceeds the smaller one's by
 // more than 12 MB, or that of register with a 1 MB budget (subsample capped at 250 000
 // points) by more than 60 MB (reading the 1.5 million more points whole would add ~300 MB).
 //
@@ -158,7 +160,7 @@ Run measure(const char* name, const std::vector<std::string>& args, const fs::pa
 
 struct Table {
   Run read, info, convert, write_floor, split_las, split_ply;
-  Run reg, convert_e57, info_ply, convert_ply;
+  Run reg, convert_e57, info_ply, convert_ply, info_pcd, convert_pcd;
 };
 
 /// Removes the files of `dir` whose name starts with `prefix`.
@@ -167,7 +169,7 @@ void removeOutputs(const fs::path& dir, const std::string& prefix) {
     if (e.path().filename().string().rfind(prefix, 0) == 0) fs::remove(e.path());
 }
 
-/// The rows of issue 16's second part: registration above the budget, E57 output, PLY input.
+/// The rows of issue 16's second part: registration above the budget, E57 output, PLY and PCD input.
 void measureBounded(const fs::path& e57, const fs::path& dir, double budget_mb, Table& t) {
   const std::string cli = PLUMB_CLI_PATH;
   t.reg = measure("register", {cli, "register", e57.string(), (e57.parent_path() / "model.ply").string(),
@@ -181,6 +183,12 @@ void measureBounded(const fs::path& e57, const fs::path& dir, double budget_mb, 
   t.info_ply = measure("info ply", {cli, "info", (dir / "o_big.ply").string()}, dir / "info_ply.log");
   t.convert_ply = measure("convert ply", {cli, "convert", (dir / "o_big.ply").string(), (dir / "o_ply.las").string()},
                           dir / "convert_ply.log");
+  removeOutputs(dir, "o_");
+  measure("to pcd", {cli, "convert", e57.string(), (dir / "o_big.pcd").string()}, dir / "to_pcd.log");
+  std::printf("%-14s %.0f MB\n", "  pcd size", fs::file_size(dir / "o_big.pcd") / 1e6);
+  t.info_pcd = measure("info pcd", {cli, "info", (dir / "o_big.pcd").string()}, dir / "info_pcd.log");
+  t.convert_pcd = measure("convert pcd", {cli, "convert", (dir / "o_big.pcd").string(), (dir / "o_pcd.las").string()},
+                          dir / "convert_pcd.log");
   removeOutputs(dir, "o_");
 }
 
@@ -231,6 +239,8 @@ int smoke(const Options& o, const std::string& self) {
   check("split ply", ta.split_ply, tb.split_ply);
   check("info ply", ta.info_ply, tb.info_ply);
   check("convert ply", ta.convert_ply, tb.convert_ply);
+  check("info pcd", ta.info_pcd, tb.info_pcd);
+  check("convert pcd", ta.convert_pcd, tb.convert_pcd);
   check("register", ta.reg, tb.reg, 60);
   if (!o.keep) fs::remove_all(o.dir);
   return ok ? 0 : 1;
