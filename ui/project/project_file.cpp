@@ -101,6 +101,8 @@ void saveProject(const AppContext& app, const QString& path) {
                          {"target", target},
                          {"params", pipelineParamsToJson(app.registration->params())},
                          {"distance-check", paramsToJson(DistanceParams::schema(), app.registration->distanceParams())}};
+    if (const ModelElementFilter& elements = app.registration->modelElements(); !elements.empty())
+      j["registration"]["model-elements"] = {{"types", elements.types}, {"elements", elements.elements}};
     // Only features up to date for this source, target and parameters are marked so.
     const std::string detected_with = app.registration->featuresDetectedWith();
     if (!detected_with.empty()) j["registration"]["features-detected-with"] = json::parse(detected_with);
@@ -214,8 +216,15 @@ RegistrationSetup readRegistration(AppContext& app, const json& j, const std::st
                 distance = DistanceParams();
                 paramsFromJson(DistanceParams::schema(), v, distance);
               });
+  // The model target's chosen elements; a project without them registers on the whole model.
+  ModelElementFilter elements;
+  readSection(r, "model-elements", file, [&](const json& v) {
+    elements.types = v.value("types", std::vector<std::string>());
+    elements.elements = v.value("elements", std::vector<std::string>());
+  });
   app.registration->params() = params;
   app.registration->distanceParams() = distance;
+  app.registration->modelElements() = elements;
   app.registration->refreshParams();
   return setup;
 }

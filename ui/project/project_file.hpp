@@ -10,9 +10,13 @@
 //               {"file": "mms.las", "trajectory": "mms_trajectory.txt", ...}, ...],
 //    "registration": {"source": 0, "target": 1, "params": {"method": "auto", ...},
 //                     "distance-check": {"max-distance": 0.1, "signed": true, ...},
+//                     "model-elements": {"types": ["IfcWall", "IfcSlab"], "elements": []},
 //                     "features-detected-with": {"plane-extraction": {...}, ...}}}
 // "distance-check" holds the settings of the dock's Colour by distance (DistanceParams); files
 // without it (written before) keep the dock's current settings.
+// "model-elements": {"types": ["IfcWall", ...], "elements": [GlobalId or name, ...]}, the model
+// target's chosen elements (issue 14), written when some are chosen; without it the
+// registration rests on the whole model.
 // "features-detected-with" is written only when the features shown on the source and target
 // were detected for them with the current parameters; reopened, they are up to date again.
 #include <QString>

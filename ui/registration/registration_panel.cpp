@@ -138,6 +138,7 @@ void RegistrationPanel::connectSignals() {
 
 PipelineParams& RegistrationPanel::params() { return runner_->params(); }
 DistanceParams& RegistrationPanel::distanceParams() { return runner_->distanceParams(); }
+ModelElementFilter& RegistrationPanel::modelElements() { return runner_->modelElements(); }
 std::shared_ptr<const PipelineResult> RegistrationPanel::lastResult() const { return runner_->lastResult(); }
 RegistrationRecord RegistrationPanel::lastRecord() const { return runner_->lastRecord(); }
 bool RegistrationPanel::legendVisible() const { return check_->legendVisible(); }
@@ -147,6 +148,13 @@ void RegistrationPanel::refreshParams() {
   groups_->refresh();
   distance_panel_->refresh();
   setMethod(runner_->params().method);
+  const ModelElementFilter elements = runner_->modelElements();  // the fields write it back
+  for (const ModelElementOption& option : modelElementOptions()) {
+    std::string text;
+    for (const auto& name : elements.*option.member) text += (text.empty() ? "" : ", ") + name;
+    if (auto* edit = findChild<QLineEdit*>(QString::fromStdString(option.key)))
+      edit->setText(QString::fromStdString(text));
+  }
 }
 
 Layer* RegistrationPanel::sourceLayer() const { return layers_->sourceLayer(); }

@@ -7,6 +7,7 @@
 
 #include <memory>
 
+#include "model/model_element_filter.hpp"
 #include "quality/cloud_distance.hpp"
 #include "registration/auto/registration_pipeline.hpp"
 
@@ -44,6 +45,8 @@ class RegistrationPanel : public QWidget {
   /// Re-reads every parameter editor (after params() changed elsewhere, e.g. a project).
   void refreshParams();
   DistanceParams& distanceParams();
+  /// The model target's chosen elements (issue 14); refreshParams() shows them in their fields.
+  ModelElementFilter& modelElements();
 
   /// The layers to register; until chosen (here or in the combos), defaultRegistrationPair.
   Layer* sourceLayer() const;

@@ -11,6 +11,7 @@ RegistrationSide RegistrationInput::side() const {
   RegistrationSide s;
   if (model) s.model = &*model;
   else s.cloud = &cloud;
+  if (whole_model) s.whole_model = &*whole_model;
   s.viewpoint = viewpoint;
   if (features) s.features = &*features;
   return s;
@@ -80,10 +81,13 @@ RegistrationInput makeRegistrationInput(const BimModel& m, const RigidTransform&
   FilteredModel kept = filterModelElements(m, filter);
   RegistrationInput in = makeRegistrationInput(kept.model, to_world);
   in.model_selection = std::move(kept.selection);
+  in.whole_model = m;
+  if (!to_world.isIdentity()) in.whole_model->transform(to_world);
   return in;
 }
 
 DistanceTarget distanceTarget(const RegistrationInput& in) {
+  if (in.whole_model) return DistanceTarget{nullptr, &in.whole_model->mesh};  // deviations from every element
   return in.model ? DistanceTarget{nullptr, &in.model->mesh} : DistanceTarget{&in.cloud, nullptr};
 }
 

@@ -19,6 +19,9 @@ struct RegistrationInput {
   std::optional<FeatureSet> features;  ///< precomputed, world
   /// A model restricted to chosen elements: the filter and what it kept (issue 14).
   std::optional<ModelSelection> model_selection;
+  /// With chosen elements: the whole model, moved like `model`; the verdict's free-space
+  /// evidence and the distances of the visual check are measured against it.
+  std::optional<BimModel> whole_model;
   /// Pointers into this object: do not move it while the side is in use.
   RegistrationSide side() const;
 };
@@ -33,12 +36,14 @@ RegistrationInput makeRegistrationInput(const Dataset& data, const RigidTransfor
 /// Throws FileError when the model has no triangles.
 RegistrationInput makeRegistrationInput(const BimModel& model, const RigidTransform& to_world);
 /// The model restricted to the elements of `filter` (filterModelElements; its InputError when
-/// nothing is kept), with the selection recorded; an empty filter keeps the whole model.
+/// nothing is kept), with the selection recorded and the whole model kept beside it for the
+/// verdict's evidence; an empty filter keeps the whole model.
 RegistrationInput makeRegistrationInput(const BimModel& model, const RigidTransform& to_world,
                                         const ModelElementFilter& filter);
 
-/// What distances to this side are measured to: the model's triangles, else the merged cloud
-/// (its sensor origins orient the signs). Points into `in`.
+/// What distances to this side are measured to: the model's triangles (the whole model's when
+/// the registration rests on chosen elements: deviations from every element), else the merged
+/// cloud (its sensor origins orient the signs). Points into `in`.
 DistanceTarget distanceTarget(const RegistrationInput& in);
 
 }  // namespace plumb

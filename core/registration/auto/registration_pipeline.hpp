@@ -59,7 +59,13 @@ struct RegistrationSide {
   /// on samples (refinement.model-surface = samples, or GICP), reused across registrations
   /// against the same model; sampled on demand when null.
   const PointCloud* model_samples = nullptr;
+  /// Model only, when the registration rests on chosen elements (issue 14): the whole model,
+  /// which the verdict's free-space evidence is measured against (a scan sees every element,
+  /// chosen or not). Null: `model` itself.
+  const BimModel* whole_model = nullptr;
   bool isModel() const { return model != nullptr; }
+  /// The model the scan's visibility is judged against.
+  const BimModel& evidenceModel() const { return whole_model ? *whole_model : *model; }
 };
 
 struct PipelineParams {

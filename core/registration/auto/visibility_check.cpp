@@ -33,7 +33,7 @@ VisibilitySummary checkVisibility(const RegistrationSide& source, const Registra
     s.model_target = true;
     TestedSightings sightings;
     s.source_in_target =
-        modelRayEvidence(*source.cloud, source.viewpoint, *target.model, t, p, &sightings);
+        modelRayEvidence(*source.cloud, source.viewpoint, target.evidenceModel(), t, p, &sightings);
     if (s.source_in_target.available)
       s.source_in_target.structure =
           structureEvidence(source_features.planes, source.cloud->size(), sightings, p);

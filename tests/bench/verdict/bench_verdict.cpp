@@ -86,13 +86,15 @@ Options parse(int argc, char** argv) {
   return o;
 }
 
-/// The CI subset of the wrong pairs: the unrelated pairs issue 13 was filed with, plus two
-/// indoor/indoor pairs (the second one passed the free-space contradiction ratio and is
-/// refused on unexplained structure only) and a generated-model pair.
+/// The CI subset of the wrong pairs: the unrelated pairs issue 13 was filed with (the second
+/// of its indoor -> house MMS pairs, office-floor, 53 s of CI's 240 s here, is left to
+/// VisibilityVerdict.IndoorScansOfAnotherBuildingOntoTheHouseMmsAreContradicted, which runs
+/// both with the default parameters, and to the full run), plus two indoor/indoor pairs (the
+/// second one passed the free-space contradiction ratio and is refused on unexplained
+/// structure only) and a generated-model pair.
 std::vector<WrongPair> ciWrongPairs() {
   return {{"house", "duplex.ifc", "model"},
           {"l-shaped", "house", "mms"},
-          {"office-floor", "house", "mms"},
           {"two-rooms", "l-shaped", "model"},
           {"house", "office-floor", "indoor"},
           {"l-shaped", "two-rooms", "indoor"}};

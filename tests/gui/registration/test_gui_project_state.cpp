@@ -11,6 +11,7 @@
 #include <QGroupBox>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QLineEdit>
 #include <QSpinBox>
 #include <QTest>
 
@@ -22,6 +23,7 @@
 #include "gui/room_scene.hpp"
 #include "io/io.hpp"
 #include "quality/cloud_distance.hpp"
+#include "common/error.hpp"
 #include "support/test_support.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/feature_layer.hpp"
@@ -221,6 +223,55 @@ class GuiProjectStateTest : public QObject {
     const DistanceParams& defaults = window_->context().registration->distanceParams();
     QCOMPARE(defaults.signed_distances, DistanceParams().signed_distances);
     QCOMPARE(defaults.max_distance, DistanceParams().max_distance);
+  }
+
+  // The model target's chosen elements (issue 14) come back with the project, in the dock's
+  // fields; without the entry the registration rests on the whole model; a damaged entry is an
+  // error naming it.
+  void modelElementsSurviveSaveAndOpen() {
+    reopen();  // the project of the tests above
+    if (QTest::currentTestFailed()) return;
+    RegistrationPanel& panel = *window_->context().registration;
+    auto* types = panel.findChild<QLineEdit*>("model-elements");
+    auto* ids = panel.findChild<QLineEdit*>("model-element-ids");
+    QVERIFY(types && ids && types->text().isEmpty());
+    QVERIFY(!readProject().at("registration").contains("model-elements"));
+    types->setText("IfcWall, IfcSlab");  // typed, as the user does
+    ids->setText("2O2Fr$t4X7Zf8NOew3FLOH");
+    saveProject(window_->context(), files().project);
+    const nlohmann::json saved = readProject().at("registration").at("model-elements");
+    using Names = std::vector<std::string>;
+    QVERIFY(saved.at("types").get<Names>() == Names({"IfcWall", "IfcSlab"}));
+    QVERIFY(saved.at("elements").get<Names>() == Names({"2O2Fr$t4X7Zf8NOew3FLOH"}));
+
+    reopen();
+    if (QTest::currentTestFailed()) return;
+    RegistrationPanel& again = *window_->context().registration;
+    QVERIFY(again.modelElements().types == Names({"IfcWall", "IfcSlab"}));
+    QVERIFY(again.modelElements().elements == Names({"2O2Fr$t4X7Zf8NOew3FLOH"}));
+    QCOMPARE(again.findChild<QLineEdit*>("model-elements")->text(), QString("IfcWall, IfcSlab"));
+    QCOMPARE(again.findChild<QLineEdit*>("model-element-ids")->text(), QString("2O2Fr$t4X7Zf8NOew3FLOH"));
+
+    nlohmann::json damaged = readProject();
+    damaged.at("registration").at("model-elements")["types"] = 5;
+    test::writeAll(files().project.toStdString(), damaged.dump(2));
+    window_.reset();
+    test::showMainWindow(window_, QSize(1400, 900));
+    if (QTest::currentTestFailed()) return;
+    try {
+      openProject(window_->context(), files().project);
+      QFAIL("a damaged model-elements entry was accepted");
+    } catch (const FileError& e) {
+      QVERIFY2(std::string(e.what()).find("registration.model-elements") != std::string::npos, e.what());
+    }
+
+    nlohmann::json older = readProject();
+    older.at("registration").erase("model-elements");
+    test::writeAll(files().project.toStdString(), older.dump(2));
+    reopen();
+    if (QTest::currentTestFailed()) return;
+    QVERIFY(window_->context().registration->modelElements().empty());
+    QVERIFY(window_->context().registration->findChild<QLineEdit*>("model-elements")->text().isEmpty());
   }
 
  private:

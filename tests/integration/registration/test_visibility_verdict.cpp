@@ -2,7 +2,8 @@
 // one building registered onto another building's outdoor MMS passed before it (RMS 11 mm,
 // "the result can be used") and now fail as "contradicted"; right pairs (an acceptance
 // scenario, the real room pair with its PCD viewpoints) still succeed, with the evidence named
-// in the verdict.
+// in the verdict. A registration on chosen model elements is still judged against the whole
+// model: the scan sees every element, chosen or not.
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -10,6 +11,7 @@
 #include "acceptance_scenarios.hpp"
 #include "io/io.hpp"
 #include "registration/auto/registration_input.hpp"
+#include "registration/auto/visibility_check.hpp"
 #include "support/test_support.hpp"
 
 using namespace plumb;
@@ -83,4 +85,36 @@ TEST(VisibilityVerdict, WithoutSensorOriginsTheVerdictSaysTheEvidenceIsMissing) 
   EXPECT_FALSE(r.report.visibility.source_in_target.available);
   EXPECT_NE(r.report.verdict.find("No free-space evidence"), std::string::npos)
       << r.report.verdict;
+}
+
+// Issue 14: a registration that rests on the walls alone is judged, and its distances measured,
+// against the whole model. Against the walls alone, the floor and ceiling the scan saw would
+// be missing from the model (fewer points explained), and the verdict would judge a different
+// building.
+TEST(VisibilityVerdict, ChosenModelElementsAreJudgedAgainstTheWholeModel) {
+  const PipelineParams p = test::acceptanceParams();
+  const test::Scenario s = test::makeScenario("bim-generated", p);
+  ASSERT_TRUE(s.isBim());
+  ModelElementFilter walls;
+  walls.types = {"IfcWall"};
+  const RegistrationInput chosen = makeRegistrationInput(*s.model, RigidTransform(), walls);
+  const RegistrationInput whole = makeRegistrationInput(*s.model, RigidTransform());
+  ASSERT_TRUE(chosen.whole_model && chosen.model && chosen.model_selection);
+  ASSERT_LT(chosen.model->mesh.triangles.size(), whole.model->mesh.triangles.size());
+  EXPECT_EQ(distanceTarget(chosen).mesh, &chosen.whole_model->mesh);
+
+  RegistrationSide scan;
+  scan.cloud = &s.source;  // in the model frame: the truth is the identity
+  const VisibilitySummary judged = checkVisibility(scan, chosen.side(), RigidTransform(), p.visibility);
+  const VisibilitySummary reference = checkVisibility(scan, whole.side(), RigidTransform(), p.visibility);
+  RegistrationSide walls_only = chosen.side();
+  walls_only.whole_model = nullptr;
+  const VisibilitySummary partial = checkVisibility(scan, walls_only, RigidTransform(), p.visibility);
+  ASSERT_TRUE(judged.source_in_target.conclusive(p.visibility));
+  EXPECT_EQ(judged.source_in_target.consistent, reference.source_in_target.consistent);
+  EXPECT_EQ(judged.source_in_target.contradicting, reference.source_in_target.contradicting);
+  EXPECT_LT(partial.source_in_target.consistent, judged.source_in_target.consistent);
+  std::cout << "scan at the truth, points on model surfaces: whole model "
+            << judged.source_in_target.consistent << " of " << judged.source_in_target.tested
+            << ", walls alone " << partial.source_in_target.consistent << "\n";
 }
