@@ -15,12 +15,6 @@ std::string lower(std::string s) {
   return s;
 }
 
-std::string joined(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out;
-}
-
 /// The element index of every triangle, or none when the model has no element tags.
 bool tagged(const BimModel& m) {
   return !m.elements.empty() && m.triangle_element.size() == m.mesh.triangles.size();
@@ -38,7 +32,7 @@ std::vector<bool> keptElements(const BimModel& model, const ModelElementFilter& 
     if (it == present.end())
       throw InputError(model.source.string() + ": no element of type '" + t + "' (the model has " +
                        (present.empty() ? std::string("no typed elements")
-                                        : joined({present.begin(), present.end()})) + ")");
+                                        : joinNameList({present.begin(), present.end()})) + ")");
     wanted_types.insert(*it);
   }
   std::vector<bool> keep(model.elements.size(), false);
@@ -88,8 +82,8 @@ BimModel keepTriangles(const BimModel& model, const std::vector<bool>& keep) {
 std::string ModelElementFilter::describe() const {
   if (empty()) return "all elements";
   std::string out;
-  if (!types.empty()) out = "types " + joined(types);
-  if (!elements.empty()) out += (out.empty() ? "" : "; ") + std::string("elements ") + joined(elements);
+  if (!types.empty()) out = "types " + joinNameList(types);
+  if (!elements.empty()) out += (out.empty() ? "" : "; ") + std::string("elements ") + joinNameList(elements);
   return out;
 }
 
@@ -105,6 +99,12 @@ const std::vector<ModelElementOption>& modelElementOptions() {
        &ModelElementFilter::elements},
   };
   return options;
+}
+
+std::string joinNameList(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
 }
 
 std::vector<std::string> splitNameList(const std::string& text) {

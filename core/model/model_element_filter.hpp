@@ -31,6 +31,8 @@ const std::vector<ModelElementOption>& modelElementOptions();
 
 /// "a, b,,c" -> {"a", "b", "c"}: blanks around the commas and empty items dropped.
 std::vector<std::string> splitNameList(const std::string& text);
+/// {"a", "b"} -> "a, b": what splitNameList reads back (the desktop's fields, messages).
+std::string joinNameList(const std::vector<std::string>& items);
 
 /// Elements and triangles of one IFC type ("" for untyped elements).
 struct ElementTypeUse {

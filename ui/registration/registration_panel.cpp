@@ -149,12 +149,9 @@ void RegistrationPanel::refreshParams() {
   distance_panel_->refresh();
   setMethod(runner_->params().method);
   const ModelElementFilter elements = runner_->modelElements();  // the fields write it back
-  for (const ModelElementOption& option : modelElementOptions()) {
-    std::string text;
-    for (const auto& name : elements.*option.member) text += (text.empty() ? "" : ", ") + name;
+  for (const ModelElementOption& option : modelElementOptions())
     if (auto* edit = findChild<QLineEdit*>(QString::fromStdString(option.key)))
-      edit->setText(QString::fromStdString(text));
-  }
+      edit->setText(QString::fromStdString(joinNameList(elements.*option.member)));
 }
 
 Layer* RegistrationPanel::sourceLayer() const { return layers_->sourceLayer(); }

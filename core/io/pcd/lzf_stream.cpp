@@ -1,12 +1,10 @@
 #include "io/pcd/lzf_stream.hpp"
 
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
+#include <algorithm>
 #include <string>
 
 #include "common/error.hpp"
+#include "io/pcd/positioned_read.hpp"
 
 namespace plumb {
 
@@ -20,17 +18,9 @@ void LzfStream::corrupt(const char* what) const {
 
 std::uint8_t LzfStream::nextInput() {
   if (in_pos_ == in_len_) {
-    const std::uint64_t want = std::min<std::uint64_t>(in_.size(), size_ - consumed_);
-    ssize_t got;
-    do {
-      got = ::pread(fd_, in_.data(), want, static_cast<off_t>(begin_ + consumed_));
-    } while (got < 0 && errno == EINTR);
-    if (got <= 0)
-      throw FileError(path_, got < 0 ? std::string("read error: ") + std::strerror(errno)
-                                     : std::string("truncated data inside the compressed block"),
-                      atByte(begin_ + consumed_, "binary_compressed block"));
+    in_len_ = static_cast<std::size_t>(std::min<std::uint64_t>(in_.size(), size_ - consumed_));
+    readFileAt(fd_, path_, begin_ + consumed_, in_.data(), in_len_, "binary_compressed block");
     in_pos_ = 0;
-    in_len_ = static_cast<std::size_t>(got);
   }
   ++consumed_;
   return in_[in_pos_++];

@@ -1,12 +1,10 @@
 #include "io/pcd/pcd_records.hpp"
 
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstring>
 
 #include "common/error.hpp"
 #include "io/pcd/lzf_stream.hpp"
+#include "io/pcd/positioned_read.hpp"
 
 namespace plumb {
 namespace {
@@ -23,25 +21,12 @@ std::uint8_t datatypeOf(char type, int size) {
   }
 }
 
-void readAt(int fd, const std::filesystem::path& path, std::uint64_t offset, std::uint8_t* out, std::uint64_t n) {
-  while (n > 0) {
-    const ssize_t got = ::pread(fd, out, n, static_cast<off_t>(offset));
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0)
-      throw FileError(path, got < 0 ? std::string("read error: ") + std::strerror(errno) : "truncated data",
-                      atByte(offset, "data"));
-    out += got;
-    offset += static_cast<std::uint64_t>(got);
-    n -= static_cast<std::uint64_t>(got);
-  }
-}
-
 class BinaryRecords final : public PcdRecordSource {
  public:
   BinaryRecords(int fd, const std::filesystem::path& path, std::uint64_t data_offset, std::uint32_t step)
       : fd_(fd), path_(path), at_(data_offset), step_(step) {}
   void next(std::uint64_t n, std::uint8_t* out) override {
-    readAt(fd_, path_, at_, out, n * step_);
+    readFileAt(fd_, path_, at_, out, n * step_, "data");
     at_ += n * step_;
   }
 
@@ -59,7 +44,7 @@ class CompressedRecords final : public PcdRecordSource {
   CompressedRecords(int fd, const std::filesystem::path& path, const PcdHeader& header, const PcdLayout& layout)
       : layout_(layout), path_(path) {
     std::uint32_t sizes[2];
-    readAt(fd, path, header.data_offset, reinterpret_cast<std::uint8_t*>(sizes), sizeof sizes);
+    readFileAt(fd, path, header.data_offset, reinterpret_cast<std::uint8_t*>(sizes), sizeof sizes, "data");
     block_end_ = header.data_offset + 8 + sizes[0];
     std::uint64_t start = 0;  // checkPcdFile checked sizes[1] == points x record size
     for (const auto& f : layout.fields) {
@@ -115,12 +100,18 @@ std::optional<PcdLayout> layoutOfHeader(const PcdHeader& h) {
   return l;
 }
 
+bool recordsStream(const PcdHeader& header, const PcdLayout& layout) {
+  if (header.data == "binary") return true;
+  if (header.data != "binary_compressed") return false;
+  for (const auto& f : layout.fields)
+    if (f.name == "_") return false;  // PCL leaves padding out of the block: read whole
+  return true;
+}
+
 std::unique_ptr<PcdRecordSource> openRecordSource(int fd, const std::filesystem::path& path,
                                                   const PcdHeader& header, const PcdLayout& layout) {
+  if (!recordsStream(header, layout)) return nullptr;
   if (header.data == "binary") return std::make_unique<BinaryRecords>(fd, path, header.data_offset, layout.point_step);
-  if (header.data != "binary_compressed") return nullptr;
-  for (const auto& f : layout.fields)
-    if (f.name == "_") return nullptr;  // PCL leaves padding out of the block: read whole
   return std::make_unique<CompressedRecords>(fd, path, header, layout);
 }
 

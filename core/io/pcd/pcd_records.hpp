@@ -33,9 +33,12 @@ class PcdRecordSource {
   virtual void finish() {}
 };
 
-/// A source over `path`'s data for `header` and `layout`, or nullptr when its DATA type is
-/// not streamed (ascii, or binary_compressed with padding fields "_"). `fd` stays open
-/// for the source's lifetime.
+/// True when the data of `header` is read a chunk at a time: binary, and binary_compressed
+/// without padding fields "_" (PCL leaves them out of the block); not ascii.
+bool recordsStream(const PcdHeader& header, const PcdLayout& layout);
+
+/// A source over `path`'s data for `header` and `layout`, or nullptr when recordsStream is
+/// false. `fd` stays open for the source's lifetime.
 std::unique_ptr<PcdRecordSource> openRecordSource(int fd, const std::filesystem::path& path,
                                                   const PcdHeader& header, const PcdLayout& layout);
 

@@ -38,11 +38,8 @@ struct PcdPlan {
 
 std::optional<PcdPlan> planOf(const std::filesystem::path& path) {
   PcdHeader header = checkPcdFile(path);
-  if (header.data == "ascii") return std::nullopt;
   auto layout = layoutOfHeader(header);
-  if (!layout) return std::nullopt;
-  for (const auto& f : layout->fields)
-    if (f.name == "_" && header.data == "binary_compressed") return std::nullopt;
+  if (!layout || !recordsStream(header, *layout)) return std::nullopt;
   return PcdPlan{std::move(header), std::move(*layout)};
 }
 
@@ -54,7 +51,6 @@ class ChunkReader {
       : fd_(fd), path_(path), plan_(plan), capacity_(capacity), source_(open()) {}
 
   std::uint64_t total() const { return plan_.layout.points(); }
-  std::uint64_t done() const { return done_; }
 
   /// The next chunk's records (empty at the end).
   std::span<const std::uint8_t> next() {
