@@ -34,7 +34,7 @@ function(plumb_add_test name)
   endif()
   plumb_sanitized_timeout(ARG_TIMEOUT)
   add_executable(${name} ${ARG_SOURCES})
-  target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main plumb_test_support)
+  target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest plumb_gtest_main plumb_test_support)
   # Test code at -O1 in Release: a quarter less compile time than -O2 (measured on the CLI,
   # E57 and params tests); what the tests exercise is the core, built at -O2.
   target_compile_options(${name} PRIVATE -Wall -Wextra $<$<CONFIG:Release>:-O1>)

@@ -34,12 +34,14 @@
 #include "ui/inspection/measure_tool.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
 #include "ui/panels/log_panel.hpp"
+#include "ui/panels/memory_status_widget.hpp"
 #include "ui/panels/properties_panel.hpp"
 #include "ui/panels/task_progress_widget.hpp"
 #include "ui/project/project_file.hpp"
 #include "ui/project/unsaved_changes.hpp"
 #include "ui/registration/manual_align_panel.hpp"
 #include "ui/registration/registration_panel.hpp"
+#include "ui/tasks/load_budget.hpp"
 #include "ui/tasks/load_files.hpp"
 #include "ui/tasks/task_manager.hpp"
 #include "ui/view/empty_scene_hint.hpp"
@@ -87,6 +89,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   detail->setObjectName("detailLabel");
   statusBar()->addPermanentWidget(detail);
   connect(lod_, &LodController::detailTextChanged, detail, &QLabel::setText);
+  statusBar()->addPermanentWidget(new MemoryStatusWidget([this] { return memoryBudget(*context_); }, this));
   // A colour mode the data cannot show is said, not silently replaced.
   connect(scene, &Scene::colourFallback, this, [this](const QString& message) {
     context_->log.warning(message);

@@ -1,9 +1,8 @@
 #include "common/memory_budget.hpp"
 
+#include "common/process_memory.hpp"
+
 #include <algorithm>
-#include <fstream>
-#include <sstream>
-#include <string>
 
 namespace plumb {
 
@@ -21,28 +20,13 @@ const ParamSchema<MemoryParams>& MemoryParams::schema() {
   return s;
 }
 
-namespace {
-
-/// MemAvailable of /proc/meminfo in bytes; 0 when unknown.
-std::uint64_t memAvailableBytes() {
-  std::ifstream in("/proc/meminfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("MemAvailable:", 0) != 0) continue;
-    std::istringstream fields(line.substr(13));
-    std::uint64_t kb = 0;
-    if (fields >> kb) return kb * 1024;
-  }
-  return 0;
-}
-
-}  // namespace
-
 std::uint64_t memoryBudgetBytes(const MemoryParams& params) {
   constexpr std::uint64_t kMb = 1024 * 1024;
   constexpr std::uint64_t kFloor = 256 * kMb;
   if (params.budget_mb > 0) return static_cast<std::uint64_t>(params.budget_mb * double(kMb));
-  const std::uint64_t available = memAvailableBytes();
+  // Read once per process: "when the command starts". The desktop's own data would otherwise
+  // shrink its budget with every file it opens.
+  static const std::uint64_t available = procKilobytesLine("/proc/meminfo", "MemAvailable");
   return std::max(kFloor, available > 0 ? available / 2 : 4096 * kMb);
 }
 

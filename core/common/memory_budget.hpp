@@ -25,8 +25,8 @@ struct MemoryParams {
   static const ParamSchema<MemoryParams>& schema();
 };
 
-/// Bytes the budget allows: budget_mb, or when 0 half of MemAvailable (/proc/meminfo; 4 GB
-/// when it cannot be read), never below 256 MB.
+/// Bytes the budget allows: budget_mb, or when 0 half of MemAvailable (/proc/meminfo, read
+/// once, at the process's first call; 4 GB when it cannot be read), never below 256 MB.
 std::uint64_t memoryBudgetBytes(const MemoryParams& params);
 
 /// Planning figure of the registration: bytes per input point while a side is read whole and

@@ -19,6 +19,9 @@ struct BimElement {
   std::string type;  ///< IFC entity type, e.g. "IfcWall"; "" when unknown
   std::string name;  ///< element / node name from the file
   std::string guid;  ///< IFC GlobalId when known
+  /// Name of the IfcBuildingStorey that contains it (directly, or through a space or the
+  /// element it is part of); "" when unknown or not in a storey.
+  std::string storey;
 };
 
 struct TriangleMesh {

@@ -20,7 +20,27 @@ bool tagged(const BimModel& m) {
   return !m.elements.empty() && m.triangle_element.size() == m.mesh.triangles.size();
 }
 
-/// Which elements the filter keeps; throws when a requested type or id names nothing.
+/// Which elements are on the filter's storeys (all when it names none); throws when a storey
+/// names none of the model's.
+std::vector<bool> onStoreys(const BimModel& model, const ModelElementFilter& filter) {
+  std::vector<bool> on(model.elements.size(), filter.storeys.empty());
+  if (filter.storeys.empty()) return on;
+  std::set<std::string> present;
+  for (const auto& e : model.elements)
+    if (!e.storey.empty()) present.insert(e.storey);
+  for (const auto& s : filter.storeys) {
+    bool found = false;
+    for (std::size_t i = 0; i < model.elements.size(); ++i)
+      if (!model.elements[i].storey.empty() && lower(model.elements[i].storey) == lower(s)) on[i] = found = true;
+    if (!found)
+      throw InputError(model.source.string() + ": no element on a storey named '" + s + "' (" +
+                       (present.empty() ? std::string("the model names no storeys")
+                                        : "the model's storeys: " + joinNameList({present.begin(), present.end()})) + ")");
+  }
+  return on;
+}
+
+/// Which elements the filter keeps; throws when a requested type, id or storey names nothing.
 std::vector<bool> keptElements(const BimModel& model, const ModelElementFilter& filter) {
   std::set<std::string> present;
   for (const auto& e : model.elements)
@@ -44,6 +64,9 @@ std::vector<bool> keptElements(const BimModel& model, const ModelElementFilter& 
   }
   for (std::size_t i = 0; i < model.elements.size(); ++i)
     if (wanted_types.count(model.elements[i].type)) keep[i] = true;
+  const bool by_identity = !filter.types.empty() || !filter.elements.empty();
+  const std::vector<bool> on = onStoreys(model, filter);
+  for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = (keep[i] || !by_identity) && on[i];
   return keep;
 }
 
@@ -84,6 +107,7 @@ std::string ModelElementFilter::describe() const {
   std::string out;
   if (!types.empty()) out = "types " + joinNameList(types);
   if (!elements.empty()) out += (out.empty() ? "" : "; ") + std::string("elements ") + joinNameList(elements);
+  if (!storeys.empty()) out += (out.empty() ? "" : "; ") + std::string("storeys ") + joinNameList(storeys);
   return out;
 }
 
@@ -97,6 +121,11 @@ const std::vector<ModelElementOption>& modelElementOptions() {
        "Register onto these elements of a model target only (IFC GlobalId or element name, "
        "comma-separated); with --model-elements, either one keeps an element",
        &ModelElementFilter::elements},
+      {"model-storeys", "Model storeys",
+       "Register onto the elements of these storeys of a model target only (IfcBuildingStorey "
+       "names, comma-separated); with --model-elements or --model-element-ids, only those "
+       "elements on these storeys",
+       &ModelElementFilter::storeys},
   };
   return options;
 }

@@ -16,8 +16,11 @@ namespace plumb {
 struct ModelElementFilter {
   std::vector<std::string> types;     ///< IFC types to keep ("IfcColumn"); any case
   std::vector<std::string> elements;  ///< elements to keep, by IFC GlobalId or by name
-  bool empty() const { return types.empty() && elements.empty(); }
-  /// "types IfcWall, IfcSlab; elements 2O2Fr$t4X7Zf8NOew3FLOH", or "all elements".
+  /// Storeys (IfcBuildingStorey names; any case) the kept elements must belong to: with types
+  /// or elements, only those on these storeys; alone, every element on them.
+  std::vector<std::string> storeys;
+  bool empty() const { return types.empty() && elements.empty() && storeys.empty(); }
+  /// "types IfcWall, IfcSlab; elements 2O2Fr$t4X7Zf8NOew3FLOH; storeys Level 1", or "all elements".
   std::string describe() const;
 };
 

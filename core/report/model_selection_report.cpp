@@ -8,7 +8,7 @@ namespace plumb::report {
 
 nlohmann::json modelSelectionJson(const ModelSelection& s) {
   nlohmann::json j;
-  j["filter"] = {{"types", s.filter.types}, {"elements", s.filter.elements}};
+  j["filter"] = {{"types", s.filter.types}, {"elements", s.filter.elements}, {"storeys", s.filter.storeys}};
   j["description"] = s.filter.describe();
   std::size_t elements = 0, triangles = 0;
   j["used"] = nlohmann::json::array();

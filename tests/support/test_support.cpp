@@ -19,8 +19,18 @@ std::filesystem::path sharedData(const std::string& relative) {
   return p;
 }
 
+namespace {
+std::string& scratchCase() {
+  static std::string current;
+  return current;
+}
+}  // namespace
+
+void setScratchCase(const std::string& test_case) { scratchCase() = test_case; }
+
 std::filesystem::path scratchDir(const std::string& name) {
   auto p = std::filesystem::path(PLUMB_TEST_SCRATCH_DIR) / name;
+  if (!scratchCase().empty()) p /= scratchCase();
   std::filesystem::remove_all(p);
   std::filesystem::create_directories(p);
   return p;

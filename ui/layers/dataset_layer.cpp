@@ -185,6 +185,11 @@ std::vector<PropertyRow> DatasetLayer::describe() const {
   rows.emplace_back("Format", QString::fromStdString(data_->format));
   rows.emplace_back("Scans", QString::number(data_->scans.size()));
   rows.emplace_back("Points", QString::number(data_->pointCount()));
+  if (subsampled_from_)
+    rows.emplace_back("Subsample", QObject::tr("%1 cm voxel of the file's %2 points (memory budget); "
+                                               "exports read the whole file")
+                                       .arg(subsampled_from_->voxel * 100.0, 0, 'f', 1)
+                                       .arg(subsampled_from_->points_in_file));
   if (!trajectory_.isEmpty()) rows.emplace_back("Trajectory", trajectory_);
   if (!data_->coordinate_system.empty())
     rows.emplace_back("Coordinate system",

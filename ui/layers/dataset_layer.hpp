@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,13 @@ namespace plumb::ui {
 class ScanLayer;
 class Task;
 class TaskManager;
+
+/// A dataset opened as a voxel subsample because showing it whole would exceed the memory
+/// budget (ui/tasks/load_budget.hpp): what the file holds and how it was thinned.
+struct SubsampledFrom {
+  std::uint64_t points_in_file = 0;  ///< points the file delivered
+  double voxel = 0;                  ///< voxel edge of the subsample, metres
+};
 
 class DatasetLayer : public Layer {
  public:
@@ -52,6 +60,11 @@ class DatasetLayer : public Layer {
   bool coloringPending() const { return coloring_pending_; }
   /// Names of the scalar fields present in any scan.
   std::vector<std::string> scalarFieldNames() const;
+
+  /// Set when the layer holds a subsample of its file (opened above the memory budget):
+  /// exports then stream the whole file, not these points.
+  const std::optional<SubsampledFrom>& subsampledFrom() const { return subsampled_from_; }
+  void setSubsampledFrom(const SubsampledFrom& s) { subsampled_from_ = s; }
 
   /// The registration transform applied to the whole dataset, and whether it is shown
   /// (before/after toggle). Elevation colours follow in the background once the scene is told
@@ -124,6 +137,7 @@ class DatasetLayer : public Layer {
   std::uint64_t style_generation_ = 0;  ///< bumped by every setStyle / requestStyle
   bool coloring_pending_ = false;
   QPointer<Task> coloring_task_;
+  std::optional<SubsampledFrom> subsampled_from_;
 };
 
 }  // namespace plumb::ui

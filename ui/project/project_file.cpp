@@ -102,7 +102,8 @@ void saveProject(const AppContext& app, const QString& path) {
                          {"params", pipelineParamsToJson(app.registration->params())},
                          {"distance-check", paramsToJson(DistanceParams::schema(), app.registration->distanceParams())}};
     if (const ModelElementFilter& elements = app.registration->modelElements(); !elements.empty())
-      j["registration"]["model-elements"] = {{"types", elements.types}, {"elements", elements.elements}};
+      j["registration"]["model-elements"] = {
+          {"types", elements.types}, {"elements", elements.elements}, {"storeys", elements.storeys}};
     // Only features up to date for this source, target and parameters are marked so.
     const std::string detected_with = app.registration->featuresDetectedWith();
     if (!detected_with.empty()) j["registration"]["features-detected-with"] = json::parse(detected_with);
@@ -221,6 +222,7 @@ RegistrationSetup readRegistration(AppContext& app, const json& j, const std::st
   readSection(r, "model-elements", file, [&](const json& v) {
     elements.types = v.value("types", std::vector<std::string>());
     elements.elements = v.value("elements", std::vector<std::string>());
+    elements.storeys = v.value("storeys", std::vector<std::string>());
   });
   app.registration->params() = params;
   app.registration->distanceParams() = distance;

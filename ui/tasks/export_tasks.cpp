@@ -8,6 +8,7 @@
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/layer_transform.hpp"
 #include "ui/panels/log_panel.hpp"
+#include "ui/tasks/load_budget.hpp"
 #include "ui/tasks/task_manager.hpp"
 
 namespace plumb::ui {
@@ -33,6 +34,27 @@ void attachShownDistances(Dataset& d, const std::vector<std::shared_ptr<const st
   for (const auto& s : shown) per_scan.push_back(s ? *s : std::vector<float>{});
   attachDistanceField(d, per_scan);
 }
+/// The layer holds a subsample (opened above the memory budget): the whole file is streamed
+/// through the transform (convertPointFile, as plumb-cli convert --transform), so no point of
+/// the user's data is lost. The subsample's distances are not exported.
+Task* exportWholeFile(AppContext& app, const DatasetLayer& layer, const RigidTransform& T, const QString& path) {
+  if (layer.hasDistances())
+    app.log.warning(QObject::tr("%1: distances were computed on the subsample and are not exported "
+                                "with the whole file").arg(path));
+  const std::filesystem::path source = layer.dataset().source;
+  const std::uint64_t budget = memoryBudget(app);
+  return app.tasks.run(QObject::tr("Exporting %1").arg(layer.name()),
+                       [&app, source, T, path, budget](Progress& progress) -> Task::Apply {
+                         ConvertParams params;
+                         params.transform = T;
+                         params.memory_budget = budget;
+                         params.stream = streamOptionsWithin(budget);
+                         ConvertResult r = convertPointFile(source, path.toStdString(), params, &progress);
+                         std::vector<std::string> notes;
+                         for (const auto& f : r.files) notes.insert(notes.end(), f.report.notes.begin(), f.report.notes.end());
+                         return [&app, path, notes] { logWriterNotes(app, path, notes); };
+                       });
+}
 }  // namespace
 
 Task* exportRegisteredDataset(AppContext& app, const Layer& layer, const QString& path) {
@@ -42,6 +64,11 @@ Task* exportRegisteredDataset(AppContext& app, const Layer& layer, const QString
   const auto data = dataset_layer.sharedDataset();
   refuseSameFile(data->source, path.toStdString());  // an export never replaces its own input
   const RigidTransform T = layerTransform(layer);
+  if (dataset_layer.subsampledFrom()) {
+    Task* task = exportWholeFile(app, dataset_layer, T, path);
+    logResult(app, task, QObject::tr("Registered %1 (the whole file)").arg(layer.name()), path);
+    return task;
+  }
   Task* task = app.tasks.run(QObject::tr("Exporting %1").arg(layer.name()),
                              [&app, data, T, path, distances = dataset_layer.distances()](
                                  Progress& progress) -> Task::Apply {

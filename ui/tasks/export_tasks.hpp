@@ -12,6 +12,8 @@ class Layer;
 class Task;
 
 /// The dataset with its registration applied to every scan pose. InputError for a model.
+/// A layer opened as a subsample (DatasetLayer::subsampledFrom) exports its whole file,
+/// streamed through the transform (convertPointFile), without the subsample's distances.
 Task* exportRegisteredDataset(AppContext& app, const Layer& layer, const QString& path);
 /// The layer's transform (data frame -> world).
 Task* exportTransform(AppContext& app, const Layer& layer, const QString& path);

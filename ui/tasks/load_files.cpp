@@ -3,9 +3,11 @@
 #include <QFileInfo>
 
 #include <memory>
+#include <optional>
 #include <variant>
 
 #include "io/io.hpp"
+#include "registration/bounded/bounded_input.hpp"
 #include "ui/actions/recent_files.hpp"
 #include "ui/app_context.hpp"
 #include "ui/layers/dataset_layer.hpp"
@@ -13,6 +15,8 @@
 #include "ui/layers/prepared_dataset.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/log_panel.hpp"
+#include "ui/registration/registration_panel.hpp"
+#include "ui/tasks/load_budget.hpp"
 #include "ui/tasks/task_manager.hpp"
 #include "ui/view/scene_framing.hpp"
 #include "ui/view/vtk_view_widget.hpp"
@@ -34,15 +38,37 @@ struct Loaded {
   std::shared_ptr<const Dataset> dataset;
   PreparedDataset prepared;
   std::shared_ptr<const BimModel> model;
+  std::optional<SubsampledFrom> subsampled;  ///< the dataset is a subsample (memory budget)
 };
 
 /// Fraction of a load's progress bar for reading (the rest prepares the display data).
 constexpr double kReadShare = 0.8;
 
-Loaded readAndPrepare(const std::string& path, Progress& progress) {
+/// What bounds a load, taken on the UI thread when it starts.
+struct LoadLimits {
+  std::uint64_t budget = 0;  ///< bytes
+  double voxel = 0.02;       ///< subsample voxel, metres
+};
+
+LoadLimits loadLimits(AppContext& app) {
+  const PipelineParams params = app.registration ? app.registration->params() : PipelineParams{};
+  return {memoryBudget(app), subsampleVoxel(params)};
+}
+
+/// readFile, or a voxel subsample when the whole file would not fit the budget.
+LoadedData readWithin(const std::string& path, const LoadLimits& limits, Progress& reading,
+                      std::optional<SubsampledFrom>& subsampled) {
+  const LoadPlan plan = planLoad(path, limits.budget, limits.voxel);
+  if (!plan.subsample) return readFile(path, ReadOptions{}, &reading);
+  SubsampleResult s = subsampleDataset(path, plan.params, StreamOptions{}, &reading);
+  subsampled = SubsampledFrom{s.points_read, s.voxel};
+  return std::move(s.data);
+}
+
+Loaded readAndPrepare(const std::string& path, const LoadLimits& limits, Progress& progress) {
   Progress reading = progress.sub(0.0, kReadShare);
-  LoadedData data = readFile(path, ReadOptions{}, &reading);
   Loaded out;
+  LoadedData data = readWithin(path, limits, reading, out.subsampled);
   if (auto* dataset = std::get_if<Dataset>(&data)) {
     out.dataset = std::make_shared<const Dataset>(std::move(*dataset));
     Progress preparing = progress.sub(kReadShare, 1.0);
@@ -61,11 +87,22 @@ Layer& addLoaded(AppContext& app, Loaded& data, const QString& path) {
   if (data.dataset) {
     const auto points = data.dataset->pointCount();
     const auto scans = data.dataset->scans.size();
-    layer = &app.scene.addDataset(data.dataset, std::move(data.prepared));
+    auto& dataset_layer = app.scene.addDataset(data.dataset, std::move(data.prepared));
+    layer = &dataset_layer;
     app.log.info(QObject::tr("Loaded %1: %2 points in %3 scan(s)")
                      .arg(QFileInfo(path).fileName())
                      .arg(points)
                      .arg(scans));
+    if (data.subsampled) {
+      dataset_layer.setSubsampledFrom(*data.subsampled);
+      app.log.warning(QObject::tr("%1 holds %2 points: showing it whole would exceed the memory "
+                                  "budget (%3 GB), so it is shown and registered as a %4 cm voxel "
+                                  "subsample; exports read the whole file")
+                          .arg(QFileInfo(path).fileName())
+                          .arg(data.subsampled->points_in_file)
+                          .arg(double(memoryBudget(app)) / (1024.0 * 1024.0 * 1024.0), 0, 'f', 1)
+                          .arg(data.subsampled->voxel * 100.0, 0, 'f', 1));
+    }
   } else {
     const auto triangles = data.model->mesh.triangleCount();
     const auto elements = data.model->elements.size();
@@ -89,8 +126,8 @@ void loadFiles(AppContext& app, const QStringList& paths, OnLoaded on_loaded, On
     app.log.info(QObject::tr("Loading %1").arg(absolute));
     Task* task = app.tasks.run(
         QObject::tr("Loading %1").arg(QFileInfo(path).fileName()),
-        [&app, absolute, path, on_loaded](Progress& progress) -> Task::Apply {
-          auto data = std::make_shared<Loaded>(readAndPrepare(absolute.toStdString(), progress));
+        [&app, absolute, path, on_loaded, limits = loadLimits(app)](Progress& progress) -> Task::Apply {
+          auto data = std::make_shared<Loaded>(readAndPrepare(absolute.toStdString(), limits, progress));
           return [&app, data, absolute, path, on_loaded] {
             Layer& layer = addLoaded(app, *data, absolute);
             if (on_loaded) on_loaded(layer, path);

@@ -9,7 +9,7 @@ namespace {
 using helper_stream::Reader;
 using helper_stream::Writer;
 
-constexpr helper_stream::RecordType kType{"PLUMBMDL", 2};
+constexpr helper_stream::RecordType kType{"PLUMBMDL", 3};
 
 void checkIndices(const BimModel& m) {
   for (const auto& t : m.mesh.triangles)
@@ -31,11 +31,12 @@ BimModel readModel(Reader& r) {
   r.table(m.mesh.vertices);
   r.table(m.mesh.triangles);
   r.table(m.triangle_element);
-  m.elements.resize(r.count(r.pod<std::uint64_t>(), 12));
+  m.elements.resize(r.count(r.pod<std::uint64_t>(), 16));
   for (auto& e : m.elements) {
     e.type = r.str();
     e.name = r.str();
     e.guid = r.str();
+    e.storey = r.str();
   }
   r.table(m.mesh.vertex_normals);
   r.table(m.mesh.vertex_colors);
@@ -60,6 +61,7 @@ bool writeModel(int fd, const BimModel& model) {
     w.str(e.type);
     w.str(e.name);
     w.str(e.guid);
+    w.str(e.storey);
   }
   w.table(model.mesh.vertex_normals);
   w.table(model.mesh.vertex_colors);

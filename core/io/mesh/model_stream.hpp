@@ -2,9 +2,9 @@
 // The binary stream the model import helper (plumb-import) writes on its output and readMesh
 // decodes: either a model or the error the import ended with.
 //
-// Layout (io/isolation/helper_stream.hpp): "PLUMBMDL", u32 version 2, u8 kind.
+// Layout (io/isolation/helper_stream.hpp): "PLUMBMDL", u32 version 3, u8 kind.
 // kind 1, model: string format; u64 n + n x 3 double vertices; u64 n + n x 3 u32 triangles;
-// u64 n + n u32 triangle elements; u64 n + n x (string type, name, guid) elements; u64 n +
+// u64 n + n u32 triangle elements; u64 n + n x (string type, name, guid, storey) elements; u64 n +
 // n x 3 float normals; u64 n + n x 3 u8 colours.
 // kind 2, error: the failure record of helper_stream.hpp.
 // Both end with "END!". The decoder checks every count against

@@ -234,15 +234,18 @@ class GuiProjectStateTest : public QObject {
     RegistrationPanel& panel = *window_->context().registration;
     auto* types = panel.findChild<QLineEdit*>("model-elements");
     auto* ids = panel.findChild<QLineEdit*>("model-element-ids");
-    QVERIFY(types && ids && types->text().isEmpty());
+    auto* storeys = panel.findChild<QLineEdit*>("model-storeys");
+    QVERIFY(types && ids && storeys && types->text().isEmpty());
     QVERIFY(!readProject().at("registration").contains("model-elements"));
     types->setText("IfcWall, IfcSlab");  // typed, as the user does
     ids->setText("2O2Fr$t4X7Zf8NOew3FLOH");
+    storeys->setText("Level 1,Level 2");
     saveProject(window_->context(), files().project);
     const nlohmann::json saved = readProject().at("registration").at("model-elements");
     using Names = std::vector<std::string>;
     QVERIFY(saved.at("types").get<Names>() == Names({"IfcWall", "IfcSlab"}));
     QVERIFY(saved.at("elements").get<Names>() == Names({"2O2Fr$t4X7Zf8NOew3FLOH"}));
+    QVERIFY(saved.at("storeys").get<Names>() == Names({"Level 1", "Level 2"}));
 
     reopen();
     if (QTest::currentTestFailed()) return;
@@ -251,6 +254,8 @@ class GuiProjectStateTest : public QObject {
     QVERIFY(again.modelElements().elements == Names({"2O2Fr$t4X7Zf8NOew3FLOH"}));
     QCOMPARE(again.findChild<QLineEdit*>("model-elements")->text(), QString("IfcWall, IfcSlab"));
     QCOMPARE(again.findChild<QLineEdit*>("model-element-ids")->text(), QString("2O2Fr$t4X7Zf8NOew3FLOH"));
+    QVERIFY(again.modelElements().storeys == Names({"Level 1", "Level 2"}));
+    QCOMPARE(again.findChild<QLineEdit*>("model-storeys")->text(), QString("Level 1, Level 2"));
 
     nlohmann::json damaged = readProject();
     damaged.at("registration").at("model-elements")["types"] = 5;

@@ -137,6 +137,37 @@ TEST(Mesh, IfcppAndAssimpAgreeOnTheDuplex) {
   EXPECT_LT((wallBounds(a).max - wallBounds(i).max).norm(), 0.01);
 }
 
+namespace {
+std::size_t countOn(const BimModel& m, const std::string& type, const std::string& storey) {
+  std::size_t n = 0;
+  for (const BimElement& e : m.elements) n += e.type == type && e.storey == storey;
+  return n;
+}
+/// Elements of each (type, storey), as ifc_storeys.py counts them in the STEP text.
+struct StoreyCount {
+  const char* type;
+  const char* storey;
+  std::size_t count;
+};
+void expectStoreys(const BimModel& m, const std::vector<StoreyCount>& expected) {
+  for (const StoreyCount& c : expected) EXPECT_EQ(countOn(m, c.type, c.storey), c.count) << c.type << " on " << c.storey;
+}
+const std::vector<StoreyCount> kDuplexStoreys{
+    {"IfcWall", "Level 1", 21}, {"IfcWall", "Level 2", 25}, {"IfcWall", "Roof", 4},      {"IfcWall", "T/FDN", 7},
+    {"IfcWindow", "Level 1", 4}, {"IfcWindow", "Level 2", 18}, {"IfcWindow", "Roof", 2}, {"IfcDoor", "Level 1", 6},
+    {"IfcDoor", "Level 2", 8},  {"IfcSlab", "Roof", 1}};
+}  // namespace
+
+TEST(Mesh, BothIfcReadersKeepTheStoreyOfEachElement) {
+  const auto path = test::sharedData("ifc/duplex.ifc");
+  expectStoreys(readMesh(path, nullptr, ImportLimits::fromEnvironment(), ModelParser::assimp), kDuplexStoreys);
+  expectStoreys(readMesh(path, nullptr, ImportLimits::fromEnvironment(), ModelParser::ifcpp), kDuplexStoreys);
+  // The IFC4 house (IFC++ only): Erdgeschoss and Dachgeschoss.
+  expectStoreys(readMesh(test::sharedData("ifc/AC20-FZK-Haus.ifc")),
+                {{"IfcWall", "Erdgeschoss", 9}, {"IfcWall", "Dachgeschoss", 4}, {"IfcWindow", "Erdgeschoss", 9},
+                 {"IfcWindow", "Dachgeschoss", 2}, {"IfcDoor", "Erdgeschoss", 5}, {"IfcSlab", "Dachgeschoss", 3}});
+}
+
 TEST(Mesh, IfcppReadsOnlyIfc) {
   const auto dir = test::scratchDir("mesh_ifcpp_obj");
   test::writeAll(dir / "a.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n");

@@ -96,6 +96,49 @@ TEST(ModelElementFilter, NothingKeptOrUntypedModelIsAnError) {
   EXPECT_THROW(filterModelElements(untyped, {{"IfcWall"}, {}}), InputError);
 }
 
+namespace {
+/// typedModel with storeys: W1 and the slab on "Ground floor", W2 and the column on "Level 1".
+BimModel storeyModel() {
+  BimModel m = typedModel();
+  const char* storeys[] = {"Ground floor", "Level 1", "Ground floor", "Level 1"};
+  for (std::size_t i = 0; i < m.elements.size(); ++i) m.elements[i].storey = storeys[i];
+  return m;
+}
+ModelElementFilter onStoreys(std::vector<std::string> storeys, std::vector<std::string> types = {}) {
+  ModelElementFilter f;
+  f.types = std::move(types);
+  f.storeys = std::move(storeys);
+  return f;
+}
+}  // namespace
+
+TEST(ModelElementFilter, StoreysKeepTheirElementsAndNarrowTypes) {
+  // A storey alone: every element on it (any case).
+  EXPECT_EQ(heights(filterModelElements(storeyModel(), onStoreys({"level 1"})).model),
+            (std::vector<double>{2, 2, 4, 4}));
+  // With a type: only that type on that storey.
+  const FilteredModel walls = filterModelElements(storeyModel(), onStoreys({"Level 1"}, {"IfcWall"}));
+  EXPECT_EQ(heights(walls.model), (std::vector<double>{2, 2}));
+  EXPECT_EQ(walls.selection.filter.describe(), "types IfcWall; storeys Level 1");
+  // Two storeys: the union of both.
+  EXPECT_EQ(filterModelElements(storeyModel(), onStoreys({"Level 1", "Ground floor"})).model.mesh.triangles.size(), 8u);
+}
+
+TEST(ModelElementFilter, UnknownStoreyNamesTheModelsStoreys) {
+  try {
+    filterModelElements(storeyModel(), onStoreys({"Roof"}));
+    FAIL() << "no error for a storey the model lacks";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "typed.ifc: no element on a storey named 'Roof' (the model's storeys: Ground floor, Level 1)");
+  }
+  try {
+    filterModelElements(typedModel(), onStoreys({"Level 1"}));
+    FAIL() << "no error for a model without storeys";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the model names no storeys"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ModelElementFilter, SplitsCommaSeparatedNames) {
   EXPECT_EQ(splitNameList(" IfcWall, IfcSlab,,IfcColumn "),
             (std::vector<std::string>{"IfcWall", "IfcSlab", "IfcColumn"}));

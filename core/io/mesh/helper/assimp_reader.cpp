@@ -21,6 +21,19 @@ bool isHelperNode(const std::string& name) {
   return name.empty() || name[0] == '$' || name.rfind("IfcMappedItem", 0) == 0;
 }
 
+/// The storey of an IFC node: assimp nests each element under the spatial structure that
+/// contains it (site, building, storey, space), so the nearest ancestor named
+/// "IfcBuildingStorey_..." is its storey; its name, or its GlobalId when unnamed.
+std::string storeyOf(const aiNode* node) {
+  for (const aiNode* n = node ? node->mParent : nullptr; n; n = n->mParent) {
+    const std::string name = n->mName.C_Str();
+    if (name.rfind("IfcBuildingStorey", 0) != 0) continue;
+    const BimElement storey = elementFromIfcNodeName(name);
+    return storey.name.empty() ? storey.guid : storey.name;
+  }
+  return "";
+}
+
 struct Walker {
   const aiScene* scene;
   bool ifc;
@@ -40,6 +53,7 @@ struct Walker {
     // Plumb's own OBJ/glTF export names each element's group "<IfcType>_<name>": read it back.
     if (ifc || looksLikeIfcNodeName(label)) e = elementFromIfcNodeName(ifc ? owner->mName.C_Str() : label);
     else e.name = label;
+    if (ifc) e.storey = storeyOf(owner);
     model->elements.push_back(e);
     const auto idx = static_cast<std::uint32_t>(model->elements.size() - 1);
     element_of_node.emplace(owner, idx);

@@ -3,9 +3,13 @@
 // and every triangle is turned to face the way the polygon does.
 #include "io/mesh/helper/ifcpp_reader.hpp"
 
+#include <ifcpp/IFC4/include/IfcBuildingStorey.h>
+#include <ifcpp/IFC4/include/IfcElement.h>
 #include <ifcpp/IFC4/include/IfcGloballyUniqueId.h>
 #include <ifcpp/IFC4/include/IfcLabel.h>
 #include <ifcpp/IFC4/include/IfcProduct.h>
+#include <ifcpp/IFC4/include/IfcRelAggregates.h>
+#include <ifcpp/IFC4/include/IfcRelContainedInSpatialStructure.h>
 #include <ifcpp/IFC4/include/IfcSpace.h>
 #include <ifcpp/geometry/Carve/GeometryConverter.h>
 #include <ifcpp/model/BuildingModel.h>
@@ -136,8 +140,37 @@ std::string fileText(const std::filesystem::path& path) {
   return text;
 }
 
+/// What contains `object` one level up: the spatial element an element is contained in
+/// (IfcRelContainedInSpatialStructure), else the whole it is part of (IfcRelAggregates: a space
+/// in its storey, a stair flight in its stair).
+shared_ptr<IfcObjectDefinition> containerOf(const IfcObjectDefinition& object) {
+  if (const auto* element = dynamic_cast<const IfcElement*>(&object))
+    for (const auto& weak : element->m_ContainedInStructure_inverse)
+      if (const auto rel = weak.lock(); rel && rel->m_RelatingStructure) return rel->m_RelatingStructure;
+  for (const auto& weak : object.m_Decomposes_inverse)
+    if (const auto rel = weak.lock(); rel && rel->m_RelatingObject) return rel->m_RelatingObject;
+  return nullptr;
+}
+
+/// The name (or GlobalId when unnamed) of the IfcBuildingStorey above `product`; "" when none
+/// within a few levels (a file's spatial tree is site / building / storey / space).
+std::string storeyOf(const IfcProduct& product) {
+  const IfcObjectDefinition* at = &product;
+  shared_ptr<IfcObjectDefinition> up;
+  for (int depth = 0; depth < 8 && at; ++depth) {
+    if (const auto* storey = dynamic_cast<const IfcBuildingStorey*>(at)) {
+      if (storey->m_Name && !storey->m_Name->m_value.empty()) return utf8(storey->m_Name->m_value);
+      return storey->m_GlobalId ? utf8(storey->m_GlobalId->m_value) : std::string();
+    }
+    up = containerOf(*at);
+    at = up.get();
+  }
+  return "";
+}
+
 BimElement elementOf(const IfcProduct& product) {
   BimElement e;
+  e.storey = storeyOf(product);
   e.type = ifcBaseType(product.className());
   if (product.m_Name) e.name = utf8(product.m_Name->m_value);
   if (product.m_GlobalId) e.guid = utf8(product.m_GlobalId->m_value);

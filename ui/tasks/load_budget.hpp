@@ -1,0 +1,34 @@
+#pragma once
+// Opening a file within the memory budget (issue 16): a point file whose display would exceed
+// the budget (kDisplayBytesPerPoint a point) is not read whole but streamed into a per-scan
+// voxel subsample (io/stream/stream_subsample.hpp) that fits; the layer says so
+// (DatasetLayer::subsampledFrom) and exports stream the whole file again.
+#include <cstdint>
+#include <filesystem>
+
+#include "io/stream/stream_subsample.hpp"
+
+namespace plumb::ui {
+
+struct AppContext;
+
+/// Planning figure of the desktop, bytes per point of a dataset opened whole: its columns
+/// (~26 B), the drawn buffers (bench_ui: 165 B a point once drawn in full detail) and the
+/// registration's working set when it is a registration input (~105 B).
+inline constexpr std::uint64_t kDisplayBytesPerPoint = 300;
+
+/// The memory budget in bytes: the Registration dock's "memory" group (its defaults before the
+/// dock exists).
+std::uint64_t memoryBudget(const AppContext& app);
+
+struct LoadPlan {
+  bool subsample = false;        ///< read as a subsample (else whole, as readFile)
+  std::uint64_t estimated_points = 0;
+  SubsampleParams params;        ///< the subsample's voxel and most points, when subsample
+};
+
+/// How to open `path` within `budget` bytes; `voxel` is the subsample's starting voxel, metres.
+/// Models and files whose estimate fits are read whole. Throws readDataset's FileErrors.
+LoadPlan planLoad(const std::filesystem::path& path, std::uint64_t budget, double voxel);
+
+}  // namespace plumb::ui
