@@ -8,6 +8,7 @@
 
 #include "io/io.hpp"
 #include "io/stream/point_stream.hpp"
+#include "support/test_support.hpp"
 
 namespace plumb::test {
 
@@ -103,6 +104,11 @@ std::vector<LodRecord> cachedRecords(const LodCache& cache) {
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+std::filesystem::path caseScratch(const std::string& name) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return scratchDir(info ? name + "_" + info->test_suite_name() + "." + info->name() : name);
 }
 
 std::shared_ptr<const LodCache> openValid(const std::filesystem::path& source, const std::filesystem::path& root) {
