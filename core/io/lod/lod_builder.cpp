@@ -96,8 +96,10 @@ struct OctreeBuild {
     if (top.depth >= grid.levels)
       throw InputError("level-of-detail cache: more than " + std::to_string(memoryPoints()) +
                        " points share one deepest octree node (copies of the same positions?): raise the memory budget");
+    // Surveys fill a fraction of the cube (a floor is flat): aim at buckets 8 times smaller
+    // than memory would take if the points spread evenly, so most are built at the first try.
     int levels = 1;
-    while (levels < 3 && top.depth + levels < grid.levels && (count >> (3 * levels)) > memoryPoints() / 2) ++levels;
+    while (levels < 3 && top.depth + levels < grid.levels && (count >> (3 * levels)) > memoryPoints() / 8) ++levels;
     const double buffer_bytes = params.memory_budget_mb * 1e6 * kSpillBufferShare / std::ldexp(1.0, 3 * levels);
     const auto buffer = std::max<std::size_t>(256, static_cast<std::size_t>(buffer_bytes / sizeof(LodPoint)));
     return std::make_unique<LodSplit>(grid, top, levels, params.node_capacity, spill_dir, buffer);

@@ -40,6 +40,11 @@ struct LodSelection {
   bool budget_reached = false;       ///< a visible node was left out for the budget
 };
 
+/// A perspective camera at `eye` looking at `target`, z up (gluLookAt and gluPerspective,
+/// OpenGL clip conventions); `aspect` is width / height.
+LodView lodPerspectiveView(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, double fov_y_rad, double aspect,
+                           double viewport_height_px, double near = 0.1, double far = 1e4);
+
 /// Projected size on screen, pixels, of a length `size` (metres) at distance `distance`.
 double lodPixels(const LodView& view, double size, double distance);
 /// True when the box is entirely outside one of the view's six frustum planes.

@@ -3,8 +3,6 @@
 // spacing is below a pixel.
 #include <gtest/gtest.h>
 
-#include <Eigen/Geometry>
-
 #include <algorithm>
 
 #include "io/lod/lod_select.hpp"
@@ -46,26 +44,9 @@ LodHierarchy twoLevels(std::uint64_t points = 1000) {
   return h;
 }
 
-/// A perspective camera at `eye` looking at `target` (z up), OpenGL conventions.
+/// A square 1000-pixel perspective view.
 LodView camera(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, double fov_deg = 60, double far = 1e4) {
-  const Eigen::Vector3d f = (target - eye).normalized();
-  const Eigen::Vector3d s = f.cross(Eigen::Vector3d::UnitZ()).normalized();
-  const Eigen::Vector3d u = s.cross(f);
-  Eigen::Matrix4d view = Eigen::Matrix4d::Identity();
-  view.block<1, 3>(0, 0) = s.transpose();
-  view.block<1, 3>(1, 0) = u.transpose();
-  view.block<1, 3>(2, 0) = -f.transpose();
-  view(0, 3) = -s.dot(eye), view(1, 3) = -u.dot(eye), view(2, 3) = f.dot(eye);
-  const double fov = fov_deg * M_PI / 180, near = 0.1, t = 1 / std::tan(fov / 2);
-  Eigen::Matrix4d proj = Eigen::Matrix4d::Zero();
-  proj(0, 0) = t, proj(1, 1) = t;  // square viewport
-  proj(2, 2) = -(far + near) / (far - near), proj(2, 3) = -2 * far * near / (far - near), proj(3, 2) = -1;
-  LodView v;
-  v.eye = eye;
-  v.view_projection = proj * view;
-  v.fov_y_rad = fov;
-  v.viewport_height_px = 1000;
-  return v;
+  return lodPerspectiveView(eye, target, fov_deg * M_PI / 180, 1.0, 1000, 0.1, far);
 }
 
 void expectParentsFirst(const LodHierarchy& h, const LodSelection& s) {
