@@ -1,9 +1,12 @@
 #include "io/lod/lod_builder.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
+#include <cstdlib>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -61,6 +64,19 @@ struct TempDir {
 fs::path temporaryName(const fs::path& final_dir) {
   static std::atomic<unsigned> counter{0};
   return final_dir.string() + ".building-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+}
+
+/// Removes `<final_dir>.building-<pid>-<n>` folders of processes that no longer run (a build
+/// killed before it could clean up).
+void removeAbandonedBuilds(const fs::path& final_dir) {
+  const std::string prefix = final_dir.filename().string() + ".building-";
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(final_dir.parent_path(), ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) fs::remove_all(e.path(), ec);
+  }
 }
 
 /// Puts `built` at `final_dir` (replacing an older cache) and syncs the parent folder.
@@ -170,6 +186,7 @@ LodCacheBuildResult buildLodCache(const fs::path& source, const fs::path& cache_
   LodCacheBuildResult result;
   result.directory = lodCacheDirectory(source, cache_root);
   fs::create_directories(cache_root);
+  removeAbandonedBuilds(result.directory);
   TempDir tmp{temporaryName(result.directory)};
   fs::create_directories(tmp.path / "spill");
 

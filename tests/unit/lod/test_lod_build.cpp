@@ -8,6 +8,7 @@
 #include "common/error.hpp"
 
 #include "io/lod/lod_builder.hpp"
+#include "io/lod/lod_format.hpp"
 #include "io/lod/lod_sample.hpp"
 #include "lod_test_data.hpp"
 #include "support/test_support.hpp"
@@ -120,6 +121,26 @@ TEST_F(LodBuild, CancelLeavesNoCacheNorTemporaryFolder) {
   EXPECT_EQ(openLodCache(source, root).state, LodCacheState::missing);
   ASSERT_TRUE(fs::exists(root));
   EXPECT_TRUE(fs::is_empty(root)) << "a temporary build folder was left behind";
+}
+
+TEST_F(LodBuild, AbandonedBuildFoldersAreRemovedAndDamagedSourcesNamed) {
+  const fs::path root = dir / "cache";
+  // A folder left by a build whose process is gone (pid 999999999 is above pid_max).
+  const fs::path abandoned = lodCacheDirectory(source, root).string() + ".building-999999999-0";
+  fs::create_directories(abandoned / "spill");
+  buildLodCache(source, root, smallNodes());
+  EXPECT_FALSE(fs::exists(abandoned));
+  // A file cut in the middle of its points: readDataset's error, and the valid cache stays.
+  const std::string bytes = test::readAll(source);
+  test::writeAll(source, bytes.substr(0, bytes.size() / 2));
+  try {
+    buildLodCache(source, root, smallNodes());
+    ADD_FAILURE() << "no error for a truncated source";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("survey.e57"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::exists(lodCacheDirectory(source, root) / kLodIndexFile));
+  EXPECT_EQ(std::distance(fs::directory_iterator(root), fs::directory_iterator()), 1);
 }
 
 TEST_F(LodBuild, ProgressReachesOneAndBadParametersAreRefused) {
