@@ -16,12 +16,17 @@
 //                 the streaming PLY reader
 //   to pcd        plumb-cli convert FILE BIG.pcd (binary_compressed, written whole), then info
 //                 BIG.pcd and convert BIG.pcd OUT.las: the streaming PCD reader (LZF per field)
+//   lod build     bench_scale --lod-build FILE ROOT MB: the level-of-detail cache (buildLodCache,
+//                 memory budget MB: --lod-budget, default 256), its size and bytes per point
+//   lod view      bench_scale --lod-view FILE ROOT: opening that cache, choosing the nodes of an
+//                 oblique view of the whole floor (1080 pixels high, 60 degrees) at a 2-million-point
+//                 budget and reading them
 // and the ratios convert/read (wall and CPU) and convert/(read + write floor). "baseline" is plumb-cli --help: the executable's own RSS
 // (libraries), which every plumb-cli row includes.
 //
 // --smoke (CI): one station at 0.3 and at 0.15 degrees; exit 1 when the peak RSS of info,
 // convert --split, info and convert of the PLY and of the PCD at the larger size exceeds the smaller one's by
-// more than 12 MB, or that of register with a 1 MB budget (subsample capped at 250 000
+// more than 12 MB (also the LoD cache build, at a 16 MB budget), or that of register with a 1 MB budget (subsample capped at 250 000
 // points) by more than 60 MB (reading the 1.5 million more points whole would add ~300 MB).
 //
 // Full runs: bench_scale (default --step 0.125, ~41 million points, ~0.6 GB E57);
@@ -33,6 +38,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -40,6 +46,9 @@
 #include <vector>
 
 #include "io/io.hpp"
+#include "io/lod/lod_builder.hpp"
+#include "io/lod/lod_cache.hpp"
+#include "io/lod/lod_select.hpp"
 #include "io/stream/point_stream.hpp"
 
 namespace {
@@ -108,9 +117,74 @@ int readOnly(const char* file, bool whole) {
   return 0;
 }
 
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// --lod-build: builds the cache and prints its size.
+int lodBuild(const char* file, const char* root, const char* budget_mb) {
+  plumb::LodCacheParams p;
+  p.memory_budget_mb = std::atof(budget_mb);
+  const plumb::LodCacheBuildResult r = plumb::buildLodCache(file, root, p);
+  std::printf("lod: %llu points, %zu nodes, depth %d, %llu bytes (%.2f B/point), spilled %llu, largest in memory %zu, "
+              "%.2f s\n",
+              static_cast<unsigned long long>(r.points), r.nodes, r.max_depth, static_cast<unsigned long long>(r.bytes),
+              double(r.bytes) / std::max<double>(1, r.points), static_cast<unsigned long long>(r.spilled_points),
+              r.largest_in_memory, r.seconds);
+  return 0;
+}
+
+/// Reads the selected nodes; prints the selection's and the read's times.
+void readSelection(const plumb::LodCache& cache, const plumb::LodSelection& s, double select_s, const char* what) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::uint64_t read = 0;
+  for (const std::uint32_t id : s.nodes) read += cache.readNode(id).size();
+  std::printf("%s: select %.2f ms (%zu nodes, %llu points), read %.1f ms; ", what, 1e3 * select_s, s.nodes.size(),
+              static_cast<unsigned long long>(read), 1e3 * secondsSince(t0));
+}
+
+/// --lod-view: opens the cache, selects an oblique view of the whole data at 2 million points,
+/// reads the nodes; prints each time.
+int lodView(const char* file, const char* root) {
+  auto t0 = std::chrono::steady_clock::now();
+  const plumb::LodCacheOpenResult opened = plumb::openLodCache(file, root);
+  const double open_s = secondsSince(t0);
+  if (!opened.valid()) {
+    std::printf("lod: cache not valid: %s\n", opened.reason.c_str());
+    return 1;
+  }
+  const plumb::LodHierarchy& h = opened.cache->hierarchy();
+  const Eigen::Vector3d c = h.bounds.center(), size = h.bounds.size();
+  const Eigen::Vector3d eye = c + Eigen::Vector3d(-0.6 * size.x(), -0.6 * size.y(), 0.5 * size.head<2>().maxCoeff());
+  const plumb::LodView view = plumb::lodPerspectiveView(eye, c, 60 * M_PI / 180, 16.0 / 9, 1080);
+  t0 = std::chrono::steady_clock::now();
+  const plumb::LodSelection s = plumb::selectLodNodes(h, view, {});
+  const double select_s = secondsSince(t0);
+  std::printf("lod: open %.1f ms (%zu nodes); ", 1e3 * open_s, h.nodes.size());
+  readSelection(*opened.cache, s, select_s, "spacing >= 1 px");
+  plumb::LodSelectParams all;  // refine to the budget whatever the spacing
+  all.min_spacing_px = 0;
+  t0 = std::chrono::steady_clock::now();
+  const plumb::LodSelection full = plumb::selectLodNodes(h, view, all);
+  readSelection(*opened.cache, full, secondsSince(t0), "to the budget");
+  std::printf("\n");
+  return 0;
+}
+
+/// Prints the last line of a step's log (the numbers it printed).
+void printLogTail(const fs::path& log) {
+  FILE* f = std::fopen(log.c_str(), "r");
+  if (!f) return;
+  char line[512], last[512] = "";
+  while (std::fgets(line, sizeof line, f)) std::snprintf(last, sizeof last, "%s", line);
+  std::fclose(f);
+  std::printf("  %s", last);
+}
+
 struct Options {
   double step = 0.125;
   double budget_mb = 4096;  ///< --budget: register's --memory-budget
+  double lod_budget_mb = 256;  ///< --lod-budget: the LoD cache build's memory budget
   bool one_station = false, keep = false, whole = false, smoke = false;
   fs::path dir;
 };
@@ -123,6 +197,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--stations" && i + 1 < argc) o.one_station = std::string(argv[++i]) == "one";
     else if (a == "--dir" && i + 1 < argc) o.dir = argv[++i];
     else if (a == "--budget" && i + 1 < argc) o.budget_mb = std::atof(argv[++i]);
+    else if (a == "--lod-budget" && i + 1 < argc) o.lod_budget_mb = std::atof(argv[++i]);
     else if (a == "--keep") o.keep = true;
     else if (a == "--whole") o.whole = true;
     else if (a == "--smoke") o.smoke = true;
@@ -161,7 +236,19 @@ Run measure(const char* name, const std::vector<std::string>& args, const fs::pa
 struct Table {
   Run read, info, convert, write_floor, split_las, split_ply;
   Run reg, convert_e57, info_ply, convert_ply, info_pcd, convert_pcd;
+  Run lod_build, lod_view;
 };
+
+/// The level-of-detail cache rows (issue 16, out-of-core viewing): build, then open + view.
+void measureLod(const fs::path& e57, const fs::path& dir, const std::string& self, double budget_mb, Table& t) {
+  const fs::path root = dir / "lod-cache";
+  t.lod_build = measure("lod build", {self, "--lod-build", e57.string(), root.string(), std::to_string(budget_mb)},
+                        dir / "lod_build.log");
+  printLogTail(dir / "lod_build.log");
+  t.lod_view = measure("lod view", {self, "--lod-view", e57.string(), root.string()}, dir / "lod_view.log");
+  printLogTail(dir / "lod_view.log");
+  fs::remove_all(root);
+}
 
 /// Removes the files of `dir` whose name starts with `prefix`.
 void removeOutputs(const fs::path& dir, const std::string& prefix) {
@@ -192,10 +279,12 @@ void measureBounded(const fs::path& e57, const fs::path& dir, double budget_mb, 
   removeOutputs(dir, "o_");
 }
 
-Table measureAll(const fs::path& e57, const fs::path& dir, bool whole, const std::string& self, double budget_mb) {
+Table measureAll(const fs::path& e57, const fs::path& dir, bool whole, const std::string& self, double budget_mb,
+                 double lod_budget_mb) {
   const std::string cli = PLUMB_CLI_PATH;
   Table t;
   measure("baseline", {cli, "--help"}, dir / "baseline.log");
+  measureLod(e57, dir, self, lod_budget_mb, t);
   t.read = measure("read", {self, "--read", e57.string()}, dir / "read.log");
   if (whole) measure("read whole", {self, "--read-whole", e57.string()}, dir / "read_whole.log");
   t.info = measure("info", {cli, "info", e57.string()}, dir / "info.log");
@@ -223,11 +312,11 @@ int smoke(const Options& o, const std::string& self) {
   std::printf("-- one station at 0.3 degrees\n");
   const fs::path a = simulate(small, 0.3, true);
   if (a.empty()) return 2;
-  const Table ta = measureAll(a, small, false, self, 1);
+  const Table ta = measureAll(a, small, false, self, 1, 16);
   std::printf("-- one station at 0.15 degrees (4x the points)\n");
   const fs::path b = simulate(large, 0.15, true);
   if (b.empty()) return 2;
-  const Table tb = measureAll(b, large, false, self, 1);
+  const Table tb = measureAll(b, large, false, self, 1, 16);
   bool ok = true;
   auto check = [&](const char* name, const Run& x, const Run& y, double margin = 12) {
     const bool within = y.peak_mb <= x.peak_mb + margin;
@@ -242,6 +331,7 @@ int smoke(const Options& o, const std::string& self) {
   check("info pcd", ta.info_pcd, tb.info_pcd);
   check("convert pcd", ta.convert_pcd, tb.convert_pcd);
   check("register", ta.reg, tb.reg, 60);
+  check("lod build", ta.lod_build, tb.lod_build);
   if (!o.keep) fs::remove_all(o.dir);
   return ok ? 0 : 1;
 }
@@ -252,13 +342,15 @@ int main(int argc, char** argv) {
   if (argc == 3 && std::string(argv[1]) == "--read") return readOnly(argv[2], false);
   if (argc == 3 && std::string(argv[1]) == "--read-whole") return readOnly(argv[2], true);
   if (argc == 4 && std::string(argv[1]) == "--write-floor") return writeFloor(argv[2], argv[3]);
+  if (argc == 5 && std::string(argv[1]) == "--lod-build") return lodBuild(argv[2], argv[3], argv[4]);
+  if (argc == 4 && std::string(argv[1]) == "--lod-view") return lodView(argv[2], argv[3]);
   const Options o = parse(argc, argv);
   const std::string self = fs::canonical("/proc/self/exe").string();
   if (o.smoke) return smoke(o, self);
   std::printf("-- office floor, %s, step %.3f degrees\n", o.one_station ? "one station" : "12 stations", o.step);
   const fs::path e57 = simulate(o.dir, o.step, o.one_station);
   if (e57.empty()) return 2;
-  measureAll(e57, o.dir, o.whole, self, o.budget_mb);
+  measureAll(e57, o.dir, o.whole, self, o.budget_mb, o.lod_budget_mb);
   if (!o.keep) fs::remove_all(o.dir);
   return 0;
 }
