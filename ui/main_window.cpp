@@ -30,6 +30,7 @@
 #include "ui/actions/undo_redo_reaction.hpp"
 #include "ui/actions/zoom_to_layer_reaction.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/lod/detail_controller.hpp"
 #include "ui/inspection/clip_panel.hpp"
 #include "ui/inspection/measure_tool.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
@@ -71,6 +72,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   context_->manual = new ManualAlignPanel(*context_, this);
   context_->measure = new MeasureTool(*context_, this);
   lod_ = new LodController(*view, *scene, this);
+  new DetailController(*context_, *lod_, this);  // full-resolution detail of subsampled files
   new SceneLegend(*scene, view->renderer(), this);  // datasets / scans by colour, in the view
   new EmptySceneHint(*scene, *view);
 

@@ -22,6 +22,7 @@ struct BimElement {
   /// Name of the IfcBuildingStorey that contains it (directly, or through a space or the
   /// element it is part of); "" when unknown or not in a storey.
   std::string storey;
+  std::string storey_guid;  ///< that storey's IFC GlobalId when known
 };
 
 struct TriangleMesh {

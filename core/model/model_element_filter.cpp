@@ -31,7 +31,9 @@ std::vector<bool> onStoreys(const BimModel& model, const ModelElementFilter& fil
   for (const auto& s : filter.storeys) {
     bool found = false;
     for (std::size_t i = 0; i < model.elements.size(); ++i)
-      if (!model.elements[i].storey.empty() && lower(model.elements[i].storey) == lower(s)) on[i] = found = true;
+      if ((!model.elements[i].storey.empty() && lower(model.elements[i].storey) == lower(s)) ||
+          (!model.elements[i].storey_guid.empty() && model.elements[i].storey_guid == s))
+        on[i] = found = true;
     if (!found)
       throw InputError(model.source.string() + ": no element on a storey named '" + s + "' (" +
                        (present.empty() ? std::string("the model names no storeys")

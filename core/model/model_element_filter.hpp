@@ -16,7 +16,7 @@ namespace plumb {
 struct ModelElementFilter {
   std::vector<std::string> types;     ///< IFC types to keep ("IfcColumn"); any case
   std::vector<std::string> elements;  ///< elements to keep, by IFC GlobalId or by name
-  /// Storeys (IfcBuildingStorey names; any case) the kept elements must belong to: with types
+  /// Storeys (IfcBuildingStorey names in any case, or GlobalIds) the kept elements must belong to: with types
   /// or elements, only those on these storeys; alone, every element on them.
   std::vector<std::string> storeys;
   bool empty() const { return types.empty() && elements.empty() && storeys.empty(); }

@@ -12,6 +12,7 @@
 #include "ui/layers/point_coloring.hpp"
 #include "ui/layers/render_frame.hpp"
 #include "ui/layers/scan_layer.hpp"
+#include "ui/lod/detail_layer.hpp"
 #include "ui/tasks/task_manager.hpp"
 
 namespace plumb::ui {
@@ -176,6 +177,7 @@ void DatasetLayer::applyTransform() {
   for (ScanLayer* s : scans()) s->setDatasetTransform(shown);
   for (const auto& c : children())
     if (c->kind() == LayerKind::Features) static_cast<FeatureLayer*>(c.get())->setTransform(shown);
+    else if (c->kind() == LayerKind::Detail) static_cast<DetailLayer*>(c.get())->setDatasetTransform(shown);
   if (style_.mode == PointColorMode::Elevation) colours_stale_ = true;  // z changed
 }
 

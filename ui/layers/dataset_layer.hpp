@@ -112,8 +112,9 @@ class DatasetLayer : public Layer {
   /// are numbered across the scene (Scene::addDataset), so two single-scan datasets get two
   /// colours in either mode.
   void setColourIndices(std::size_t first_scan, std::size_t dataset);
-  /// The Dataset colour mode's colour of this dataset.
+  /// The Dataset colour mode's colour of this dataset, and its index (categoryColor).
   Rgb8 datasetColour() const;
+  std::size_t datasetColourIndex() const { return dataset_colour_index_; }
   /// Why `style` is not drawn as asked (the scans lacking its data are drawn by elevation):
   /// one message naming the layer, what is missing and the scans concerned; empty when every
   /// scan shows it.

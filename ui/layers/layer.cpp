@@ -75,6 +75,7 @@ QString layerKindName(LayerKind kind) {
     case LayerKind::Model: return "Model";
     case LayerKind::Features: return "Features";
     case LayerKind::Result: return "Result";
+    case LayerKind::Detail: return "Level-of-detail cache";
   }
   return "Layer";
 }

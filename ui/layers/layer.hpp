@@ -14,7 +14,7 @@ class vtkProp;
 
 namespace plumb::ui {
 
-enum class LayerKind { Dataset, Scan, Model, Features, Result };
+enum class LayerKind { Dataset, Scan, Model, Features, Result, Detail };
 
 /// One row of the properties panel.
 using PropertyRow = std::pair<QString, QString>;
@@ -75,6 +75,32 @@ class Layer {
   bool visible_ = true;
   std::vector<std::unique_ptr<Layer>> children_;
   std::shared_ptr<char> alive_ = std::make_shared<char>();  ///< expires with this layer
+};
+
+/// A layer drawn by its own actors whose visibility follows two states: shown (the layer and
+/// its ancestors visible) and reduced (the camera moves: level of detail). Each change calls
+/// updateActors().
+class ActorLayer : public Layer {
+ public:
+  using Layer::Layer;
+  void setReducedDetail(bool reduced) override {
+    reduced_ = reduced;
+    updateActors();
+  }
+
+ protected:
+  void applyVisibility(bool effective) override {
+    shown_ = effective;
+    updateActors();
+  }
+  /// Sets the actors' visibility and matrices from shown() and reduced().
+  virtual void updateActors() = 0;
+  bool shown() const { return shown_; }
+  bool reduced() const { return reduced_; }
+
+ private:
+  bool shown_ = true;
+  bool reduced_ = false;
 };
 
 /// A layer that may be destroyed while this is held (a running task, an undo command): get()

@@ -1,10 +1,13 @@
 #include "ui/layers/point_geometry.hpp"
 
+#include <vtkActor.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -179,6 +182,17 @@ vtkSmartPointer<vtkUnsignedCharArray> makeColorArray(std::size_t n) {
   colors->SetNumberOfComponents(3);
   colors->SetNumberOfTuples(static_cast<vtkIdType>(n));
   return colors;
+}
+
+void setupPointActor(vtkActor* actor, vtkPolyDataMapper* mapper, vtkPolyData* poly) {
+  if (poly) mapper->SetInputData(poly);
+  mapper->SetScalarModeToUsePointData();
+  mapper->SetColorModeToDirectScalars();
+  mapper->ScalarVisibilityOn();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetRepresentationToPoints();
+  actor->GetProperty()->LightingOff();
+  actor->PickableOff();
 }
 
 }  // namespace plumb::ui

@@ -13,7 +13,9 @@
 #include "model/point_cloud.hpp"
 #include "ui/layers/color_ramp.hpp"
 
+class vtkActor;
 class vtkPolyData;
+class vtkPolyDataMapper;
 class vtkUnsignedCharArray;
 
 namespace plumb::ui {
@@ -64,5 +66,9 @@ std::vector<Rgba> permuteColors(std::span<const Rgb> cloud_order, std::uint32_t 
 
 /// An RGB colour array of n tuples named "colors".
 vtkSmartPointer<vtkUnsignedCharArray> makeColorArray(std::size_t n);
+
+/// An actor drawing `poly` (may be null: set later) as points with their RGBA colours as they
+/// are, unlit and not pickable (picking goes through the Scene).
+void setupPointActor(vtkActor* actor, vtkPolyDataMapper* mapper, vtkPolyData* poly);
 
 }  // namespace plumb::ui

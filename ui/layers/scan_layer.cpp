@@ -25,31 +25,21 @@ Eigen::Matrix4d offsetMatrix(const Eigen::Vector3d& offset) {
   return m;
 }
 
-void setupActor(vtkActor* actor, vtkPolyDataMapper* mapper, vtkPolyData* poly) {
-  if (poly) mapper->SetInputData(poly);
-  mapper->SetScalarModeToUsePointData();
-  mapper->SetColorModeToDirectScalars();
-  mapper->ScalarVisibilityOn();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetRepresentationToPoints();
-  actor->GetProperty()->LightingOff();
-  actor->PickableOff();
-}
 
 }  // namespace
 
 ScanLayer::ScanLayer(std::shared_ptr<const Dataset> data, std::size_t scan_index,
                      const Eigen::Vector3d& origin, std::size_t lod_points,
                      PreparedScan prepared)
-    : Layer(LayerKind::Scan, QString::fromStdString(data->scans.at(scan_index).name)),
+    : ActorLayer(LayerKind::Scan, QString::fromStdString(data->scans.at(scan_index).name)),
       data_(std::move(data)),
       scan_index_(scan_index),
       origin_(origin),
       points_(std::move(prepared.points)),
       local_bounds_(prepared.local_bounds) {
   const PointCloud& cloud = scan().cloud;
-  setupActor(still_actor_, still_mapper_, nullptr);
-  setupActor(moving_actor_, moving_mapper_, nullptr);
+  setupPointActor(still_actor_, still_mapper_, nullptr);
+  setupPointActor(moving_actor_, moving_mapper_, nullptr);
   setStillPointCount(cloud.size());
   setLodPointCount(lod_points);
 }
@@ -81,13 +71,13 @@ void ScanLayer::setPrefix(std::size_t& count, vtkSmartPointer<vtkPolyData>& poly
 }
 
 std::size_t ScanLayer::drawnPointCount() const {
-  if (!shown_) return 0;
+  if (!shown()) return 0;
   return std::min(usesMoving() ? moving_count_ : still_count_, points_.size());
 }
 
 bool ScanLayer::usesMoving() const {
   // Equal sizes: both actors draw the same prefix; the still one is uploaded already.
-  return reduced_ && moving_count_ != still_count_;
+  return reduced() && moving_count_ != still_count_;
 }
 
 ScanLayer::~ScanLayer() = default;
@@ -162,20 +152,10 @@ std::vector<PropertyRow> ScanLayer::describe() const {
   return rows;
 }
 
-void ScanLayer::setReducedDetail(bool reduced) {
-  reduced_ = reduced;
-  updateActors();
-}
-
-void ScanLayer::applyVisibility(bool effective) {
-  shown_ = effective;
-  updateActors();
-}
-
 void ScanLayer::updateActors() {
   const bool moving = usesMoving();
-  still_actor_->SetVisibility(shown_ && !moving);
-  moving_actor_->SetVisibility(shown_ && moving);
+  still_actor_->SetVisibility(shown() && !moving);
+  moving_actor_->SetVisibility(shown() && moving);
   const auto m = renderMatrix(origin_, localToWorld());
   still_actor_->SetUserMatrix(m);
   moving_actor_->SetUserMatrix(m);

@@ -26,7 +26,7 @@ class vtkPolyDataMapper;
 
 namespace plumb::ui {
 
-class ScanLayer : public Layer {
+class ScanLayer : public ActorLayer {
  public:
   /// `data` must hold scan `scan_index`; `lod_points` is the moving subset's size. The still
   /// subset starts as the whole scan. `prepared` holds the scan's points in their random order
@@ -82,13 +82,11 @@ class ScanLayer : public Layer {
   std::vector<vtkProp*> props() const override;
   Bounds bounds() const override;
   std::vector<PropertyRow> describe() const override;
-  void setReducedDetail(bool reduced) override;
 
  protected:
-  void applyVisibility(bool effective) override;
+  void updateActors() override;
 
  private:
-  void updateActors();
   bool usesMoving() const;
   /// Points `count`/`poly` of one actor at the prefix of `points` points (clamped).
   void setPrefix(std::size_t& count, vtkSmartPointer<vtkPolyData>& poly,
@@ -111,8 +109,6 @@ class ScanLayer : public Layer {
   vtkNew<vtkActor> moving_actor_;
   std::shared_ptr<const std::vector<float>> distances_;  ///< shared with colour jobs
   DistanceScale distance_scale_;
-  bool reduced_ = false;
-  bool shown_ = true;
 };
 
 }  // namespace plumb::ui

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "ui/layers/dataset_layer.hpp"
+#include "ui/lod/detail_layer.hpp"
 #include "ui/layers/feature_layer.hpp"
 #include "ui/layers/model_layer.hpp"
 #include "ui/layers/render_frame.hpp"
@@ -91,6 +92,10 @@ FeatureLayer& Scene::addFeatures(QString name, std::shared_ptr<const FeatureSet>
     if (origin_) layer = std::make_unique<FeatureLayer>(std::move(name), std::move(features), origin());
   }
   return static_cast<FeatureLayer&>(adopt(std::move(layer), parent));
+}
+
+DetailLayer& Scene::addDetail(std::unique_ptr<DetailLayer> detail, DatasetLayer& parent) {
+  return static_cast<DetailLayer&>(adopt(std::move(detail), &parent));
 }
 
 Layer& Scene::adopt(std::unique_ptr<Layer> layer, Layer* parent) {

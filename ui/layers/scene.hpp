@@ -26,6 +26,7 @@ namespace plumb::ui {
 class DatasetLayer;
 class ModelLayer;
 class FeatureLayer;
+class DetailLayer;
 class TaskManager;
 
 /// What a click in the view hit.
@@ -60,6 +61,8 @@ class Scene : public QObject {
   /// Adds features as a child of `parent` (a dataset or model layer) or at the root.
   FeatureLayer& addFeatures(QString name, std::shared_ptr<const FeatureSet> features,
                             Layer* parent = nullptr);
+  /// Adds the full-resolution detail of `parent` (a dataset opened as a subsample) as its child.
+  DetailLayer& addDetail(std::unique_ptr<DetailLayer> detail, DatasetLayer& parent);
   /// Removes a layer (root or child) and its children.
   void removeLayer(Layer* layer);
   /// Takes a root layer out of the scene without destroying it (undoable removal), with the

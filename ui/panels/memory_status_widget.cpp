@@ -23,13 +23,13 @@ MemoryStatusWidget::MemoryStatusWidget(std::function<std::uint64_t()> budget, QW
   refresh();
 }
 
-QString MemoryStatusWidget::text(std::uint64_t used, std::uint64_t budget) {
+QString MemoryStatusWidget::format(std::uint64_t used, std::uint64_t budget) {
   return tr("Memory %1 / %2 GB").arg(gigabytes(used), gigabytes(budget));
 }
 
 void MemoryStatusWidget::refresh() {
   const std::uint64_t used = residentBytes(), budget = budget_ ? budget_() : 0;
-  setText(text(used, budget));
+  setText(format(used, budget));
   setStyleSheet(budget > 0 && used > budget ? "color: #c62828;" : "");
 }
 

@@ -22,7 +22,7 @@ class MemoryStatusWidget : public QLabel {
   /// Reads the process's memory and the budget now (also called by the timer).
   void refresh();
   /// "1.2 GB / 11.6 GB" for bytes used and allowed (public for tests).
-  static QString text(std::uint64_t used, std::uint64_t budget);
+  static QString format(std::uint64_t used, std::uint64_t budget);
 
  private:
   std::function<std::uint64_t()> budget_;

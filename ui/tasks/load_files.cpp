@@ -16,6 +16,7 @@
 #include "ui/layers/scene.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/registration/registration_panel.hpp"
+#include "ui/lod/detail_cache_task.hpp"
 #include "ui/tasks/load_budget.hpp"
 #include "ui/tasks/task_manager.hpp"
 #include "ui/view/scene_framing.hpp"
@@ -102,6 +103,7 @@ Layer& addLoaded(AppContext& app, Loaded& data, const QString& path) {
                           .arg(data.subsampled->points_in_file)
                           .arg(double(memoryBudget(app)) / (1024.0 * 1024.0 * 1024.0), 0, 'f', 1)
                           .arg(data.subsampled->voxel * 100.0, 0, 'f', 1));
+      startDetailCache(app, dataset_layer);  // full resolution where the view needs it
     }
   } else {
     const auto triangles = data.model->mesh.triangleCount();

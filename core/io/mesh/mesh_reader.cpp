@@ -12,6 +12,7 @@
 #include "io/isolation/import_process.hpp"
 #include "io/mesh/file_extension.hpp"
 #include "io/mesh/ifc_georef.hpp"
+#include "io/mesh/ifc_storeys.hpp"
 #include "io/mesh/ifc_map_conversion.hpp"
 #include "io/mesh/import_failure.hpp"
 #include "io/mesh/mesh_io.hpp"
@@ -49,6 +50,7 @@ class TempIfc {
 struct IfcPlacement {
   std::optional<ifc_georef::Shift> shift;              ///< taken out before, added back after
   std::optional<ifc_georef::MapConversion> map;        ///< applied after the import
+  std::map<std::string, std::string> storey_names;     ///< GlobalId -> name (ifc_storeys.hpp)
 };
 
 IfcPlacement ifcPlacement(const std::filesystem::path& path) {
@@ -57,6 +59,7 @@ IfcPlacement ifcPlacement(const std::filesystem::path& path) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   IfcPlacement p;
   p.shift = ifc_georef::plan(text);
+  p.storey_names = ifc_storeys::storeyNames(text);
   try {
     p.map = ifc_georef::readMapConversion(text);
   } catch (const InputError& e) {
@@ -98,6 +101,7 @@ struct HelperRun {
     if (placement.shift)
       for (auto& v : model.mesh.vertices) v += placement.shift->metres;
     if (placement.map) ifc_georef::applyMapConversion(*placement.map, model.mesh);
+    ifc_storeys::nameStoreys(model, placement.storey_names);
     return model;
   }
 };

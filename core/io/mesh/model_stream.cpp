@@ -31,12 +31,13 @@ BimModel readModel(Reader& r) {
   r.table(m.mesh.vertices);
   r.table(m.mesh.triangles);
   r.table(m.triangle_element);
-  m.elements.resize(r.count(r.pod<std::uint64_t>(), 16));
+  m.elements.resize(r.count(r.pod<std::uint64_t>(), 20));
   for (auto& e : m.elements) {
     e.type = r.str();
     e.name = r.str();
     e.guid = r.str();
     e.storey = r.str();
+    e.storey_guid = r.str();
   }
   r.table(m.mesh.vertex_normals);
   r.table(m.mesh.vertex_colors);
@@ -62,6 +63,7 @@ bool writeModel(int fd, const BimModel& model) {
     w.str(e.name);
     w.str(e.guid);
     w.str(e.storey);
+    w.str(e.storey_guid);
   }
   w.table(model.mesh.vertex_normals);
   w.table(model.mesh.vertex_colors);

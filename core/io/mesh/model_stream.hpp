@@ -4,7 +4,7 @@
 //
 // Layout (io/isolation/helper_stream.hpp): "PLUMBMDL", u32 version 3, u8 kind.
 // kind 1, model: string format; u64 n + n x 3 double vertices; u64 n + n x 3 u32 triangles;
-// u64 n + n u32 triangle elements; u64 n + n x (string type, name, guid, storey) elements; u64 n +
+// u64 n + n u32 triangle elements; u64 n + n x (string type, name, guid, storey, storey guid) elements; u64 n +
 // n x 3 float normals; u64 n + n x 3 u8 colours.
 // kind 2, error: the failure record of helper_stream.hpp.
 // Both end with "END!". The decoder checks every count against

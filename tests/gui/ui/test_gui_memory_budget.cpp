@@ -2,12 +2,15 @@
 // the memory Plumb holds against the budget; a point file whose display would exceed the budget
 // opens as a voxel subsample, said in the log and the Properties; exporting that layer streams
 // the whole file through the registration transform, every point kept to 0.1 mm at national-grid
-// coordinates.
+// coordinates. The file's level-of-detail cache is built in the background and its nodes drawn
+// over the subsample where the view needs them, coloured like the dataset; a second opening
+// reuses the cache.
 #include <QLabel>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -15,12 +18,16 @@
 #include "io/io.hpp"
 #include "support/test_support.hpp"
 #include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/scan_layer.hpp"
+#include "ui/layers/color_ramp.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/lod/detail_layer.hpp"
 #include "ui/panels/memory_status_widget.hpp"
 #include "ui/registration/registration_panel.hpp"
 #include "ui/tasks/export_tasks.hpp"
 #include "ui/tasks/load_budget.hpp"
 #include "ui/tasks/task.hpp"
+#include "ui/view/vtk_view_widget.hpp"
 
 using namespace plumb;
 using namespace plumb::ui;
@@ -50,7 +57,9 @@ std::filesystem::path writeGeoGrid(const std::filesystem::path& path) {
 
 bool waitFor(Task* task) {
   QSignalSpy done(task, &Task::finished);
-  return done.wait(120000) && done.first().at(0).toBool();
+  if (!done.wait(120000)) return false;
+  if (!done.first().at(0).toBool()) qWarning("task failed: %s", qPrintable(done.first().at(1).toString()));
+  return done.first().at(0).toBool();
 }
 }  // namespace
 
@@ -58,6 +67,10 @@ class GuiMemoryBudgetTest : public QObject {
   Q_OBJECT
 
  private slots:
+  void initTestCase() {
+    cache_dir_ = test::scratchDir("gui_memory_budget_cache");
+    qputenv("PLUMB_LOD_CACHE_DIR", QByteArray::fromStdString(cache_dir_.string()));
+  }
   void init() {
     test::showMainWindow(window_, QSize(1200, 800));
   }
@@ -71,7 +84,7 @@ class GuiMemoryBudgetTest : public QObject {
     status->refresh();
     QVERIFY2(status->text().startsWith("Memory ") && status->text().endsWith("/ 3.0 GB"),
              qPrintable(status->text()));
-    QCOMPARE(MemoryStatusWidget::text(std::uint64_t{1} << 30, std::uint64_t{3} << 30),
+    QCOMPARE(MemoryStatusWidget::format(std::uint64_t{1} << 30, std::uint64_t{3} << 30),
              QString("Memory 1.0 / 3.0 GB"));
     // A budget below what the window holds: the figure turns red.
     app.registration->params().memory.budget_mb = 1;
@@ -100,11 +113,11 @@ class GuiMemoryBudgetTest : public QObject {
     bool row = false;
     for (const auto& r : layer->describe()) row |= r.first == "Subsample";
     QVERIFY(row);
+    checkDetail(*layer, shown);
 
     // A registration transform, then the export: the whole file, each point moved by it.
-    RigidTransform T;
-    T.rotation = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-    T.translation = Eigen::Vector3d(12.5, -7.25, 0.375);
+    const RigidTransform T(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix(),
+                           Eigen::Vector3d(12.5, -7.25, 0.375));
     layer->setTransform(T);
     const auto out = dir / "grid_registered.ply";
     QVERIFY(waitFor(exportRegisteredDataset(app, *layer, q(out))));
@@ -115,8 +128,8 @@ class GuiMemoryBudgetTest : public QObject {
     double worst = 0;
     for (std::size_t k = 0; k < cloud.size(); k += 997) {
       const int i = int(k / kRows), j = int(k % kRows);
-      const Eigen::Vector3d expected = T.rotation * gridPoint(i, j) + T.translation;
-      const Eigen::Vector3d got = pose.rotation * cloud.world(k) + pose.translation;
+      const Eigen::Vector3d expected = T.apply(gridPoint(i, j));
+      const Eigen::Vector3d got = pose.apply(cloud.world(k));
       worst = std::max(worst, (got - expected).norm());
     }
     QVERIFY2(worst <= 1e-4, qPrintable(QString::number(worst)));
@@ -135,8 +148,52 @@ class GuiMemoryBudgetTest : public QObject {
     QCOMPARE(layer->dataset().pointCount(), std::size_t(kColumns) * kRows);
   }
 
+  void aSecondOpeningReusesTheCache() {
+    AppContext& app = window_->context();
+    const auto file = test::scratchDir("gui_memory_budget") / "grid.ply";  // written again: new mtime
+    writeGeoGrid(file);
+    app.registration->params().memory.budget_mb = 256;
+    for (int round = 0; round < 2; ++round) {
+      QSignalSpy idle(&app.tasks, &TaskManager::idle);
+      window_->openFiles({q(file)});
+      QVERIFY(idle.wait(120000));
+    }
+    const QString log = app.log.toPlainText();
+    QCOMPARE(log.count("level-of-detail cache built"), 1);
+    QCOMPARE(log.count("level-of-detail cache reused"), 1);
+  }
+
  private:
+  /// The dataset's DetailLayer: built, then drawn after a still frame with more points than the
+  /// subsample; the Scan colour mode colours every detail point with the scan's colour.
+  void checkDetail(DatasetLayer& layer, std::size_t subsample) {
+    AppContext& app = window_->context();
+    DetailLayer* detail = nullptr;
+    for (const auto& c : layer.children())
+      if (c->kind() == LayerKind::Detail) detail = static_cast<DetailLayer*>(c.get());
+    QVERIFY2(detail, qPrintable(app.log.toPlainText()));
+    QCOMPARE(detail->cache()->hierarchy().points, std::uint64_t(kColumns) * kRows);
+    QVERIFY(app.log.toPlainText().contains("level-of-detail cache built"));
+    // Still frames (the first after the load may already have drawn it) until the detail is in.
+    QTRY_VERIFY2_WITH_TIMEOUT((app.view.requestRender(), detail->drawnPointCount() > subsample),
+                              qPrintable(QString("%1 detail points, %2 in the subsample\n%3")
+                                             .arg(detail->drawnPointCount()).arg(subsample).arg(app.log.toPlainText())),
+                              60000);
+    PointStyle scan_style = layer.style();
+    scan_style.mode = PointColorMode::Scan;
+    app.scene.requestStyle(layer, scan_style);
+    QTRY_VERIFY_WITH_TIMEOUT((app.view.requestRender(), detail->drawn().colouring.coloring.style.mode == PointColorMode::Scan),
+                             60000);
+    const Rgb expected = categoryColor(layer.scans().front()->colourIndex());
+    const auto& colours = detail->drawn().colours;
+    QVERIFY(!colours.empty());
+    QVERIFY(std::all_of(colours.begin(), colours.end(), [&](const Rgba& c) {
+      return c[0] == expected[0] && c[1] == expected[1] && c[2] == expected[2];
+    }));
+  }
+
   std::unique_ptr<MainWindow> window_;
+  std::filesystem::path cache_dir_;
 };
 
 int main(int argc, char** argv) { return test::runGuiTest<GuiMemoryBudgetTest>(argc, argv); }

@@ -4,6 +4,7 @@
 // trips.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -150,7 +151,12 @@ struct StoreyCount {
   std::size_t count;
 };
 void expectStoreys(const BimModel& m, const std::vector<StoreyCount>& expected) {
-  for (const StoreyCount& c : expected) EXPECT_EQ(countOn(m, c.type, c.storey), c.count) << c.type << " on " << c.storey;
+  std::map<std::string, std::size_t> seen;  // for the failure message
+  for (const BimElement& e : m.elements) ++seen["'" + e.storey + "' " + e.type];
+  std::string all;
+  for (const auto& [k, n] : seen) all += k + " x" + std::to_string(n) + "; ";
+  for (const StoreyCount& c : expected)
+    EXPECT_EQ(countOn(m, c.type, c.storey), c.count) << c.type << " on " << c.storey << "; the model has " << all;
 }
 const std::vector<StoreyCount> kDuplexStoreys{
     {"IfcWall", "Level 1", 21}, {"IfcWall", "Level 2", 25}, {"IfcWall", "Roof", 4},      {"IfcWall", "T/FDN", 7},

@@ -120,6 +120,11 @@ TEST(ModelElementFilter, StoreysKeepTheirElementsAndNarrowTypes) {
   const FilteredModel walls = filterModelElements(storeyModel(), onStoreys({"Level 1"}, {"IfcWall"}));
   EXPECT_EQ(heights(walls.model), (std::vector<double>{2, 2}));
   EXPECT_EQ(walls.selection.filter.describe(), "types IfcWall; storeys Level 1");
+  // A storey by its GlobalId.
+  BimModel with_ids = storeyModel();
+  for (auto& e : with_ids.elements) e.storey_guid = e.storey == "Level 1" ? "2O2Fr$t4X7Zf8NOew3FLQQ" : "";
+  EXPECT_EQ(heights(filterModelElements(with_ids, onStoreys({"2O2Fr$t4X7Zf8NOew3FLQQ"})).model),
+            (std::vector<double>{2, 2, 4, 4}));
   // Two storeys: the union of both.
   EXPECT_EQ(filterModelElements(storeyModel(), onStoreys({"Level 1", "Ground floor"})).model.mesh.triangles.size(), 8u);
 }

@@ -23,15 +23,17 @@ bool isHelperNode(const std::string& name) {
 
 /// The storey of an IFC node: assimp nests each element under the spatial structure that
 /// contains it (site, building, storey, space), so the nearest ancestor named
-/// "IfcBuildingStorey_..." is its storey; its name, or its GlobalId when unnamed.
-std::string storeyOf(const aiNode* node) {
+/// "IfcBuildingStorey_..." is its storey: the node's name part (assimp drops its spaces; the
+/// reader names it again from the file, io/mesh/ifc_storeys.hpp) and its GlobalId.
+void setStoreyOf(const aiNode* node, BimElement& e) {
   for (const aiNode* n = node ? node->mParent : nullptr; n; n = n->mParent) {
     const std::string name = n->mName.C_Str();
     if (name.rfind("IfcBuildingStorey", 0) != 0) continue;
     const BimElement storey = elementFromIfcNodeName(name);
-    return storey.name.empty() ? storey.guid : storey.name;
+    e.storey = storey.name.empty() ? storey.guid : storey.name;
+    e.storey_guid = storey.guid;
+    return;
   }
-  return "";
 }
 
 struct Walker {
@@ -53,7 +55,7 @@ struct Walker {
     // Plumb's own OBJ/glTF export names each element's group "<IfcType>_<name>": read it back.
     if (ifc || looksLikeIfcNodeName(label)) e = elementFromIfcNodeName(ifc ? owner->mName.C_Str() : label);
     else e.name = label;
-    if (ifc) e.storey = storeyOf(owner);
+    if (ifc) setStoreyOf(owner, e);
     model->elements.push_back(e);
     const auto idx = static_cast<std::uint32_t>(model->elements.size() - 1);
     element_of_node.emplace(owner, idx);

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "common/utf8.hpp"
 #include "io/mesh/mesh_io.hpp"
 
 namespace plumb::import_helper {
@@ -32,24 +33,7 @@ namespace {
 
 std::string utf8(const std::wstring& w) {
   std::string s;
-  for (const wchar_t wc : w) {
-    const auto c = static_cast<std::uint32_t>(wc);
-    if (c < 0x80) {
-      s += static_cast<char>(c);
-    } else if (c < 0x800) {
-      s += static_cast<char>(0xC0 | (c >> 6));
-      s += static_cast<char>(0x80 | (c & 0x3F));
-    } else if (c < 0x10000) {
-      s += static_cast<char>(0xE0 | (c >> 12));
-      s += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-      s += static_cast<char>(0x80 | (c & 0x3F));
-    } else {
-      s += static_cast<char>(0xF0 | (c >> 18));
-      s += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-      s += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-      s += static_cast<char>(0x80 | (c & 0x3F));
-    }
-  }
+  for (const wchar_t wc : w) appendUtf8(s, static_cast<std::uint32_t>(wc));
   return s;
 }
 
@@ -152,25 +136,25 @@ shared_ptr<IfcObjectDefinition> containerOf(const IfcObjectDefinition& object) {
   return nullptr;
 }
 
-/// The name (or GlobalId when unnamed) of the IfcBuildingStorey above `product`; "" when none
-/// within a few levels (a file's spatial tree is site / building / storey / space).
-std::string storeyOf(const IfcProduct& product) {
+/// The IfcBuildingStorey above `product`: its name (its GlobalId when unnamed) and GlobalId;
+/// none within a few levels (a file's spatial tree is site / building / storey / space): "".
+void setStoreyOf(const IfcProduct& product, BimElement& e) {
   const IfcObjectDefinition* at = &product;
   shared_ptr<IfcObjectDefinition> up;
   for (int depth = 0; depth < 8 && at; ++depth) {
     if (const auto* storey = dynamic_cast<const IfcBuildingStorey*>(at)) {
-      if (storey->m_Name && !storey->m_Name->m_value.empty()) return utf8(storey->m_Name->m_value);
-      return storey->m_GlobalId ? utf8(storey->m_GlobalId->m_value) : std::string();
+      if (storey->m_GlobalId) e.storey_guid = utf8(storey->m_GlobalId->m_value);
+      e.storey = storey->m_Name && !storey->m_Name->m_value.empty() ? utf8(storey->m_Name->m_value) : e.storey_guid;
+      return;
     }
     up = containerOf(*at);
     at = up.get();
   }
-  return "";
 }
 
 BimElement elementOf(const IfcProduct& product) {
   BimElement e;
-  e.storey = storeyOf(product);
+  setStoreyOf(product, e);
   e.type = ifcBaseType(product.className());
   if (product.m_Name) e.name = utf8(product.m_Name->m_value);
   if (product.m_GlobalId) e.guid = utf8(product.m_GlobalId->m_value);

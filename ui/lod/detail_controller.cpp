@@ -1,0 +1,101 @@
+#include "ui/lod/detail_controller.hpp"
+
+#include <vtkRenderer.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ui/app_context.hpp"
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/scan_layer.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/panels/log_panel.hpp"
+#include "ui/lod/camera_lod_view.hpp"
+#include "ui/lod/detail_layer.hpp"
+#include "ui/tasks/task_manager.hpp"
+#include "ui/view/lod_controller.hpp"
+#include "ui/view/vtk_view_widget.hpp"
+
+namespace plumb::ui {
+
+namespace {
+
+/// Intensity limits of the dataset's subsample (the detail's ramp matches the subsample's).
+std::pair<double, double> intensityRange(const Dataset& data) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Scan& s : data.scans)
+    for (const float v : s.cloud.intensity)
+      if (std::isfinite(v)) lo = std::min(lo, double(v)), hi = std::max(hi, double(v));
+  return lo < hi ? std::pair{lo, hi} : std::pair{0.0, 0.0};
+}
+
+DetailColouring colouringOf(const DatasetLayer& dataset, const DetailLayer& detail) {
+  DetailColouring c;
+  c.coloring.style = dataset.style();
+  c.coloring.dataset_index = dataset.datasetColourIndex();
+  const std::vector<ScanLayer*> scans = dataset.scans();
+  if (!scans.empty()) c.coloring.scan_index = scans.front()->colourIndex();
+  for (const ScanLayer* s : scans) {
+    if (c.station_colour.size() <= s->scanIndex()) c.station_colour.resize(s->scanIndex() + 1, 0);
+    c.station_colour[s->scanIndex()] = s->colourIndex();
+  }
+  c.coloring.elevation_row = detail.datasetTransform().matrix().row(2).transpose();
+  const Bounds b = dataset.bounds();
+  c.coloring.z_min = b.min.z();
+  c.coloring.z_max = b.max.z();
+  std::tie(c.coloring.value_min, c.coloring.value_max) = intensityRange(dataset.dataset());
+  return c;
+}
+
+}  // namespace
+
+DetailController::DetailController(AppContext& app, LodController& lod, QObject* parent)
+    : QObject(parent), app_(app), lod_(lod) {
+  connect(&lod_, &LodController::stillFrameDrawn, this, [this] { refresh(); });
+}
+
+void DetailController::refresh() {
+  if (lod_.moving()) return;
+  for (const auto& root : app_.scene.layers()) {
+    if (root->kind() != LayerKind::Dataset || !root->effectivelyVisible()) continue;
+    auto& dataset = static_cast<DatasetLayer&>(*root);
+    for (const auto& child : dataset.children())
+      if (child->kind() == LayerKind::Detail && child->effectivelyVisible())
+        refreshLayer(dataset, static_cast<DetailLayer&>(*child));
+  }
+}
+
+void DetailController::refreshLayer(DatasetLayer& dataset, DetailLayer& detail) {
+  if (loading_.count(&detail)) return;
+  VtkViewWidget& view = app_.view;
+  const double dpr = view.devicePixelRatioF();
+  const CameraState camera = cameraState(*view.renderer()->GetActiveCamera(), int(view.width() * dpr),
+                                         int(view.height() * dpr));
+  LodSelectParams select;
+  select.point_budget = std::clamp(lod_.stillBudget().points(), kMinPoints, kMaxPoints);
+  const LodView lod_view = lodViewInDataset(camera, app_.scene.origin(), detail.datasetTransform());
+  std::vector<std::uint32_t> nodes = selectLodNodes(detail.cache()->hierarchy(), lod_view, select).nodes;
+  const DetailColouring colouring = colouringOf(dataset, detail);
+  if (nodes == detail.drawn().nodes && colouring == detail.drawn().colouring && detail.polyData()) return;
+  loading_[&detail] = true;
+  const LayerRef held(detail);
+  const Layer* key = &detail;
+  Task* task = app_.tasks.run(
+      tr("Loading detail of %1").arg(dataset.name()),
+      [cache = detail.cache(), nodes = std::move(nodes), colouring, held, this](Progress& progress) -> Task::Apply {
+        auto points = std::make_shared<DetailPoints>(loadDetailPoints(*cache, nodes, colouring, &progress));
+        return [points, held, this] {
+          if (auto* target = static_cast<DetailLayer*>(held.get())) {
+            target->show(std::move(*points));
+            app_.view.requestRender();
+            emit detailShown();
+          }
+        };
+      });
+  connect(task, &Task::finished, this, [this, key, name = dataset.name()](bool ok, const QString& message) {
+    loading_.erase(key);
+    if (!ok && message != "cancelled") app_.log.error(tr("Cannot load the detail of %1: %2").arg(name, message));
+  });
+}
+
+}  // namespace plumb::ui
