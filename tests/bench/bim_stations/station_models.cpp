@@ -21,17 +21,6 @@ bool isIfc(const std::string& name) {
   return name.size() > 4 && name.substr(name.size() - 4) == ".ifc";
 }
 
-/// The bench-only office floor with a hall and a one-cell corridor (station_models.hpp).
-BuildingSpec openOfficeSpec() {
-  BuildingSpec s;
-  s.name = "open-office";
-  s.column_widths = {4.0, 16.0};
-  s.row_depths = {5.0, 2.0, 7.0};  // halls of different depth: not copies of each other
-  s.storey_height = 3.3;
-  s.furniture_per_room = 1;
-  return s;
-}
-
 void loadGenerated(StationModel& m) {
   GeneratedBuilding g = generateBuilding(m.name == "open-office" ? openOfficeSpec() : buildingPreset(m.name));
   m.glass = std::move(g.glass_triangles);
@@ -60,6 +49,16 @@ void prepareTarget(StationModel& m, const PipelineParams& params) {
 }
 
 }  // namespace
+
+BuildingSpec openOfficeSpec() {
+  BuildingSpec s;
+  s.name = "open-office";
+  s.column_widths = {4.0, 16.0};
+  s.row_depths = {5.0, 2.0, 7.0};  // halls of different depth: not copies of each other
+  s.storey_height = 3.3;
+  s.furniture_per_room = 1;
+  return s;
+}
 
 std::vector<std::string> defaultModelNames() {
   std::vector<std::string> out;

@@ -13,6 +13,7 @@
 #include "model/feature_set.hpp"
 #include "model/point_cloud.hpp"
 #include "registration/auto/registration_pipeline.hpp"
+#include "simulation/building_spec.hpp"
 #include "simulation/scan_scene.hpp"
 
 namespace plumb::bimst {
@@ -33,6 +34,10 @@ struct StationModel {
   double seconds = 0.0;  ///< loading + target features
   bool usable() const { return problem.empty(); }
 };
+
+/// The bench-only "open-office" floor (above): columns 4 and 16 m, rows 5, 2 and 7 m, storey
+/// 3.3 m, one furniture box per room.
+BuildingSpec openOfficeSpec();
 
 /// The default model list: every *.ifc in ../shared/data/ifc (sorted), office-floor and
 /// open-office.

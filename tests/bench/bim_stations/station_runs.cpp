@@ -61,8 +61,15 @@ bool nearTruth(const RigidTransform& t, const RigidTransform& truth, const Eigen
   return e.rotation_deg < p.listed_rotation_deg && e.translation_m < p.listed_translation_m;
 }
 
+/// Whether a surface of the model lies between a and b (they are in different rooms).
+bool separated(const ScanScene& scene, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const double d = (b - a).norm();
+  return d > 1e-6 && scene.caster().cast(Ray{a, (b - a) / d}, d).hit();
+}
+
 /// Whether the truth is among the reported placements, and whether another reported placement
-/// puts the room where the model genuinely repeats it (model frame -> model frame: P * pose).
+/// puts the room where the model genuinely repeats it (model frame -> model frame: P * pose),
+/// elsewhere or onto itself.
 void checkPlacements(const verdict::PairOutcome& o, const StationModel& m, const Eigen::Vector3d& station,
                      const RigidTransform& pose, const RunParams& p, RunRecord& r) {
   const RigidTransform truth = pose.inverse();
@@ -70,9 +77,14 @@ void checkPlacements(const verdict::PairOutcome& o, const StationModel& m, const
   for (const RigidTransform& t : verdict::reportedPlacements(o)) {
     if (nearTruth(t, truth, c, p)) {
       r.truth_listed = true;
-    } else if (!r.genuine_repeat) {
-      r.genuine_repeat = verdict::rangeAgreement(*m.bare_scene, *m.bare_scene, {station}, t * pose).genuine();
+      continue;
     }
+    const RigidTransform q = t * pose;
+    if (r.genuine_repeat || !verdict::rangeAgreement(*m.bare_scene, *m.bare_scene, {station}, q).genuine())
+      continue;
+    const bool elsewhere = separated(*m.bare_scene, station, q.apply(station));
+    r.genuine_repeat = elsewhere;
+    r.self_symmetric = r.self_symmetric || !elsewhere;
   }
 }
 
@@ -107,10 +119,11 @@ RunRecord runPose(const test::Scenario& scan, const StationModel& m, const Catal
 
 void printRun(const RunRecord& r) {
   std::printf("  [run] %-28s %-8s (%6.1f, %6.1f, %5.1f) %-3s pose %2d: %-16s %-14s %-26s rot %8.4f deg "
-              "trans %7.1f mm  listed %d repeat %d  %s  %.1f s\n",
+              "trans %7.1f mm  listed %d repeat %d self-symmetric %d  %s  %.1f s\n",
               r.model.c_str(), typeName(r.type), r.station.x(), r.station.y(), r.station.z(), setName(r.set),
               r.pose, outcomeName(r.outcome), r.level.c_str(), r.status.substr(0, 26).c_str(), r.rotation_deg,
-              1000.0 * r.translation_m, int(r.truth_listed), int(r.genuine_repeat), r.method.c_str(), r.seconds);
+              1000.0 * r.translation_m, int(r.truth_listed), int(r.genuine_repeat), int(r.self_symmetric),
+              r.method.c_str(), r.seconds);
   std::fflush(stdout);
 }
 

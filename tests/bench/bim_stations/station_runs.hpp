@@ -10,7 +10,9 @@
 //   ambiguous-repeat  "ambiguous", the truth among the reported placements (within 1 deg and
 //                     0.3 m: candidates may be unrefined), and another reported placement at
 //                     which the model genuinely repeats the room (placement_oracle.hpp, on the
-//                     model without furniture): success;
+//                     model without furniture), elsewhere: a wall or slab lies between the
+//                     station and where the placement moves it (a room turned onto itself,
+//                     symmetric but for its openings, is not a repeat): success;
 //   failed            reported as a failure (any other failed or ambiguous outcome);
 //   wrong             reported success outside the tolerance: a failure not reported as one.
 #include <Eigen/Core>
@@ -59,7 +61,14 @@ struct RunRecord {
   std::string level, status, method;
   bool reported_success = false;
   double rotation_deg = -1.0, translation_m = -1.0;  ///< of the returned transform; -1: none
-  bool truth_listed = false, genuine_repeat = false;
+  bool truth_listed = false;
+  /// A reported placement puts the room onto a copy of it elsewhere in the model: the oracle
+  /// finds the room's shell there, and a surface (wall, slab) lies between the station and
+  /// where that placement moves it.
+  bool genuine_repeat = false;
+  /// A reported placement turns the room onto itself (the oracle agrees, nothing lies between):
+  /// a room symmetric but for its doors and windows, which the model does not repeat.
+  bool self_symmetric = false;
   Outcome outcome = Outcome::Failed;
   double seconds = 0.0;  ///< registration, features of the scan included
 };

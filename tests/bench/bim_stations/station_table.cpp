@@ -124,13 +124,13 @@ std::vector<RowStats> printTables(const std::vector<RunRecord>& records, const B
 void writeRunCsv(const std::string& path, const std::vector<RunRecord>& records) {
   std::ofstream f(path);
   f << "model,type,x,y,z,set,pose,points,outcome,level,status,method,rotation_deg,translation_m,truth_listed,"
-       "genuine_repeat,seconds\n";
+       "genuine_repeat,self_symmetric,seconds\n";
   for (const auto& r : records)
     f << r.model << ',' << typeName(r.type) << ',' << r.station.x() << ',' << r.station.y() << ','
       << r.station.z() << ',' << setName(r.set) << ',' << r.pose << ',' << r.points << ','
       << outcomeName(r.outcome) << ',' << r.level << ",\"" << r.status << "\"," << r.method << ','
       << r.rotation_deg << ',' << r.translation_m << ',' << r.truth_listed << ',' << r.genuine_repeat << ','
-      << r.seconds << '\n';
+      << r.self_symmetric << ',' << r.seconds << '\n';
 }
 
 }  // namespace plumb::bimst
