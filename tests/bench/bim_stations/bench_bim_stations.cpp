@@ -8,7 +8,9 @@
 //
 //   bench_bim_stations [--poses N] [--models a.ifc,open-office] [--types room,corridor,hall,stair]
 //                      [--sets yaw,3d] [--stations-per-type K] [--threads N] [--csv FILE]
-//                      [--seed N] [--catalogue-only [--list-all]] [--ci]
+//                      [--seed N] [--set GROUP.KEY=VALUE]... [--catalogue-only [--list-all]] [--ci]
+// --set: a pipeline parameter (plumb-cli register's --set, docs/PARAMETERS.md), e.g.
+// refinement.model-surface=triangles or orientation.source=levelled; default: the product's.
 // --ci: duplex.ifc and open-office, 1 station per type, 2 poses per set; also fails when the
 // catalogue misses one of the four types.
 #include <tbb/global_control.h>
@@ -17,11 +19,13 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "acceptance_scenarios.hpp"
 #include "common/stopwatch.hpp"
+#include "registration/auto/pipeline_param_groups.hpp"
 #include "station_catalogue.hpp"
 #include "station_models.hpp"
 #include "station_runs.hpp"
@@ -48,7 +52,7 @@ void usage() {
   std::fprintf(stderr,
                "usage: bench_bim_stations [--poses N] [--models a.ifc,open-office] [--types room,corridor,hall,stair]\n"
                "                          [--sets yaw,3d] [--stations-per-type K] [--threads N] [--csv FILE]\n"
-               "                          [--seed N] [--catalogue-only [--list-all]] [--ci]\n");
+               "                          [--seed N] [--set GROUP.KEY=VALUE]... [--catalogue-only [--list-all]] [--ci]\n");
 }
 
 void applyCi(Options& o) {
@@ -58,8 +62,17 @@ void applyCi(Options& o) {
   o.run.poses = 2;
 }
 
+/// "GROUP.KEY=VALUE": returns GROUP.KEY, sets `value`. Throws std::invalid_argument without '='.
+std::string assignment(const std::string& text, std::string& value) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos) throw std::invalid_argument("--set expects GROUP.KEY=VALUE, got '" + text + "'");
+  value = text.substr(eq + 1);
+  return text.substr(0, eq);
+}
+
 std::optional<Options> parse(int argc, char** argv) {
   Options o;
+  std::string value;
   o.run.pipeline = test::acceptanceParams();
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -75,6 +88,7 @@ std::optional<Options> parse(int argc, char** argv) {
     else if (a == "--catalogue-only") o.catalogue_only = true;
     else if (a == "--list-all") o.list_all = true;
     else if (a == "--ci") applyCi(o);
+    else if (a == "--set") setPipelineParam(o.run.pipeline, assignment(next(), value), value);
     else return std::nullopt;
   }
   return o;
