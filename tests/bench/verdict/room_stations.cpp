@@ -7,9 +7,6 @@
 
 namespace plumb::verdict {
 
-namespace {
-
-/// Unit directions spread evenly over the sphere (Fibonacci lattice).
 std::vector<Eigen::Vector3d> sphereDirections(int n) {
   std::vector<Eigen::Vector3d> out;
   const double golden = M_PI * (3.0 - std::sqrt(5.0));
@@ -20,7 +17,6 @@ std::vector<Eigen::Vector3d> sphereDirections(int n) {
   return out;
 }
 
-/// Points `height` above each upward-facing surface met by a vertical ray through (x, y).
 std::vector<Eigen::Vector3d> floorsBelow(const RayCaster& caster, double x, double y, double top,
                                          double height) {
   std::vector<Eigen::Vector3d> out;
@@ -36,7 +32,6 @@ std::vector<Eigen::Vector3d> floorsBelow(const RayCaster& caster, double x, doub
   return out;
 }
 
-/// Distance to the nearest surface over the sphere of rays, or -1 when a ray escapes.
 double clearance(const RayCaster& caster, const Eigen::Vector3d& p,
                  const std::vector<Eigen::Vector3d>& dirs) {
   double nearest = 1e30;
@@ -47,8 +42,6 @@ double clearance(const RayCaster& caster, const Eigen::Vector3d& p,
   }
   return nearest;
 }
-
-}  // namespace
 
 std::vector<Eigen::Vector3d> findRoomStations(const BimModel& model, const StationSearch& s) {
   ScanSceneOptions opt;
