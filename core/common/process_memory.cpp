@@ -29,6 +29,4 @@ std::uint64_t procKilobytesLine(const char* file, const char* key) {
   return 0;
 }
 
-std::uint64_t peakResidentBytes() { return procKilobytesLine("/proc/self/status", "VmHWM"); }
-
 }  // namespace plumb

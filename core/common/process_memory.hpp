@@ -1,6 +1,6 @@
 #pragma once
-// How much memory this process holds now (Linux /proc), for the desktop's status bar and
-// for benchmarks that check a step against the memory budget (common/memory_budget.hpp).
+// Memory figures from Linux /proc: what this process holds now (the desktop's status bar) and
+// the lines of /proc/meminfo the memory budget's default is read from (common/memory_budget.hpp).
 #include <cstdint>
 
 namespace plumb {
@@ -11,9 +11,5 @@ std::uint64_t residentBytes();
 /// The value of the line "`key` N kB" of a /proc file (/proc/meminfo, /proc/self/status) in
 /// bytes; 0 when the file or the line cannot be read.
 std::uint64_t procKilobytesLine(const char* file, const char* key);
-
-/// Highest resident set size of this process so far, bytes (VmHWM of /proc/self/status);
-/// 0 when unknown.
-std::uint64_t peakResidentBytes();
 
 }  // namespace plumb

@@ -5,6 +5,7 @@
 // (DatasetLayer::subsampledFrom) and exports stream the whole file again.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 
 #include "io/stream/stream_subsample.hpp"
 
@@ -21,14 +22,9 @@ inline constexpr std::uint64_t kDisplayBytesPerPoint = 300;
 /// dock exists).
 std::uint64_t memoryBudget(const AppContext& app);
 
-struct LoadPlan {
-  bool subsample = false;        ///< read as a subsample (else whole, as readFile)
-  std::uint64_t estimated_points = 0;
-  SubsampleParams params;        ///< the subsample's voxel and most points, when subsample
-};
-
-/// How to open `path` within `budget` bytes; `voxel` is the subsample's starting voxel, metres.
-/// Models and files whose estimate fits are read whole. Throws readDataset's FileErrors.
-LoadPlan planLoad(const std::filesystem::path& path, std::uint64_t budget, double voxel);
+/// The subsample to open `path` with to stay within `budget` bytes (subsampleToFit at
+/// kDisplayBytesPerPoint; `voxel` is its starting voxel, metres), or nullopt to read it whole:
+/// a model, a file whose estimate fits, or no budget (0). Throws readDataset's FileErrors.
+std::optional<SubsampleParams> planLoad(const std::filesystem::path& path, std::uint64_t budget, double voxel);
 
 }  // namespace plumb::ui

@@ -59,9 +59,9 @@ LoadLimits loadLimits(AppContext& app) {
 /// readFile, or a voxel subsample when the whole file would not fit the budget.
 LoadedData readWithin(const std::string& path, const LoadLimits& limits, Progress& reading,
                       std::optional<SubsampledFrom>& subsampled) {
-  const LoadPlan plan = planLoad(path, limits.budget, limits.voxel);
-  if (!plan.subsample) return readFile(path, ReadOptions{}, &reading);
-  SubsampleResult s = subsampleDataset(path, plan.params, StreamOptions{}, &reading);
+  const std::optional<SubsampleParams> plan = planLoad(path, limits.budget, limits.voxel);
+  if (!plan) return readFile(path, ReadOptions{}, &reading);
+  SubsampleResult s = subsampleDataset(path, *plan, StreamOptions{}, &reading);
   subsampled = SubsampledFrom{s.points_read, s.voxel};
   return std::move(s.data);
 }

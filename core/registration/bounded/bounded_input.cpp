@@ -14,15 +14,23 @@ double subsampleVoxel(const PipelineParams& p) {
   return std::min(v, p.segment_detection.voxel_size / 4);
 }
 
+std::optional<SubsampleParams> subsampleToFit(const PointCountEstimate& estimate, std::uint64_t budget,
+                                              std::uint64_t bytes_per_point, double voxel) {
+  if (estimate.model || estimate.points * bytes_per_point <= budget) return std::nullopt;
+  SubsampleParams sub;
+  sub.voxel = voxel;
+  sub.max_points = std::max(kMinSubsamplePoints, budget / bytes_per_point);
+  return sub;
+}
+
 std::optional<SubsampledInput> boundedRegistrationInput(const std::filesystem::path& path,
                                                         const PipelineParams& params, Progress* progress) {
   const PointCountEstimate estimate = estimatePointCount(path);
   const std::uint64_t budget = memoryBudgetBytes(params.memory);
-  if (estimate.model || estimate.points * kRegistrationBytesPerPoint <= budget) return std::nullopt;
-  SubsampleParams sub;
-  sub.voxel = subsampleVoxel(params);
-  sub.max_points = std::max(kMinSubsamplePoints, budget / kRegistrationBytesPerPoint);
-  SubsampleResult s = subsampleDataset(path, sub, StreamOptions{}, progress);
+  const std::optional<SubsampleParams> sub =
+      subsampleToFit(estimate, budget, kRegistrationBytesPerPoint, subsampleVoxel(params));
+  if (!sub) return std::nullopt;
+  SubsampleResult s = subsampleDataset(path, *sub, StreamOptions{}, progress);
   SubsampledInput out;
   out.estimated_points = estimate.points;
   out.budget_bytes = budget;

@@ -10,6 +10,8 @@
 #include <optional>
 
 #include "common/progress.hpp"
+#include "io/stream/point_count.hpp"
+#include "io/stream/stream_subsample.hpp"
 #include "registration/auto/registration_input.hpp"
 
 namespace plumb {
@@ -26,6 +28,13 @@ struct SubsampledInput {
   std::uint64_t points_kept = 0;       ///< points of the subsample
   double voxel = 0;                    ///< voxel edge used, metres
 };
+
+/// The subsample a file of `estimate` points needs to fit `budget` bytes at `bytes_per_point`:
+/// nullopt for a model or when the whole file fits; else `voxel` and at most
+/// budget / bytes_per_point points (never fewer than kMinSubsamplePoints). The registration
+/// (kRegistrationBytesPerPoint) and the desktop (kDisplayBytesPerPoint) plan with it.
+std::optional<SubsampleParams> subsampleToFit(const PointCountEstimate& estimate, std::uint64_t budget,
+                                              std::uint64_t bytes_per_point, double voxel);
 
 /// The starting voxel of the subsample: memory.subsample-voxel, and never coarser than half
 /// the refinement voxel or a quarter of the segment voxel, so both see several points a cell.

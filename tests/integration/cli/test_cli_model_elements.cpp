@@ -23,16 +23,26 @@ using plumb::test::transformOf;
 
 namespace {
 
-/// The simulated scan of the L-shaped preset, moved by a random yaw and shift (truth.json), in a
-/// folder of the test's own: CTest runs the cases in parallel, and the CLI runner keeps each
-/// run's output in its folder.
+/// The simulated scan of the L-shaped preset, moved by a random yaw and shift (truth.json), in
+/// the test case's own folder (scratchDir).
 fs::path simulatedScan() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = scratchDir(std::string("cli_model_elements_") + info->name());
+  const fs::path dir = scratchDir("cli_model_elements");
   const CliResult sim = plumbCli(dir, "simulate --preset l-shaped --tls-rooms --perturb 180,15 --seed 5 "
                                 "--tls-azimuth-step 0.6 --tls-elevation-step 0.6 -o sim");
   EXPECT_EQ(sim.exit_code, 0) << sim.err;
   return dir;
+}
+
+/// The registration written to dir/T.json lands within the bar (0.05 deg, 1 cm) of
+/// sim/truth.json at the model points `corners`; prints the errors after `what`.
+void expectOnTruth(const fs::path& dir, const std::vector<Eigen::Vector3d>& corners, const std::string& what) {
+  const plumb::test::RegistrationError e = plumb::test::modelFrameError(
+      plumb::test::readJson(dir / "sim/truth.json"), "indoor", transformOf(plumb::test::readJson(dir / "T.json")["matrix"]),
+      corners);
+  EXPECT_LT(e.rotation_deg, 0.05);
+  EXPECT_LT(e.translation_m, 0.01);
+  std::cout << what << ": rotation error " << e.rotation_deg << " deg, translation error "
+            << e.translation_m * 1000 << " mm\n";
 }
 
 std::vector<std::string> usedTypes(const nlohmann::json& selection) {
@@ -49,14 +59,8 @@ TEST(CliModelElements, WallsAndSlabsRegisterAndTheReportNamesThem) {
                               "--transform T.json --report R.json --report R.html");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("restricted to types IfcWall, IfcSlab: 15 of 28 elements"), std::string::npos) << r.err;
-  // Within the bar (0.05 deg, 1 cm) at two far corners of the L's rooms.
-  const plumb::test::RegistrationError e = plumb::test::modelFrameError(
-      plumb::test::readJson(dir / "sim/truth.json"), "indoor", transformOf(plumb::test::readJson(dir / "T.json")["matrix"]),
-      {Eigen::Vector3d(2, 2, 1.5), Eigen::Vector3d(10, 8, 1.5)});
-  EXPECT_LT(e.rotation_deg, 0.05);
-  EXPECT_LT(e.translation_m, 0.01);
-  std::cout << "walls+slabs: rotation error " << e.rotation_deg << " deg, translation error "
-            << e.translation_m * 1000 << " mm\n";
+  // At two far corners of the L's rooms.
+  expectOnTruth(dir, {Eigen::Vector3d(2, 2, 1.5), Eigen::Vector3d(10, 8, 1.5)}, "walls+slabs");
   const auto selection = nlohmann::json::parse(readAll(dir / "R.json")).at("model_elements");
   EXPECT_EQ(selection.at("filter").at("types"), (std::vector<std::string>{"IfcWall", "IfcSlab"}));
   EXPECT_EQ(usedTypes(selection), (std::vector<std::string>{"IfcSlab", "IfcWall"}));
@@ -106,13 +110,7 @@ TEST(CliModelElements, OneStoreyOfARealIfcRegistersAndTheReportNamesIt) {
   const CliResult r = plumbCli(dir, "register sim/indoor.e57 " + model +
                                         " --model-storeys erdgeschoss --transform T.json --report R.json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const plumb::test::RegistrationError e = plumb::test::modelFrameError(
-      plumb::test::readJson(dir / "sim/truth.json"), "indoor", transformOf(plumb::test::readJson(dir / "T.json")["matrix"]),
-      {Eigen::Vector3d(0, 0, 1.5), Eigen::Vector3d(6, 6, 1.5)});
-  EXPECT_LT(e.rotation_deg, 0.05);
-  EXPECT_LT(e.translation_m, 0.01);
-  std::cout << "Erdgeschoss of AC20-FZK-Haus.ifc: rotation error " << e.rotation_deg << " deg, translation error "
-            << e.translation_m * 1000 << " mm\n";
+  expectOnTruth(dir, {Eigen::Vector3d(0, 0, 1.5), Eigen::Vector3d(6, 6, 1.5)}, "Erdgeschoss of AC20-FZK-Haus.ifc");
   const auto selection = nlohmann::json::parse(readAll(dir / "R.json")).at("model_elements");
   EXPECT_EQ(selection.at("filter").at("storeys"), (std::vector<std::string>{"erdgeschoss"}));
   EXPECT_LT(selection.at("elements_used").get<int>(), selection.at("elements_in_model").get<int>());

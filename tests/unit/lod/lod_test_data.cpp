@@ -106,11 +106,6 @@ std::vector<LodRecord> cachedRecords(const LodCache& cache) {
   return out;
 }
 
-std::filesystem::path caseScratch(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return scratchDir(info ? name + "_" + info->test_suite_name() + "." + info->name() : name);
-}
-
 std::shared_ptr<const LodCache> openValid(const std::filesystem::path& source, const std::filesystem::path& root) {
   const LodCacheOpenResult r = openLodCache(source, root);
   EXPECT_TRUE(r.valid()) << r.reason;

@@ -27,9 +27,6 @@ std::size_t readPointCount(const std::filesystem::path& file);
 /// Every point of every node of `cache` (in quanta from the grid origin), sorted; also
 /// checks that each world coordinate is the quantised one.
 std::vector<LodRecord> cachedRecords(const LodCache& cache);
-/// A fresh scratch folder for the running test case (<name>_<Case>: CTest runs the cases of
-/// one executable in parallel).
-std::filesystem::path caseScratch(const std::string& name);
 /// Opens the cache, failing the test when it is not valid.
 std::shared_ptr<const LodCache> openValid(const std::filesystem::path& source, const std::filesystem::path& root);
 

@@ -30,7 +30,7 @@ LodCacheParams smallNodes(double budget_mb = 256) {
 class LodBuild : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir = test::caseScratch("lod_build");
+    dir = test::scratchDir("lod_build");
     source = test::writeSurvey(dir, 3, 30000);
   }
   fs::path dir, source;

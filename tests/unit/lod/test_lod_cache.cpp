@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 class LodCacheFiles : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir = test::caseScratch("lod_cache");
+    dir = test::scratchDir("lod_cache");
     source = test::writeSurvey(dir, 2, 8000);
     LodCacheParams p;
     p.node_capacity = 500;
