@@ -46,7 +46,14 @@ DatasetLayer::DatasetLayer(std::shared_ptr<const Dataset> data, const Eigen::Vec
   style_ = prepared.style;  // the prepared colours are this style's
   exact_bounds_ = prepared.bounds;
   framing_ = prepared.framing;
-  for (ScanLayer* s : scans()) s->setPointSize(style_.point_size);
+  applyPointSize();
+}
+
+void DatasetLayer::applyPointSize() {
+  for (const auto& c : children()) {
+    if (c->kind() == LayerKind::Scan) static_cast<ScanLayer&>(*c).setPointSize(style_.point_size);
+    if (c->kind() == LayerKind::Detail) static_cast<DetailLayer&>(*c).setPointSize(style_.point_size);
+  }
 }
 
 DatasetLayer::~DatasetLayer() {
@@ -68,6 +75,7 @@ void DatasetLayer::setStyle(const PointStyle& style) {
   if (coloring_task_) coloring_task_->cancel();
   const Bounds b = bounds();
   for (ScanLayer* s : scans()) s->setStyle(style_, b.min.z(), b.max.z());
+  applyPointSize();
 }
 
 Task* DatasetLayer::requestStyle(const PointStyle& style, TaskManager& tasks,
@@ -78,11 +86,9 @@ Task* DatasetLayer::requestStyle(const PointStyle& style, TaskManager& tasks,
   coloring_pending_ = true;
   if (coloring_task_) coloring_task_->cancel();
   const Bounds b = bounds();
+  applyPointSize();
   std::vector<ScanColorJob> jobs;
-  for (ScanLayer* s : scans()) {
-    s->setPointSize(style_.point_size);
-    jobs.push_back(s->colorJob(style_, b.min.z(), b.max.z()));
-  }
+  for (ScanLayer* s : scans()) jobs.push_back(s->colorJob(style_, b.min.z(), b.max.z()));
   std::weak_ptr<const char> alive = lifetime();
   coloring_task_ = tasks.run(
       QObject::tr("Colouring %1").arg(name()),

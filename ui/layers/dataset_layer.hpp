@@ -125,6 +125,8 @@ class DatasetLayer : public Layer {
 
  private:
   void applyTransform();
+  /// The style's point size on every scan and on the level-of-detail detail.
+  void applyPointSize();
   std::shared_ptr<const Dataset> data_;
   Bounds exact_bounds_, framing_;  ///< dataset frame (PreparedDataset)
   PointStyle style_;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ui/app_context.hpp"
+#include "ui/layers/color_ramp.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/scan_layer.hpp"
 #include "ui/layers/scene.hpp"
@@ -20,13 +21,13 @@ namespace plumb::ui {
 
 namespace {
 
-/// Intensity limits of the dataset's subsample (the detail's ramp matches the subsample's).
+/// Intensity limits of the dataset's subsample, robust as the subsample's own ramp (1 % and
+/// 99 % quantiles, robustRange): one bright retro-reflector must not turn the detail grey.
 std::pair<double, double> intensityRange(const Dataset& data) {
-  double lo = INFINITY, hi = -INFINITY;
-  for (const Scan& s : data.scans)
-    for (const float v : s.cloud.intensity)
-      if (std::isfinite(v)) lo = std::min(lo, double(v)), hi = std::max(hi, double(v));
-  return lo < hi ? std::pair{lo, hi} : std::pair{0.0, 0.0};
+  std::vector<float> values;
+  for (const Scan& s : data.scans) values.insert(values.end(), s.cloud.intensity.begin(), s.cloud.intensity.end());
+  if (values.empty()) return {0.0, 0.0};
+  return robustRange(values);
 }
 
 DetailColouring colouringOf(const DatasetLayer& dataset, const DetailLayer& detail) {

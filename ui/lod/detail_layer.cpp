@@ -72,11 +72,18 @@ void DetailLayer::show(DetailPoints points) {
   updateActors();
 }
 
+Eigen::Matrix4d DetailLayer::localToWorld() const {
+  Eigen::Matrix4d anchor = Eigen::Matrix4d::Identity();
+  anchor.topRightCorner<3, 1>() = shown_.anchor;
+  return transform_.matrix() * anchor;
+}
+
 std::size_t DetailLayer::drawnPointCount() const {
   return actor_->GetVisibility() ? shown_.positions.size() : 0;
 }
 
 void DetailLayer::setPointSize(double pixels) { actor_->GetProperty()->SetPointSize(pixels); }
+double DetailLayer::pointSize() const { return actor_->GetProperty()->GetPointSize(); }
 
 std::vector<vtkProp*> DetailLayer::props() const { return {actor_.GetPointer()}; }
 
@@ -97,9 +104,7 @@ std::vector<PropertyRow> DetailLayer::describe() const {
 
 void DetailLayer::updateActors() {
   actor_->SetVisibility(shown() && !reduced() && poly_ != nullptr);
-  Eigen::Matrix4d anchor = Eigen::Matrix4d::Identity();
-  anchor.block<3, 1>(0, 3) = shown_.anchor;
-  actor_->SetUserMatrix(renderMatrix(origin_, transform_.matrix() * anchor));
+  actor_->SetUserMatrix(renderMatrix(origin_, localToWorld()));
 }
 
 }  // namespace plumb::ui

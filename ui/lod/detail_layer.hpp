@@ -36,7 +36,11 @@ class DetailLayer : public ActorLayer {
   const DetailPoints& drawn() const { return shown_; }
   /// Points drawn now (0 while moving or hidden).
   std::size_t drawnPointCount() const;
+  /// drawn().positions -> world coordinates (the dataset transform after the anchor), for
+  /// picking on the detail.
+  Eigen::Matrix4d localToWorld() const;
   void setPointSize(double pixels);
+  double pointSize() const;
   /// The VTK poly data drawn (tests read its colours).
   vtkPolyData* polyData() const { return poly_; }
 

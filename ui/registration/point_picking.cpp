@@ -6,11 +6,13 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/model_layer.hpp"
 #include "ui/layers/scan_layer.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/lod/detail_layer.hpp"
 
 namespace plumb::ui {
 
@@ -48,31 +50,46 @@ PickRay pickRay(vtkRenderer* r, const Eigen::Vector3d& origin, int x, int y, dou
 
 enum class PickRule { FrontMost, NearestToRay };
 
-/// Of the visible points of `layer` within `widen` times the ray's tolerance: the front-most
-/// one or the one nearest the ray (relative to the tolerance there), in world coordinates.
-std::optional<Eigen::Vector3d> pointOnRay(const DatasetLayer& layer, const PickRay& ray, double widen, PickRule rule) {
-  std::optional<Eigen::Vector3d> best;
-  float best_score = std::numeric_limits<float>::infinity();
+/// The best point on the ray so far: its score (pickRule) and world position.
+struct RayBest {
+  float score = std::numeric_limits<float>::infinity();
+  std::optional<Eigen::Vector3d> world;
+};
+
+/// Updates `best` with the points `pts` (local coordinates, `m`: local -> world) within
+/// `widen` times the ray's tolerance: the front-most one or the one nearest the ray (relative
+/// to the tolerance there).
+void scanPoints(std::span<const Eigen::Vector3f> pts, const Eigen::Matrix4d& m, const PickRay& ray,
+                double widen, PickRule rule, RayBest& best) {
   const float per_metre = float(widen * ray.radius_per_metre), fixed = float(widen * ray.radius);
-  for (const ScanLayer* scan : layer.scans()) {
-    if (!scan->effectivelyVisible()) continue;
-    const Eigen::Matrix4d m = scan->localToWorld();
-    const Eigen::Matrix4d inv = m.inverse();  // rigid: distances along the ray are preserved
-    const Eigen::Vector3f fa = (inv * ray.from.homogeneous()).head<3>().cast<float>();
-    const Eigen::Vector3f fd = (inv.topLeftCorner<3, 3>() * ray.dir).normalized().cast<float>();
-    const auto& pts = scan->scan().cloud.positions;
-    std::size_t best_i = pts.size();
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      const Eigen::Vector3f v = pts[i] - fa;
-      const float along = v.dot(fd);
-      if (!(along > 0.0f)) continue;
-      const float off = (v - along * fd).norm() / (fixed + per_metre * along);
-      const float score = rule == PickRule::FrontMost ? along : off;
-      if (off <= 1.0f && score < best_score) best_score = score, best_i = i;
-    }
-    if (best_i < pts.size()) best = (m * pts[best_i].cast<double>().homogeneous()).head<3>();
+  const Eigen::Matrix4d inv = m.inverse();  // rigid: distances along the ray are preserved
+  const Eigen::Vector3f fa = (inv * ray.from.homogeneous()).head<3>().cast<float>();
+  const Eigen::Vector3f fd = (inv.topLeftCorner<3, 3>() * ray.dir).normalized().cast<float>();
+  std::size_t best_i = pts.size();
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const Eigen::Vector3f v = pts[i] - fa;
+    const float along = v.dot(fd);
+    if (!(along > 0.0f)) continue;
+    const float off = (v - along * fd).norm() / (fixed + per_metre * along);
+    const float score = rule == PickRule::FrontMost ? along : off;
+    if (off <= 1.0f && score < best.score) best.score = score, best_i = i;
   }
-  return best;
+  if (best_i < pts.size()) best.world = (m * pts[best_i].cast<double>().homogeneous()).head<3>();
+}
+
+/// Of the visible points of `layer` (its scans, and the full-resolution detail drawn over
+/// them when the file is shown as a subsample) within `widen` times the ray's tolerance, in
+/// world coordinates.
+std::optional<Eigen::Vector3d> pointOnRay(const DatasetLayer& layer, const PickRay& ray, double widen, PickRule rule) {
+  RayBest best;
+  for (const ScanLayer* scan : layer.scans())
+    if (scan->effectivelyVisible()) scanPoints(scan->scan().cloud.positions, scan->localToWorld(), ray, widen, rule, best);
+  for (const auto& child : layer.children()) {
+    if (child->kind() != LayerKind::Detail || !child->effectivelyVisible()) continue;
+    const auto& detail = static_cast<const DetailLayer&>(*child);
+    if (detail.drawnPointCount() > 0) scanPoints(detail.drawn().positions, detail.localToWorld(), ray, widen, rule, best);
+  }
+  return best.world;
 }
 
 }  // namespace

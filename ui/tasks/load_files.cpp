@@ -2,11 +2,14 @@
 
 #include <QFileInfo>
 
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <variant>
 
 #include "io/io.hpp"
+#include "io/lod/lod_cache.hpp"
+#include "io/lod/lod_subsample.hpp"
 #include "registration/bounded/bounded_input.hpp"
 #include "ui/actions/recent_files.hpp"
 #include "ui/app_context.hpp"
@@ -40,6 +43,9 @@ struct Loaded {
   PreparedDataset prepared;
   std::shared_ptr<const BimModel> model;
   std::optional<SubsampledFrom> subsampled;  ///< the dataset is a subsample (memory budget)
+  /// How the subsample was made: from the level-of-detail cache (and how long it took), or
+  /// why the file was streamed although a cache exists.
+  QString subsample_route;
 };
 
 /// Fraction of a load's progress bar for reading (the rest prepares the display data).
@@ -49,27 +55,48 @@ constexpr double kReadShare = 0.8;
 struct LoadLimits {
   std::uint64_t budget = 0;  ///< bytes
   double voxel = 0.02;       ///< subsample voxel, metres
+  std::filesystem::path cache_root;  ///< level-of-detail caches (lodCacheRoot)
 };
 
 LoadLimits loadLimits(AppContext& app) {
   const PipelineParams params = app.registration ? app.registration->params() : PipelineParams{};
-  return {memoryBudget(app), subsampleVoxel(params)};
+  return {memoryBudget(app), subsampleVoxel(params), lodCacheRoot()};
 }
 
-/// readFile, or a voxel subsample when the whole file would not fit the budget.
-LoadedData readWithin(const std::string& path, const LoadLimits& limits, Progress& reading,
-                      std::optional<SubsampledFrom>& subsampled) {
+/// The subsample from the file's level-of-detail cache when a valid one exists (a reopen:
+/// seconds instead of streaming the file), else nullopt; `route` says which and why.
+std::optional<SubsampleResult> subsampleFromCache(const std::string& path, const SubsampleParams& plan,
+                                                  const LoadLimits& limits, Progress& reading, QString& route) {
+  const LodCacheOpenResult open = openLodCache(path, limits.cache_root);
+  if (!open.valid()) return std::nullopt;
+  const auto t0 = std::chrono::steady_clock::now();
+  LodSubsampleResult r = subsampleFromLodCache(path, *open.cache, plan, &reading);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!r.subsample) {
+    route = QObject::tr("its level-of-detail cache cannot give the subsample (%1): the file was streamed")
+                .arg(QString::fromStdString(r.why_not));
+    return std::nullopt;
+  }
+  route = QObject::tr("made from its level-of-detail cache in %1 s (%2 points of %3 levels)")
+              .arg(seconds, 0, 'f', 1).arg(r.points_from_cache).arg(r.levels);
+  return std::move(r.subsample);
+}
+
+/// readFile, or a voxel subsample when the whole file would not fit the budget (from the
+/// file's level-of-detail cache when it has a valid one).
+LoadedData readWithin(const std::string& path, const LoadLimits& limits, Progress& reading, Loaded& out) {
   const std::optional<SubsampleParams> plan = planLoad(path, limits.budget, limits.voxel);
   if (!plan) return readFile(path, ReadOptions{}, &reading);
-  SubsampleResult s = subsampleDataset(path, *plan, StreamOptions{}, &reading);
-  subsampled = SubsampledFrom{s.points_read, s.voxel};
-  return std::move(s.data);
+  std::optional<SubsampleResult> s = subsampleFromCache(path, *plan, limits, reading, out.subsample_route);
+  if (!s) s = subsampleDataset(path, *plan, StreamOptions{}, &reading);
+  out.subsampled = SubsampledFrom{s->points_read, s->voxel};
+  return std::move(s->data);
 }
 
 Loaded readAndPrepare(const std::string& path, const LoadLimits& limits, Progress& progress) {
   Progress reading = progress.sub(0.0, kReadShare);
   Loaded out;
-  LoadedData data = readWithin(path, limits, reading, out.subsampled);
+  LoadedData data = readWithin(path, limits, reading, out);
   if (auto* dataset = std::get_if<Dataset>(&data)) {
     out.dataset = std::make_shared<const Dataset>(std::move(*dataset));
     Progress preparing = progress.sub(kReadShare, 1.0);
@@ -103,6 +130,8 @@ Layer& addLoaded(AppContext& app, Loaded& data, const QString& path) {
                           .arg(data.subsampled->points_in_file)
                           .arg(double(memoryBudget(app)) / (1024.0 * 1024.0 * 1024.0), 0, 'f', 1)
                           .arg(data.subsampled->voxel * 100.0, 0, 'f', 1));
+      if (!data.subsample_route.isEmpty())
+        app.log.info(QObject::tr("%1: the subsample was %2").arg(QFileInfo(path).fileName(), data.subsample_route));
       startDetailCache(app, dataset_layer);  // full resolution where the view needs it
     }
   } else {

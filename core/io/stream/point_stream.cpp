@@ -192,4 +192,29 @@ void streamDataset(const std::filesystem::path& path, const StreamOptions& optio
   streamInMemory(readDataset(path, read, progress), options, sink);
 }
 
+namespace {
+/// Stops a stream once the outline is known.
+struct OutlineRead {};
+
+class OutlineSink : public ChunkSink {
+ public:
+  void begin(const StreamOutline& outline) override {
+    outline_ = outline;
+    throw OutlineRead{};
+  }
+  void chunk(const PointCloud&) override {}
+  StreamOutline outline_;
+};
+}  // namespace
+
+StreamOutline readStreamOutline(const std::filesystem::path& path) {
+  OutlineSink sink;
+  try {
+    streamDataset(path, StreamOptions{}, sink);
+  } catch (const OutlineRead&) {
+    return std::move(sink.outline_);
+  }
+  return std::move(sink.outline_);  // a file without points: the stream ended by itself
+}
+
 }  // namespace plumb

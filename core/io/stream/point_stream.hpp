@@ -27,6 +27,11 @@ bool streamsInChunks(const std::filesystem::path& path);
 void streamDataset(const std::filesystem::path& path, const StreamOptions& options, ChunkSink& sink,
                    Progress* progress = nullptr);
 
+/// The outline of a file that streamsInChunks (its header: format, scans with names, poses,
+/// fields and record counts) without reading a point. The metadata is the header's (the parts
+/// known only after the points are missing). Errors as streamDataset.
+StreamOutline readStreamOutline(const std::filesystem::path& path);
+
 /// Hands a dataset already in memory to `sink` in chunks (the route for formats read whole;
 /// also lets a consumer take a Dataset and a file alike).
 void streamInMemory(Dataset data, const StreamOptions& options, ChunkSink& sink);

@@ -107,54 +107,7 @@ PointCloud ScanGrid::cloud() const {
   return out;
 }
 
-class SubsampleSink : public ChunkSink {
- public:
-  SubsampleSink(const std::filesystem::path& path, const SubsampleParams& params)
-      : path_(path), params_(params), voxel_(params.voxel) {}
-
-  void begin(const StreamOutline& outline) override { result_.data = outline.dataset; }
-  void beginScan(const StreamScan& scan) override {
-    current_ = scan.index;
-    if (grids_.size() <= current_) grids_.resize(current_ + 1);
-  }
-  void chunk(const PointCloud& points) override {
-    addChunk(grids_[current_], points);
-    result_.points_read += points.size();
-    while (params_.max_points > 0 && totalCells() > params_.max_points) coarsenAll();
-  }
-  void end(const StreamOutline& outline) override { result_.data.metadata = outline.dataset.metadata; }
-
-  SubsampleResult take() {
-    for (std::size_t k = 0; k < result_.data.scans.size() && k < grids_.size(); ++k) {
-      result_.data.scans[k].cloud = grids_[k].cloud();
-      result_.points_kept += grids_[k].cells.size();
-      grids_[k] = ScanGrid();
-    }
-    result_.voxel = voxel_;
-    return std::move(result_);
-  }
-
- private:
-  void addChunk(ScanGrid& g, const PointCloud& points);
-  std::uint64_t totalCells() const {
-    std::uint64_t n = 0;
-    for (const auto& g : grids_) n += g.cells.size();
-    return n;
-  }
-  void coarsenAll() {
-    voxel_ *= 2;
-    for (auto& g : grids_) g.coarsen();
-  }
-
-  std::filesystem::path path_;
-  SubsampleParams params_;
-  double voxel_;
-  std::size_t current_ = 0;
-  std::vector<ScanGrid> grids_;
-  SubsampleResult result_;
-};
-
-void SubsampleSink::addChunk(ScanGrid& g, const PointCloud& points) {
+void addChunk(ScanGrid& g, const PointCloud& points, double voxel, const std::filesystem::path& path) {
   if (!g.started && !points.empty()) {
     g.started = true;
     g.normals = points.hasNormals();
@@ -164,15 +117,15 @@ void SubsampleSink::addChunk(ScanGrid& g, const PointCloud& points) {
     g.anchor = points.world(0).array().round().matrix();
     if (!g.anchor.allFinite()) g.anchor.setZero();
   }
-  const double inv = 1.0 / voxel_;
+  const double inv = 1.0 / voxel;
   for (std::size_t n = 0; n < points.size(); ++n) {
     const Eigen::Vector3d d = points.world(n) - g.anchor;
     if (!d.allFinite()) continue;
     const Eigen::Vector3d q = (d * inv).array().floor().matrix();
     if ((q.array().abs() >= double(kKeyHalfRange)).any())
-      throw FileError(path_, "a point lies " + std::to_string(d.norm()) +
-                                 " m from its scan's first point, beyond the subsample grid; raise "
-                                 "memory.subsample-voxel");
+      throw FileError(path, "a point lies " + std::to_string(d.norm()) +
+                                " m from its scan's first point, beyond the subsample grid; raise "
+                                "memory.subsample-voxel");
     const std::size_t c = g.cellAt(std::int64_t(q.x()), std::int64_t(q.y()), std::int64_t(q.z()));
     ++g.cells[c].count;
     g.cells[c].sum += d;
@@ -183,7 +136,80 @@ void SubsampleSink::addChunk(ScanGrid& g, const PointCloud& points) {
   }
 }
 
+class SubsampleSink : public ChunkSink {
+ public:
+  SubsampleSink(const std::filesystem::path& path, const SubsampleParams& params)
+      : path_(path), params_(params) {}
+
+  void begin(const StreamOutline& outline) override {
+    subsampler_ = std::make_unique<VoxelSubsampler>(path_, params_, outline.dataset);
+  }
+  void beginScan(const StreamScan& scan) override { current_ = scan.index; }
+  void chunk(const PointCloud& points) override { subsampler_->add(current_, points); }
+  void end(const StreamOutline& outline) override { subsampler_->outline().metadata = outline.dataset.metadata; }
+
+  SubsampleResult take() {
+    if (!subsampler_) return {};
+    return subsampler_->take();
+  }
+
+ private:
+  std::filesystem::path path_;
+  SubsampleParams params_;
+  std::size_t current_ = 0;
+  std::unique_ptr<VoxelSubsampler> subsampler_;
+};
+
 }  // namespace
+
+struct VoxelSubsampler::Grids {
+  std::filesystem::path path;
+  SubsampleParams params;
+  double voxel = 0;
+  std::vector<ScanGrid> scans;
+  SubsampleResult result;
+
+  std::uint64_t totalCells() const {
+    std::uint64_t n = 0;
+    for (const auto& g : scans) n += g.cells.size();
+    return n;
+  }
+  void coarsenAll() {
+    voxel *= 2;
+    for (auto& g : scans) g.coarsen();
+  }
+};
+
+VoxelSubsampler::VoxelSubsampler(std::filesystem::path path, const SubsampleParams& params, Dataset outline)
+    : grids_(std::make_unique<Grids>()) {
+  grids_->path = std::move(path);
+  grids_->params = params;
+  grids_->voxel = params.voxel;
+  grids_->result.data = std::move(outline);
+}
+
+VoxelSubsampler::~VoxelSubsampler() = default;
+
+Dataset& VoxelSubsampler::outline() { return grids_->result.data; }
+
+void VoxelSubsampler::add(std::size_t scan, const PointCloud& points) {
+  Grids& g = *grids_;
+  if (g.scans.size() <= scan) g.scans.resize(scan + 1);
+  addChunk(g.scans[scan], points, g.voxel, g.path);
+  g.result.points_read += points.size();
+  while (g.params.max_points > 0 && g.totalCells() > g.params.max_points) g.coarsenAll();
+}
+
+SubsampleResult VoxelSubsampler::take() {
+  Grids& g = *grids_;
+  for (std::size_t k = 0; k < g.result.data.scans.size() && k < g.scans.size(); ++k) {
+    g.result.data.scans[k].cloud = g.scans[k].cloud();
+    g.result.points_kept += g.scans[k].cells.size();
+    g.scans[k] = ScanGrid();
+  }
+  g.result.voxel = g.voxel;
+  return std::move(g.result);
+}
 
 SubsampleResult subsampleDataset(const std::filesystem::path& path, const SubsampleParams& params,
                                  const StreamOptions& options, Progress* progress) {

@@ -8,6 +8,7 @@
 // is the subsample at the final voxel whatever the order of the chunks.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 
 #include "common/progress.hpp"
 #include "io/stream/chunk_sink.hpp"
@@ -24,8 +25,30 @@ struct SubsampleResult {
   /// cloud replaced by its subsample, in the scan's own frame.
   Dataset data;
   double voxel = 0;                ///< voxel edge finally used, metres
-  std::uint64_t points_read = 0;   ///< points the file delivered
+  std::uint64_t points_read = 0;   ///< points the file delivered (or holds: subsampleFromLodCache)
   std::uint64_t points_kept = 0;   ///< points of the subsample
+};
+
+/// The voxel grids of a subsample, fed scan by scan with points in each scan's own frame (the
+/// file's stream, or another source of the same points: io/lod/lod_subsample.hpp).
+class VoxelSubsampler {
+ public:
+  /// `path` names the file in errors; `outline` is the dataset the result starts from (its
+  /// scans' clouds are replaced).
+  VoxelSubsampler(std::filesystem::path path, const SubsampleParams& params, Dataset outline);
+  ~VoxelSubsampler();
+  VoxelSubsampler(const VoxelSubsampler&) = delete;
+  VoxelSubsampler& operator=(const VoxelSubsampler&) = delete;
+  /// Adds points of scan `scan` (its own frame). The fields of a scan's first non-empty call
+  /// decide which sums it keeps. Coarsens every grid while the cells exceed max_points.
+  void add(std::size_t scan, const PointCloud& points);
+  Dataset& outline();
+  /// The subsample (points_read counts the points added); the subsampler is empty after.
+  SubsampleResult take();
+
+ private:
+  struct Grids;
+  std::unique_ptr<Grids> grids_;
 };
 
 /// Streams `path` (streamDataset: errors are its FileErrors) into a voxel subsample.

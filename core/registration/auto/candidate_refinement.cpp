@@ -34,6 +34,12 @@ const ParamSchema<CandidateParams>& CandidateParams::schema() {
                 "Or: its refined fit cost is higher by this ...", true)
           .real(&P::min_cost_ratio, "cost-ratio", "Clear fit cost ratio", "", 1.0, 100.0,
                 "... and this many times the other's", true)
+          .real(&P::decisive_unexplained_ratio, "decisive-unexplained-ratio",
+                "Decisive unexplained ratio", "", 1.0, 1000.0,
+                "A placement overrules the features when it leaves this many times fewer points "
+                "unexplained than their choice ...", true)
+          .real(&P::decisive_cost_ratio, "decisive-cost-ratio", "Decisive fit cost ratio", "",
+                1.0, 1000.0, "... and its fit cost is this many times lower", true)
           .integer(&P::max_alternatives, "alternatives", "Further hypotheses refined", "", 0, 4,
                    "Distinct hypotheses beyond the runner-up refined and compared too (a "
                    "repeated room's other copy may score low on features)", true)
@@ -61,7 +67,10 @@ const ParamSchema<CandidateParams>& CandidateParams::schema() {
                 "A shift is a copy when it explains this fraction of what the chosen "
                 "placement explains", true)
           .integer(&P::copy_max, "copy-max", "Copies compared", "", 0, 8,
-                   "Copies refined and compared at most, best first", true);
+                   "Copies refined and compared at most, best first", true)
+          .integer(&P::copy_rounds, "copy-rounds", "Copy search rounds", "", 0, 4,
+                   "Search the copies of the chosen placement again when it is not the one "
+                   "searched around, up to this many times", true);
   return s;
 }
 
@@ -136,21 +145,33 @@ bool isRuledOut(const std::vector<bool>& ruled_out, std::size_t i) {
   return i < ruled_out.size() && ruled_out[i];
 }
 
+/// `x` fits decisively better than `y`: far fewer points unexplained and a far lower fit cost
+/// (CandidateParams::decisive_*), enough to overrule the features' choice.
+bool decisivelyBetter(const RefineResult& x, const RefineResult& y, const CandidateParams& p) {
+  if (lostOverlap(x)) return false;
+  return (1.0 - y.overlap) >= p.decisive_unexplained_ratio * (1.0 - x.overlap) &&
+         y.fit_cost >= p.decisive_cost_ratio * x.fit_cost;
+}
+
 /// The hypothesis to answer with: the first, unless the global step could not choose and
-/// another one fits clearly better (the best overlap among those). A first hypothesis that
-/// other evidence ruled out gives way to the best-fitting one that fits about as well or
-/// better and was not ruled out (none: it stays, and the verdict will say why it fails).
+/// another one fits clearly better, or it chose and another one fits decisively better (the
+/// best overlap among those). A first hypothesis that other evidence ruled out gives way to
+/// the best-fitting one that fits about as well or better and was not ruled out (none: it
+/// stays, and the verdict will say why it fails).
 std::size_t answerIndex(const std::vector<RefinedHypothesis>& h, bool global_chose,
                         const Eigen::Vector3d& centroid, const CandidateParams& p,
                         const std::vector<bool>& ruled_out) {
   std::size_t best = 0;
   const bool first_out = isRuledOut(ruled_out, 0);
-  if (global_chose && !first_out) return best;
   for (std::size_t i = 1; i < h.size(); ++i) {
     if (isRuledOut(ruled_out, i)) continue;
     const CandidateRelation rel = compareRefined(h[0].refined, h[i].refined, centroid, p);
-    const bool eligible = rel == CandidateRelation::SecondClearlyBetter ||
-                          (first_out && rel == CandidateRelation::Close);
+    const bool eligible =
+        (global_chose && !first_out)
+            ? rel == CandidateRelation::SecondClearlyBetter &&
+                  decisivelyBetter(h[i].refined, h[0].refined, p)
+            : rel == CandidateRelation::SecondClearlyBetter ||
+                  (first_out && rel == CandidateRelation::Close);
     if (eligible && (best == 0 || h[i].refined.overlap > h[best].refined.overlap)) best = i;
   }
   return best;
@@ -193,6 +214,8 @@ CandidateSelection selectCandidate(const std::vector<RefinedHypothesis>& h, bool
   }
   if (s.chosen != 0)
     msg << (isRuledOut(ruled_out, 0) ? "; the global answer was ruled out by the free space"
+            : global_chose           ? "; the refined points overruled the features: the "
+                                       "chosen placement fits decisively better than their answer"
                                      : "; the refined points chose the runner-up");
   s.message = msg.str();
   return s;

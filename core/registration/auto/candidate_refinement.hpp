@@ -58,6 +58,14 @@ struct CandidateParams {
   double min_cost_gap = 0.02;
   /// ... and at least this many times the other's, [1, 100].
   double min_cost_ratio = 1.5;
+  /// A placement overrules the features' choice when, refined, it leaves at most 1 / this of
+  /// the points the chosen one leaves unexplained, [1, 1000] ...
+  double decisive_unexplained_ratio = 5.0;
+  /// ... and its fit cost is at most 1 / this of the chosen one's, [1, 1000]: a room symmetric
+  /// but for its door and window, turned onto itself by the plane matching, explains 93 % of
+  /// the scan where the truth explains 99.9 % (fit cost 6 times lower); copies of a repeated
+  /// room differ by their furniture only (docs/VERDICT.md "Decisive fits").
+  double decisive_cost_ratio = 3.0;
   /// Beyond the runner-up, refine up to this many further distinct hypotheses, [0, 4] ...
   int max_alternatives = 2;
   /// ... whose feature score is at least this fraction of the best's, [0, 1]; the best
@@ -85,6 +93,10 @@ struct CandidateParams {
   double copy_min_fraction = 0.9;
   /// ... at most this many, best first, [0, 8].
   int copy_max = 4;
+  /// When the chosen placement is not the one the copies were searched around (the free space
+  /// ruled that one out, or another fits better), search the chosen one's copies too, up to
+  /// this many rounds, [0, 4]: the truth may be a copy of it and not of the first centre.
+  int copy_rounds = 2;
   static const ParamSchema<CandidateParams>& schema();
 };
 

@@ -164,12 +164,16 @@ std::vector<Eigen::Vector3d> samplePoints(const PointCloud& source, const RigidT
   return out;
 }
 
-/// The turn by `quarter` x 90 degrees about the vertical through `centre`.
-RigidTransform quarterTurn(int quarter, const Eigen::Vector3d& centre) {
-  const Eigen::Matrix3d r =
-      Eigen::AngleAxisd(quarter * M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+/// Turn `t`: 0-3 the turn by t x 90 degrees about the vertical through `centre`; 4-7 the same
+/// after turning upside down (180 degrees about the X axis through `centre`).
+RigidTransform quarterTurn(int t, const Eigen::Vector3d& centre) {
+  Eigen::Matrix3d r =
+      Eigen::AngleAxisd((t % 4) * M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  if (t >= 4) r = r * Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
   return RigidTransform(r, centre - r * centre);
 }
+
+int turnCount(const CopySearchParams& p) { return p.upside_down ? 8 : 4; }
 
 /// The placed sample's cells, for one turn.
 struct PlacedSample {
@@ -255,16 +259,21 @@ std::vector<Copy> inMetres(const std::vector<ShiftScore>& shifts, double cell) {
   return out;
 }
 
-/// The best fine score of `coarse` within one coarse cell of its shift (fine grid `g`).
+/// The best fine score of `coarse` within one coarse cell of its shift horizontally, and half
+/// the separation vertically (fine grid `g`).
 Copy refineOnFineGrid(const Copy& coarse, const PlacedSample& placed, const OccupancyGrid& g,
-                      double coarse_cell, int threshold) {
+                      double coarse_cell, double separation, int threshold) {
   const Index3 centre = (coarse.shift / g.cell).array().round().cast<int>();
   const int r = int(std::ceil(0.5 * coarse_cell / g.cell)) + 1;
+  // Vertically as far as the non-maximum suppression reaches: a shift half a storey off can
+  // outscore the right one on the dilated coarse grid (a corridor's walls fit at any height)
+  // and suppress it; the fine grid, which the floors and ceilings must fit, tells them apart.
+  const int rz = std::max(r, int(std::ceil(0.5 * separation / g.cell)) + 1);
   Copy best = coarse;
   best.score = -1;
   const int allowed = int(placed.cells.size()) - threshold;
   Index3 d;
-  for (d.z() = -r; d.z() <= r; ++d.z())
+  for (d.z() = -rz; d.z() <= rz; ++d.z())
     for (d.y() = -r; d.y() <= r; ++d.y())
       for (d.x() = -r; d.x() <= r; ++d.x()) {
         const Index3 shift = centre + d;
@@ -279,17 +288,19 @@ Hypothesis copyHypothesis(const Copy& c, const RigidTransform& chosen,
   const RigidTransform t = RigidTransform(Eigen::Matrix3d::Identity(), c.shift) *
                            quarterTurn(c.quarter, centre) * chosen;
   char label[160];
-  std::snprintf(label, sizeof label, "copy: turned %d deg, shifted (%.2f, %.2f, %.2f) m",
-                90 * c.quarter, c.shift.x(), c.shift.y(), c.shift.z());
+  std::snprintf(label, sizeof label, "copy: turned %d deg%s, shifted (%.2f, %.2f, %.2f) m",
+                90 * (c.quarter % 4), c.quarter >= 4 ? " upside down" : "", c.shift.x(),
+                c.shift.y(), c.shift.z());
   return Hypothesis{t, double(c.score) / double(n), label};
 }
 
-/// The placed sample on grid `g` for each quarter turn.
-std::array<PlacedSample, 4> placeTurns(const std::vector<Eigen::Vector3d>& sample,
-                                       const RigidTransform& chosen,
-                                       const Eigen::Vector3d& centre, const OccupancyGrid& g) {
-  std::array<PlacedSample, 4> out;
-  for (int q = 0; q < 4; ++q) out[q] = placeSample(sample, quarterTurn(q, centre) * chosen, g, q);
+/// The placed sample on grid `g` for each turn (quarterTurn).
+std::vector<PlacedSample> placeTurns(const std::vector<Eigen::Vector3d>& sample,
+                                     const RigidTransform& chosen, const Eigen::Vector3d& centre,
+                                     const OccupancyGrid& g, int turns) {
+  std::vector<PlacedSample> out;
+  for (int t = 0; t < turns; ++t)
+    out.push_back(placeSample(sample, quarterTurn(t, centre) * chosen, g, t));
   return out;
 }
 
@@ -297,7 +308,7 @@ std::array<PlacedSample, 4> placeTurns(const std::vector<Eigen::Vector3d>& sampl
 std::vector<Copy> coarseCandidates(const std::vector<Eigen::Vector3d>& sample,
                                    const RigidTransform& chosen, const Eigen::Vector3d& centre,
                                    const OccupancyGrid& g, const CopySearchParams& p) {
-  const auto placed = placeTurns(sample, chosen, centre, g);
+  const auto placed = placeTurns(sample, chosen, centre, g, turnCount(p));
   const int own = scoreShift(placed[0], Index3::Zero(), g, int(sample.size()));
   const int threshold = std::max(1, int(std::ceil(p.min_fraction * own)));
   std::vector<ShiftScore> passing;
@@ -311,15 +322,21 @@ std::vector<Copy> fineCopies(const std::vector<Copy>& coarse,
                              const RigidTransform& chosen, const Eigen::Vector3d& centre,
                              const OccupancyGrid& fine, double coarse_cell,
                              const CopySearchParams& p, int& own_score) {
-  const auto placed = placeTurns(sample, chosen, centre, fine);
+  const auto placed = placeTurns(sample, chosen, centre, fine, turnCount(p));
   own_score = scoreShift(placed[0], Index3::Zero(), fine, int(sample.size()));
   const int threshold = std::max(1, int(std::ceil(p.min_fraction * own_score)));
   std::vector<Copy> scored;
   for (const Copy& c : coarse) {
-    const Copy f = refineOnFineGrid(c, placed[std::size_t(c.quarter)], fine, coarse_cell, threshold);
+    const Copy f = refineOnFineGrid(c, placed[std::size_t(c.quarter)], fine, coarse_cell, p.separation, threshold);
     if (f.score >= threshold) scored.push_back(f);
   }
-  return suppressNonMaxima(scored, p.separation, p.max_copies);
+  // Upright and upside-down copies kept apart, each up to max_copies: on a grid, an upside-down
+  // room fits about as well as an upright one, and must not push the upright copies out.
+  std::vector<Copy> upright, upside_down;
+  for (const Copy& c : scored) (c.quarter < 4 ? upright : upside_down).push_back(c);
+  std::vector<Copy> kept = suppressNonMaxima(upright, p.separation, p.max_copies);
+  for (const Copy& c : suppressNonMaxima(upside_down, p.separation, p.max_copies)) kept.push_back(c);
+  return kept;
 }
 
 }  // namespace
@@ -334,7 +351,7 @@ CopySearchResult findCopies(const PointCloud& source, const PointCloud& target,
   }
   const OccupancyGrid coarse = buildGrid(target, p.cell, p.max_cells);
   r.cell = coarse.cell;
-  if (4 * coarse.count() > p.max_shifts) {
+  if (turnCount(p) * coarse.count() > p.max_shifts) {
     r.skipped = true;
     r.message = "copy search skipped: the target is too large for a whole-cell search";
     return r;

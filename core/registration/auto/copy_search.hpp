@@ -11,12 +11,14 @@
 //      wall direction: floors fit at any horizontal shift and must not outvote the walls) is
 //      placed by the chosen transform and turned about the
 //      target's vertical axis by 0, 90, 180 and 270 degrees (a building's copies are turned by
-//      quarter turns: mirrored units by a half turn; other angles are not searched);
+//      quarter turns: mirrored units by a half turn; other angles are not searched); when the
+//      source's up direction was only estimated, also upside down and then by quarter turns;
 //   3. every whole-cell shift that keeps the placed sample within the target's box is scored by
 //      the number of sample points landing in occupied cells; a shift stops being counted as
 //      soon as it cannot reach `copy_min_fraction` of the chosen placement's own score;
 //   4. the shifts reaching it, one per metre (non-maximum suppression), are scored again on a
-//      finer grid (`fine_cell`), each at its best fine shift within one coarse cell: the
+//      finer grid (`fine_cell`), each at its best fine shift within one coarse cell (half a
+//      metre vertically: the suppression may have kept a shift half a storey off): the
 //      coarse tolerance lets half-fitting placements reach the threshold, the fine one does not;
 //   5. shifts whose fine score reaches `copy_min_fraction` of the chosen placement's fine score
 //      are copies, kept best first, one per metre, at most `copy_max`, without the chosen
@@ -49,6 +51,12 @@ struct CopySearchParams {
   std::int64_t max_shifts = 8'000'000;  ///< shifts x turns searched at most (else skipped)
   double min_explained = 0.5;   ///< no search when the chosen placement explains less of the
                                 ///< sample (a partial overlap has no meaningful copies)
+  /// Also search the chosen placement turned upside down (180 degrees about a horizontal axis,
+  /// then by quarter turns): for a source whose up direction was chosen among candidates
+  /// (orientation_search.hpp), where a room whose floor and ceiling look alike can be placed
+  /// upside down and its upright copies are then never among the quarter turns. Upside-down
+  /// copies are kept apart from upright ones, up to max_copies each.
+  bool upside_down = false;
   std::uint64_t seed = 1;       ///< which source points are sampled
 };
 

@@ -160,6 +160,7 @@ GlobalRegistrationResult mergeOrientations(std::vector<OrientedResult> results,
     const OrientedResult& o = results[order[k]];
     if (!hasAnswer(o.global)) continue;
     pool.push_back({o.global.transform, o.global.score, "up " + vec(o.up) + ": " + o.global.method});
+    best.orientation_answers.push_back(pool.back());
     same_method.push_back(o.global.method == best.method);
     if (same_method.back() && statusRank(o.global) == statusRank(best) && best.score > 0 &&
         (best.score - o.global.score) / best.score < minGapOf(best.method, p))
@@ -197,7 +198,9 @@ GlobalRegistrationResult searchUpCandidates(const std::vector<UpCandidate>& cand
     results.push_back(registerLevelledBy(c.up, levellingTransform(c.up, centre), source, sf, tf,
                                          target_is_model, p, log, progress, segments_on_demand));
   }
-  return mergeOrientations(std::move(results), p);
+  GlobalRegistrationResult merged = mergeOrientations(std::move(results), p);
+  merged.up_estimated = true;
+  return merged;
 }
 
 }  // namespace

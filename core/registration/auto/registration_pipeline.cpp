@@ -277,6 +277,13 @@ CandidateSelection separateByFreeSpace(const RegistrationSide& source,
   return sel;
 }
 
+/// Hypotheses that are only compared are refined without the slide test (it is measured again
+/// on the one that becomes the answer).
+RefineParams comparedParams(RefineParams rp) {
+  rp.slide_test = false;
+  return rp;
+}
+
 /// The target points the copy search marks its grid with: the target scan, the samples the
 /// refinement used, the model's given samples, or the model sampled at twice the fine cell
 /// (the grid is dilated by one cell, so that spacing leaves no hole). Null when the copy
@@ -295,9 +302,10 @@ const PointCloud* copySearchTarget(const RegistrationSide& target, const Pipelin
 /// The copies of the placed source in the target (copy_search.hpp); `tc` comes from
 /// copySearchTarget, which is null when the search is off.
 std::vector<Hypothesis> copiesOf(const PointCloud& sc, const PointCloud& tc,
-                                 const RigidTransform& chosen, const PipelineParams& p,
-                                 std::vector<std::string>& log) {
+                                 const RigidTransform& chosen, bool up_estimated,
+                                 const PipelineParams& p, std::vector<std::string>& log) {
   CopySearchParams cp;
+  cp.upside_down = up_estimated;
   cp.cell = p.candidates.copy_cell;
   cp.min_fraction = p.candidates.copy_min_fraction;
   cp.max_copies = p.candidates.copy_max;
@@ -308,10 +316,8 @@ std::vector<Hypothesis> copiesOf(const PointCloud& sc, const PointCloud& tc,
 }
 
 /// The global answer refined, then (when `compare`) the runner-up, the further distinct
-/// hypotheses, the best placement elsewhere and the copies of the best-fitting of them
-/// (copy_search.hpp), refined without the slide test (only compared).
-std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const PointCloud* tc,
-                                                const RefineTarget& prepared,
+/// hypotheses and the best placement elsewhere, refined without the slide test (only compared).
+std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const RefineTarget& prepared,
                                                 const RefineParams& rp, PipelineResult& out,
                                                 bool target_is_model, const PipelineParams& p,
                                                 bool compare, Progress* progress) {
@@ -320,24 +326,59 @@ std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const Poin
   h.push_back({Hypothesis{g.transform, g.score, "global answer"},
                refineRegistration(sc, prepared, g.transform, rp, progress)});
   if (!compare) return h;
-  auto compared = rp;
-  compared.slide_test = false;  // measured again if it becomes the answer
   std::vector<Hypothesis> others;
   if (g.runner_up) others.push_back(*g.runner_up);
   for (const Hypothesis& a : furtherHypotheses(g, p.candidates)) others.push_back(a);
   if (auto e = searchElsewhere(out.source_features, out.target_features, h[0].refined.transform,
                                g.score, target_is_model, p))
     others.push_back(*e);
+  for (const Hypothesis& a : g.orientation_answers) {  // every up direction's answer
+    const bool listed = std::any_of(others.begin(), others.end(), [&](const Hypothesis& o) {
+      return o.transform.matrix().isApprox(a.transform.matrix(), 1e-12);
+    });
+    if (!listed) others.push_back(a);
+  }
   for (const Hypothesis& o : others)
-    h.push_back({o, refineRegistration(sc, prepared, o.transform, compared, progress)});
-  // Copies of the best-fitting placement so far (the global answer may be a poor one).
+    h.push_back({o, refineRegistration(sc, prepared, o.transform, comparedParams(rp), progress)});
+  return h;
+}
+
+/// The hypothesis fitting best so far (most points explained): the copy search's first centre
+/// (the global answer may be a poor one).
+std::size_t bestFitting(const std::vector<RefinedHypothesis>& h) {
   const auto best = std::max_element(h.begin(), h.end(), [](const auto& a, const auto& b) {
     return a.refined.overlap < b.refined.overlap;
   });
-  if (!tc) return h;
-  for (const Hypothesis& c : copiesOf(sc, *tc, best->refined.transform, p, out.log))
-    h.push_back({c, refineRegistration(sc, prepared, c.transform, compared, progress)});
-  return h;
+  return static_cast<std::size_t>(best - h.begin());
+}
+
+/// A copy that lands where a hypothesis already refined ended (within the copy search's
+/// tolerance: a quarter of a degree and two coarse cells at the source's centre) adds nothing.
+bool alreadyRefined(const Hypothesis& copy, const std::vector<RefinedHypothesis>& h,
+                    const Eigen::Vector3d& centroid, double cell) {
+  for (const RefinedHypothesis& x : h) {
+    const RigidTransform& t = x.refined.transform;
+    if (RigidTransform::rotationErrorDeg(t, copy.transform) <= 0.25 &&
+        (t.apply(centroid) - copy.transform.apply(centroid)).norm() <= 2.0 * cell)
+      return true;
+  }
+  return false;
+}
+
+/// Refines the copies of h[centre] (copy_search.hpp) that no hypothesis has reached yet and
+/// appends them; returns how many were appended.
+std::size_t addCopies(const PointCloud& sc, const PointCloud& tc, const RefineTarget& prepared,
+                      const RefineParams& rp, std::size_t centre, bool up_estimated,
+                      const PipelineParams& p, std::vector<RefinedHypothesis>& h,
+                      std::vector<std::string>& log, Progress* progress) {
+  const Eigen::Vector3d centroid = sc.bounds().center();
+  std::size_t added = 0;
+  for (const Hypothesis& c : copiesOf(sc, tc, h[centre].refined.transform, up_estimated, p, log)) {
+    if (alreadyRefined(c, h, centroid, p.candidates.copy_cell)) continue;
+    h.push_back({c, refineRegistration(sc, prepared, c.transform, comparedParams(rp), progress)});
+    ++added;
+  }
+  return added;
 }
 
 /// The global answer and, when CandidateParams allows, the runner-up, further hypotheses and
@@ -363,16 +404,33 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
   if (g.method == "icp") tc = nullptr;
   const bool compare = p.candidates.refine_runner_up && (g.runner_up || tc);
   std::vector<RefinedHypothesis> h =
-      refineHypotheses(*sc, tc, prepared, rp, out, target.isModel(), p, compare, progress);
-  if (compare)
-    measureStructureOverlap(structurePoints(*sc, out.source_features.planes,
-                                            p.visibility.structure_min_area),
-                            prepared, rp, h);
+      refineHypotheses(*sc, prepared, rp, out, target.isModel(), p, compare, progress);
+  std::size_t centre = bestFitting(h);
+  if (compare && tc) addCopies(*sc, *tc, prepared, rp, centre, g.up_estimated, p, h, out.log, progress);
+  const PointCloud structure =
+      compare ? structurePoints(*sc, out.source_features.planes, p.visibility.structure_min_area)
+              : PointCloud{};
+  measureStructureOverlap(structure, prepared, rp, h);
   const bool global_chose = g.ok();
   const Eigen::Vector3d centroid = sc->bounds().center();
-  const CandidateSelection sel = separateByFreeSpace(
-      source, target, p, out, h, selectCandidate(h, global_chose, centroid, p.candidates),
-      global_chose, centroid);
+  auto select = [&] {
+    return separateByFreeSpace(source, target, p, out, h,
+                               selectCandidate(h, global_chose, centroid, p.candidates),
+                               global_chose, centroid);
+  };
+  CandidateSelection sel = select();
+  // The chosen placement is not the one the copies were searched around (the free space ruled
+  // that one out, or the features chose another): its own copies were never compared with it
+  // (a stair placed in the wrong one of two mirrored dwellings, the right one being a copy of it
+  // but not of the placement a floor too low). Search again around it.
+  for (int round = 0; compare && tc && round < p.candidates.copy_rounds && sel.chosen != centre;
+       ++round) {
+    centre = sel.chosen;
+    const std::size_t before = h.size();
+    if (addCopies(*sc, *tc, prepared, rp, centre, g.up_estimated, p, h, out.log, progress) == 0) break;
+    measureStructureOverlap(structure, prepared, rp, h, before);
+    sel = select();
+  }
   out.candidates = sel.candidates;
   if (compare) out.log.push_back(sel.message);
   if (sel.chosen != 0) {

@@ -15,14 +15,14 @@ PointCloud structurePoints(const PointCloud& source, const std::vector<PlanarPol
 }
 
 void measureStructureOverlap(const PointCloud& structure, const RefineTarget& target,
-                             const RefineParams& params, std::vector<RefinedHypothesis>& h) {
+                             const RefineParams& params, std::vector<RefinedHypothesis>& h, std::size_t first) {
   if (structure.empty()) return;
   RefineParams measure = params;
   measure.iterations = 0;  // the fit where the refinement left it
   measure.slide_test = false;
-  for (RefinedHypothesis& x : h)
-    x.refined.structure_overlap =
-        refineRegistration(structure, target, x.refined.transform, measure).overlap;
+  for (std::size_t i = first; i < h.size(); ++i)
+    h[i].refined.structure_overlap =
+        refineRegistration(structure, target, h[i].refined.transform, measure).overlap;
 }
 
 }  // namespace plumb

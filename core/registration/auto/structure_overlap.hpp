@@ -20,10 +20,11 @@ namespace plumb {
 PointCloud structurePoints(const PointCloud& source, const std::vector<PlanarPolygon>& planes,
                            double min_area, std::size_t min_points = 100);
 
-/// Sets RefineResult::structure_overlap of every hypothesis: the overlap of `structure` under
+/// Sets RefineResult::structure_overlap of every hypothesis from index `first` on: the overlap of `structure` under
 /// its refined transform, measured as the refinement measures its own overlap (same target,
 /// same distances, no iteration). Leaves it unmeasured (< 0) when `structure` is empty.
 void measureStructureOverlap(const PointCloud& structure, const RefineTarget& target,
-                             const RefineParams& params, std::vector<RefinedHypothesis>& h);
+                             const RefineParams& params, std::vector<RefinedHypothesis>& h,
+                             std::size_t first = 0);
 
 }  // namespace plumb

@@ -51,6 +51,13 @@ struct GlobalRegistrationResult {
   /// The thickness was measured (openings on non-parallel façades, or planes seen through
   /// them), not assumed.
   bool wall_thickness_measured = false;
+  /// The source's up direction was chosen among estimated candidates (orientation any, or auto
+  /// on data that does not look levelled): the answer may be upside down (copy_search.hpp).
+  bool up_estimated = false;
+  /// Then, the answer of every other up direction tried: each a plausible orientation of the
+  /// source, refined and compared whatever its feature score (the true up direction's answer
+  /// can score below a wrong one's: a wall matched as a floor).
+  std::vector<Hypothesis> orientation_answers;
   /// Method-specific figures for the report, e.g. {"wall thickness (m)", 0.31}.
   std::vector<std::pair<std::string, double>> figures;
 

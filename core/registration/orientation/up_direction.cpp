@@ -36,6 +36,28 @@ std::vector<UpCandidate> principalAxes(const DirectionClusteringResult& c,
   return axes;
 }
 
+/// Two walls at right angles, seen without their floor as a principal direction (a room under a
+/// pitched roof: the roof's normal, 45 degrees from Z, outweighs the floor): the direction
+/// perpendicular to both is an up candidate too, added after the principal axes when no axis
+/// lies within min_axis_separation_deg of it. Pairs within kPerpendicularDeg of a right angle.
+void addPerpendicularOfWalls(std::vector<UpCandidate>& axes, const OrientationParams& p) {
+  constexpr double kPerpendicularDeg = 5.0;
+  const std::size_t n = axes.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (std::abs(90.0 - angleDeg(axes[i].up, axes[j].up)) > kPerpendicularDeg) continue;
+      UpCandidate c;
+      c.up = axes[i].up.cross(axes[j].up).normalized();
+      if (c.up.z() < 0) c.up = -c.up;
+      const bool close = std::any_of(axes.begin(), axes.end(), [&](const UpCandidate& a) {
+        return angleDeg(a.up, c.up) < p.min_axis_separation_deg;
+      });
+      if (close) continue;
+      c.tilt_deg = angleDeg(c.up, Eigen::Vector3d::UnitZ());
+      axes.push_back(c);  // share 0: no normal lies on it
+    }
+}
+
 std::string describe(const UpEstimate& e, const char* from) {
   std::ostringstream o;
   o.precision(3);
@@ -43,7 +65,7 @@ std::string describe(const UpEstimate& e, const char* from) {
   for (std::size_t i = 0; i < e.candidates.size(); i += 2)
     o << (i ? ", " : ": ") << "(" << e.candidates[i].up.x() << ", " << e.candidates[i].up.y()
       << ", " << e.candidates[i].up.z() << ") " << e.candidates[i].tilt_deg << " deg from Z, "
-      << 100.0 * e.candidates[i].share << "%";
+      << 100.0 * e.candidates[i].share << "%" << (e.candidates[i].share > 0 ? "" : " (perpendicular to two walls)");
   o << (e.looks_levelled ? "; looks levelled" : "; not levelled");
   return o.str();
 }
@@ -62,6 +84,7 @@ UpEstimate estimateUpDirections(const std::vector<PlanarPolygon>& planes,
     from = "segment directions";
   }
   std::vector<UpCandidate> axes = principalAxes(clusters, p);
+  addPerpendicularOfWalls(axes, p);
   // Most plausible first: the axis nearest Z (a levelled dataset keeps its own up first).
   std::stable_sort(axes.begin(), axes.end(), [](const UpCandidate& a, const UpCandidate& b) {
     return a.tilt_deg < b.tilt_deg;

@@ -4,7 +4,9 @@
 // principal directions of the plane normals (the Manhattan frame; vertical edges when the
 // segments are all there is). Each principal direction is a candidate, with both signs: the
 // normals are unsigned and a wall's direction looks like a floor's after a 90-degree tilt, so
-// the data alone may not tell which one is up; the registration evidence decides then.
+// the data alone may not tell which one is up; the registration evidence decides then. Two
+// principal directions at right angles also offer the direction perpendicular to both (two
+// walls of a room whose floor is outweighed by a pitched roof).
 #include <Eigen/Core>
 
 #include <string>

@@ -52,7 +52,7 @@ void usage() {
   std::fprintf(stderr,
                "usage: bench_bim_stations [--poses N] [--models a.ifc,open-office] [--types room,corridor,hall,stair]\n"
                "                          [--sets yaw,3d] [--stations-per-type K] [--threads N] [--csv FILE]\n"
-               "                          [--seed N] [--set GROUP.KEY=VALUE]... [--catalogue-only [--list-all]] [--ci]\n");
+               "                          [--seed N] [--set GROUP.KEY=VALUE]... [--log] [--catalogue-only [--list-all]] [--ci]\n");
 }
 
 void applyCi(Options& o) {
@@ -86,6 +86,7 @@ std::optional<Options> parse(int argc, char** argv) {
     else if (a == "--csv") o.csv = next();
     else if (a == "--seed") o.run.seed = o.catalogue.seed = std::stoull(next());
     else if (a == "--catalogue-only") o.catalogue_only = true;
+    else if (a == "--log") o.run.print_log = true;
     else if (a == "--list-all") o.list_all = true;
     else if (a == "--ci") applyCi(o);
     else if (a == "--set") setPipelineParam(o.run.pipeline, assignment(next(), value), value);

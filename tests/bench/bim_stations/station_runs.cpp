@@ -105,6 +105,17 @@ RunRecord runPose(const test::Scenario& scan, const StationModel& m, const Catal
   r.level = c.level;
   r.status = c.status;
   r.method = c.method;
+  r.log = c.log;
+  for (const PlacementCandidate& k : c.report.candidates) {  // each candidate against the truth
+    const test::PoseError e = test::poseError(k.transform, pose.inverse(), pose.apply(s.position));
+    const Eigen::AngleAxisd err(k.transform.rotation() * pose.rotation());  // truth = pose^-1
+    char line[240];
+    std::snprintf(line, sizeof line,
+                  "candidate %s (%s): %.4f deg about (%.2f, %.2f, %.2f), %.1f mm from the truth, overlap %.4f",
+                  k.role.c_str(), k.label.c_str(), e.rotation_deg, err.axis().x(), err.axis().y(),
+                  err.axis().z(), 1000.0 * e.translation_m, k.overlap);
+    r.log.push_back(line);
+  }
   r.reported_success = c.reported_success;
   if (r.reported_success) {
     const test::PoseError e = test::poseError(c.report.transform, pose.inverse(), pose.apply(s.position));
@@ -146,6 +157,8 @@ std::vector<RunRecord> runStation(const StationModel& m, const CatalogueStation&
       r.set = set;
       r.pose = i;
       printRun(r);
+      if (p.print_log && !isSuccess(r.outcome))
+        for (const std::string& line : r.log) std::printf("      | %s\n", line.c_str());
       out.push_back(std::move(r));
     }
   }

@@ -49,6 +49,7 @@ struct RunParams {
   double listed_translation_m = 0.3;  ///< ... and this of the truth
   std::uint64_t seed = 14;         ///< poses and scan noise, mixed with the station
   PipelineParams pipeline;         ///< the product defaults (orientation auto)
+  bool print_log = false;          ///< print the pipeline log of every run that is not a success
 };
 
 struct RunRecord {
@@ -71,6 +72,7 @@ struct RunRecord {
   bool self_symmetric = false;
   Outcome outcome = Outcome::Failed;
   double seconds = 0.0;  ///< registration, features of the scan included
+  std::vector<std::string> log;  ///< the pipeline's log
 };
 
 /// Simulates the station's scan once and runs every pose of every set in p.sets.

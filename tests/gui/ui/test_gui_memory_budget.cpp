@@ -23,6 +23,7 @@
 #include "ui/layers/scene.hpp"
 #include "ui/lod/detail_layer.hpp"
 #include "ui/panels/memory_status_widget.hpp"
+#include "ui/registration/point_picking.hpp"
 #include "ui/registration/registration_panel.hpp"
 #include "ui/tasks/export_tasks.hpp"
 #include "ui/tasks/load_budget.hpp"
@@ -42,15 +43,23 @@ Eigen::Vector3d gridPoint(int i, int j) {
   return {kX0 + i * kStep, kY0 + j * kStep, 40.0 + 0.001 * ((i * 7 + j * 3) % 11)};
 }
 
-/// A binary PLY with double coordinates: a 1 cm grid in Lambert-93 coordinates.
+/// Intensity in [0, 0.99], but 1000 at every 10007th point (retro-reflective targets).
+float gridIntensity(int i, int j) {
+  const int k = i * kRows + j;
+  return k % 10007 == 0 ? 1000.0f : float((i * 13 + j * 7) % 100) / 100.0f;
+}
+
+/// A binary PLY with double coordinates: a 1 cm grid in Lambert-93 coordinates, with intensity.
 std::filesystem::path writeGeoGrid(const std::filesystem::path& path) {
   std::ofstream out(path, std::ios::binary);
   out << "ply\nformat binary_little_endian 1.0\nelement vertex " << kColumns * kRows
-      << "\nproperty double x\nproperty double y\nproperty double z\nend_header\n";
+      << "\nproperty double x\nproperty double y\nproperty double z\nproperty float intensity\nend_header\n";
   for (int i = 0; i < kColumns; ++i)
     for (int j = 0; j < kRows; ++j) {
       const Eigen::Vector3d p = gridPoint(i, j);
       out.write(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
+      const float v = gridIntensity(i, j);
+      out.write(reinterpret_cast<const char*>(&v), sizeof v);
     }
   return path;
 }
@@ -161,6 +170,20 @@ class GuiMemoryBudgetTest : public QObject {
     const QString log = app.log.toPlainText();
     QCOMPARE(log.count("level-of-detail cache built"), 1);
     QCOMPARE(log.count("level-of-detail cache reused"), 1);
+    // The second opening's subsample came from the cache, not from streaming the file, and it
+    // stands for the same file: every point counted, within the budget, on the same grid.
+    QCOMPARE(log.count("the subsample was made from its level-of-detail cache"), 1);
+    QCOMPARE(app.scene.layers().size(), std::size_t{2});
+    auto* first = dynamic_cast<DatasetLayer*>(app.scene.layers()[0].get());
+    auto* second = dynamic_cast<DatasetLayer*>(app.scene.layers()[1].get());
+    QVERIFY(first && second && second->subsampledFrom());
+    QCOMPARE(second->subsampledFrom()->points_in_file, std::uint64_t(kColumns) * kRows);
+    const std::size_t most = (std::uint64_t{256} << 20) / kDisplayBytesPerPoint;
+    QVERIFY(second->dataset().pointCount() <= most);
+    QVERIFY2(second->dataset().pointCount() > first->dataset().pointCount() / 4,
+             qPrintable(QString("%1 vs %2").arg(second->dataset().pointCount()).arg(first->dataset().pointCount())));
+    const Bounds a = first->dataset().bounds(), b = second->dataset().bounds();
+    QVERIFY2((a.min - b.min).norm() < 0.1 && (a.max - b.max).norm() < 0.1, "the two subsamples cover the same grid");
   }
 
  private:
@@ -179,17 +202,48 @@ class GuiMemoryBudgetTest : public QObject {
                               qPrintable(QString("%1 detail points, %2 in the subsample\n%3")
                                              .arg(detail->drawnPointCount()).arg(subsample).arg(app.log.toPlainText())),
                               60000);
+    checkPickingOnDetail(layer, *detail);
     PointStyle scan_style = layer.style();
     scan_style.mode = PointColorMode::Scan;
+    scan_style.point_size = 4.0;
     app.scene.requestStyle(layer, scan_style);
     QTRY_VERIFY_WITH_TIMEOUT((app.view.requestRender(), detail->drawn().colouring.coloring.style.mode == PointColorMode::Scan),
                              60000);
+    QCOMPARE(detail->pointSize(), 4.0);  // the dataset's point size, also after a style change
     const Rgb expected = categoryColor(layer.scans().front()->colourIndex());
     const auto& colours = detail->drawn().colours;
     QVERIFY(!colours.empty());
     QVERIFY(std::all_of(colours.begin(), colours.end(), [&](const Rgba& c) {
       return c[0] == expected[0] && c[1] == expected[1] && c[2] == expected[2];
     }));
+    // Intensity: the detail's ramp spans the subsample's robust range (1 % - 99 %), not up to
+    // the few targets at 1000, which would draw every other point black.
+    PointStyle intensity_style = layer.style();
+    intensity_style.mode = PointColorMode::Intensity;
+    app.scene.requestStyle(layer, intensity_style);
+    QTRY_VERIFY_WITH_TIMEOUT((app.view.requestRender(), detail->drawn().colouring.coloring.style.mode == PointColorMode::Intensity),
+                             60000);
+    const auto& ramp = detail->drawn().colouring.coloring;
+    QVERIFY2(ramp.value_max < 1.5 && ramp.value_min < 0.2,
+             qPrintable(QString("detail intensity ramp %1 .. %2").arg(ramp.value_min).arg(ramp.value_max)));
+  }
+
+  /// Picking sees the detail: with the subsample's scans hidden, a click at the view's centre
+  /// picks a point of the file itself (on its 1 cm grid, to 0.1 mm), not a voxel centroid.
+  void checkPickingOnDetail(DatasetLayer& layer, DetailLayer& detail) {
+    AppContext& app = window_->context();
+    for (ScanLayer* s : layer.scans()) s->setVisible(false);
+    app.view.renderNow();
+    QVERIFY(detail.drawnPointCount() > 0);
+    const double dpr = app.view.devicePixelRatioF();
+    const auto picked = pickScenePoint(app.view.renderer(), app.scene, int(app.view.width() * dpr / 2),
+                                       int(app.view.height() * dpr / 2), 1.0);
+    for (ScanLayer* s : layer.scans()) s->setVisible(true);
+    QVERIFY2(picked, "nothing picked with only the detail shown");
+    const double i = (picked->world.x() - kX0) / kStep, j = (picked->world.y() - kY0) / kStep;
+    QVERIFY2(std::abs(i - std::round(i)) < 0.01 && std::abs(j - std::round(j)) < 0.01,
+             qPrintable(QString("picked %1, %2: not a point of the file").arg(picked->world.x(), 0, 'f', 5)
+                            .arg(picked->world.y(), 0, 'f', 5)));
   }
 
   std::unique_ptr<MainWindow> window_;

@@ -191,6 +191,7 @@ CaseOutcome runPlumbCase(const Scenario& s, const RigidTransform& pose,
   o.visibility = r.report.visibility;
   o.overlap = r.report.overlap_ratio;
   o.level = verdictLevelName(r.report.level);
+  o.log = r.log;
   if (r.candidates.size() > 1) {
     char line[200];
     for (const auto& c : r.candidates) {

@@ -93,6 +93,7 @@ struct CaseOutcome {
   double min_resistance = std::numeric_limits<double>::quiet_NaN();
   double seconds_features = 0, seconds_global = 0, seconds_refine = 0, seconds_total = 0;
   QualityReport report;  ///< the whole report (bench_verdict reads every figure of its JSON)
+  std::vector<std::string> log;  ///< the pipeline's log (PipelineResult::log)
 };
 
 /// Moves the source by `pose` and registers it onto the target with the Plumb pipeline

@@ -4,6 +4,9 @@
 // room once, or only rooms of other sizes, gives no copy.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <random>
 
 #include "registration/auto/copy_search.hpp"
@@ -102,4 +105,33 @@ TEST(CopySearch, SkippedWhenTheChosenPlacementExplainsLittle) {
   const CopySearchResult r = findCopies(source, target, nowhere, CopySearchParams{});
   EXPECT_TRUE(r.skipped) << r.message;
   EXPECT_TRUE(r.copies.empty());
+}
+
+// A room placed upside down (its floor on the ceiling: a scan whose up direction was only
+// estimated) explains all but its cupboard; its upright self is not among the quarter turns
+// about the vertical, only among the upside-down turns (CopySearchParams::upside_down).
+TEST(CopySearch, FindsTheUprightRoomFromAnUpsideDownPlacementOnlyWhenAsked) {
+  PointCloud target;
+  append(target, roomPoints(4.0, 5.0, 2.6, 0.05), kFirst);
+  const PointCloud source = sourceScan();
+  const RigidTransform truth = kFirst * kStation.inverse();
+  const Eigen::Vector3d centre = kFirst.apply({2.0, 2.5, 1.3});
+  const Eigen::Matrix3d flip = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const RigidTransform chosen = RigidTransform(flip, centre - flip * centre) * truth;
+  const Eigen::Vector3d at = source.bounds().center();
+  const auto findsTruth = [&](const CopySearchResult& r) {
+    return std::any_of(r.copies.begin(), r.copies.end(), [&](const Hypothesis& c) {
+      return RigidTransform::rotationErrorDeg(c.transform, truth) < 1e-6 &&
+             shiftAt(c.transform, truth, at) < 0.1;
+    });
+  };
+  const CopySearchResult upright = findCopies(source, target, chosen, CopySearchParams{});
+  EXPECT_FALSE(findsTruth(upright)) << upright.message;
+  CopySearchParams p;
+  p.upside_down = true;
+  const CopySearchResult both = findCopies(source, target, chosen, p);
+  EXPECT_TRUE(findsTruth(both)) << both.message;
+  for (const Hypothesis& c : both.copies)
+    if (RigidTransform::rotationErrorDeg(c.transform, truth) < 1e-6)
+      EXPECT_NE(c.label.find("upside down"), std::string::npos) << c.label;
 }
