@@ -140,9 +140,7 @@ FeatureLayer::~FeatureLayer() = default;
 
 void FeatureLayer::setTransform(const RigidTransform& t) {
   transform_ = t;
-  Eigen::Matrix4d local = Eigen::Matrix4d::Identity();
-  local.block<3, 1>(0, 3) = featureBounds(*features_).center();
-  const auto m = renderMatrix(origin_, transform_.matrix() * local);
+  const auto m = renderMatrix(origin_, transform_.matrix() * anchorMatrix(featureBounds(*features_).center()));
   fill_actor_->SetUserMatrix(m);
   line_actor_->SetUserMatrix(m);
   highlight_actor_->SetUserMatrix(m);

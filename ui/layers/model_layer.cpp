@@ -95,9 +95,7 @@ void ModelLayer::setStyle(const MeshStyle& style) {
 
 void ModelLayer::setTransform(const RigidTransform& t) {
   transform_ = t;
-  Eigen::Matrix4d local = Eigen::Matrix4d::Identity();
-  local.block<3, 1>(0, 3) = model_->mesh.bounds().center();
-  actor_->SetUserMatrix(renderMatrix(origin_, transform_.matrix() * local));
+  actor_->SetUserMatrix(renderMatrix(origin_, transform_.matrix() * anchorMatrix(model_->mesh.bounds().center())));
   for (const auto& c : children())
     if (c->kind() == LayerKind::Features) static_cast<FeatureLayer*>(c.get())->setTransform(t);
 }

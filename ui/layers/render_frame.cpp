@@ -4,6 +4,12 @@
 
 namespace plumb::ui {
 
+Eigen::Matrix4d anchorMatrix(const Eigen::Vector3d& anchor) {
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.block<3, 1>(0, 3) = anchor;
+  return m;
+}
+
 vtkSmartPointer<vtkMatrix4x4> renderMatrix(const Eigen::Vector3d& origin,
                                            const Eigen::Matrix4d& local_to_world) {
   Eigen::Matrix4d m = local_to_world;

@@ -11,6 +11,9 @@
 
 namespace plumb::ui {
 
+/// Local coordinates relative to `anchor` -> the frame `anchor` is in: a translation (the
+/// float geometry of scans, models, features and detail is stored relative to such an anchor).
+Eigen::Matrix4d anchorMatrix(const Eigen::Vector3d& anchor);
 /// Actor matrix: render = local_to_world * local - origin.
 vtkSmartPointer<vtkMatrix4x4> renderMatrix(const Eigen::Vector3d& origin,
                                            const Eigen::Matrix4d& local_to_world);

@@ -16,18 +16,6 @@
 
 namespace plumb::ui {
 
-namespace {
-
-/// offset + local -> scan frame as a matrix acting on local coordinates.
-Eigen::Matrix4d offsetMatrix(const Eigen::Vector3d& offset) {
-  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-  m.block<3, 1>(0, 3) = offset;
-  return m;
-}
-
-
-}  // namespace
-
 ScanLayer::ScanLayer(std::shared_ptr<const Dataset> data, std::size_t scan_index,
                      const Eigen::Vector3d& origin, std::size_t lod_points,
                      PreparedScan prepared)
@@ -83,7 +71,7 @@ bool ScanLayer::usesMoving() const {
 ScanLayer::~ScanLayer() = default;
 
 Eigen::Matrix4d ScanLayer::localToWorld() const {
-  return dataset_transform_.matrix() * scan().pose.matrix() * offsetMatrix(scan().cloud.offset);
+  return dataset_transform_.matrix() * scan().pose.matrix() * anchorMatrix(scan().cloud.offset);
 }
 
 void ScanLayer::replaceData(std::shared_ptr<const Dataset> data) {

@@ -72,11 +72,7 @@ void DetailLayer::show(DetailPoints points) {
   updateActors();
 }
 
-Eigen::Matrix4d DetailLayer::localToWorld() const {
-  Eigen::Matrix4d anchor = Eigen::Matrix4d::Identity();
-  anchor.topRightCorner<3, 1>() = shown_.anchor;
-  return transform_.matrix() * anchor;
-}
+Eigen::Matrix4d DetailLayer::localToWorld() const { return transform_.matrix() * anchorMatrix(shown_.anchor); }
 
 std::size_t DetailLayer::drawnPointCount() const {
   return actor_->GetVisibility() ? shown_.positions.size() : 0;
