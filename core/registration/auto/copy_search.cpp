@@ -164,12 +164,14 @@ std::vector<Eigen::Vector3d> samplePoints(const PointCloud& source, const RigidT
   return out;
 }
 
+bool upsideDown(int turn) { return turn >= 4; }
+
 /// Turn `t`: 0-3 the turn by t x 90 degrees about the vertical through `centre`; 4-7 the same
 /// after turning upside down (180 degrees about the X axis through `centre`).
-RigidTransform quarterTurn(int t, const Eigen::Vector3d& centre) {
+RigidTransform turnAbout(int t, const Eigen::Vector3d& centre) {
   Eigen::Matrix3d r =
       Eigen::AngleAxisd((t % 4) * M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  if (t >= 4) r = r * Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  if (upsideDown(t)) r = r * Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
   return RigidTransform(r, centre - r * centre);
 }
 
@@ -177,15 +179,15 @@ int turnCount(const CopySearchParams& p) { return p.upside_down ? 8 : 4; }
 
 /// The placed sample's cells, for one turn.
 struct PlacedSample {
-  int quarter = 0;
+  int turn = 0;  ///< turnAbout index: 0-3 upright, 4-7 upside down
   std::vector<Index3> cells;
   Index3 centre = Index3::Zero();  ///< the cell of the sample's box centre
 };
 
 PlacedSample placeSample(const std::vector<Eigen::Vector3d>& sample, const RigidTransform& placed,
-                         const OccupancyGrid& g, int quarter) {
+                         const OccupancyGrid& g, int turn) {
   PlacedSample s;
-  s.quarter = quarter;
+  s.turn = turn;
   Bounds box;
   for (const auto& p : sample) {
     const Eigen::Vector3d q = placed.apply(p);
@@ -208,7 +210,7 @@ int scoreShift(const PlacedSample& s, const Index3& shift, const OccupancyGrid& 
 }
 
 struct ShiftScore {
-  int quarter = 0;
+  int turn = 0;
   Index3 shift = Index3::Zero();
   int score = 0;
 };
@@ -224,13 +226,13 @@ void scanShifts(const PlacedSample& s, const OccupancyGrid& g, int threshold,
     for (d.y() = lo.y(); d.y() <= hi.y(); ++d.y())
       for (d.x() = lo.x(); d.x() <= hi.x(); ++d.x()) {
         const int score = scoreShift(s, d, g, allowed);
-        if (score >= threshold) out.push_back({s.quarter, d, score});
+        if (score >= threshold) out.push_back({s.turn, d, score});
       }
 }
 
 /// A candidate in metres: its turn, its shift and its score.
 struct Copy {
-  int quarter = 0;
+  int turn = 0;
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();
   int score = 0;
 };
@@ -244,7 +246,7 @@ std::vector<Copy> suppressNonMaxima(std::vector<Copy> all, double separation, in
   for (const Copy& c : all) {
     if (int(kept.size()) > max_kept) break;
     const bool near = std::any_of(kept.begin(), kept.end(), [&](const Copy& k) {
-      return k.quarter == c.quarter && (k.shift - c.shift).norm() < separation;
+      return k.turn == c.turn && (k.shift - c.shift).norm() < separation;
     });
     if (!near) kept.push_back(c);
   }
@@ -255,7 +257,7 @@ std::vector<Copy> suppressNonMaxima(std::vector<Copy> all, double separation, in
 std::vector<Copy> inMetres(const std::vector<ShiftScore>& shifts, double cell) {
   std::vector<Copy> out;
   for (const ShiftScore& s : shifts)
-    out.push_back({s.quarter, s.shift.cast<double>().matrix() * cell, s.score});
+    out.push_back({s.turn, s.shift.cast<double>().matrix() * cell, s.score});
   return out;
 }
 
@@ -278,7 +280,7 @@ Copy refineOnFineGrid(const Copy& coarse, const PlacedSample& placed, const Occu
       for (d.x() = -r; d.x() <= r; ++d.x()) {
         const Index3 shift = centre + d;
         const int score = scoreShift(placed, shift, g, std::min(allowed, int(placed.cells.size()) - best.score - 1));
-        if (score > best.score) best = {coarse.quarter, shift.cast<double>().matrix() * g.cell, score};
+        if (score > best.score) best = {coarse.turn, shift.cast<double>().matrix() * g.cell, score};
       }
   return best;
 }
@@ -286,21 +288,21 @@ Copy refineOnFineGrid(const Copy& coarse, const PlacedSample& placed, const Occu
 Hypothesis copyHypothesis(const Copy& c, const RigidTransform& chosen,
                           const Eigen::Vector3d& centre, std::size_t n) {
   const RigidTransform t = RigidTransform(Eigen::Matrix3d::Identity(), c.shift) *
-                           quarterTurn(c.quarter, centre) * chosen;
+                           turnAbout(c.turn, centre) * chosen;
   char label[160];
   std::snprintf(label, sizeof label, "copy: turned %d deg%s, shifted (%.2f, %.2f, %.2f) m",
-                90 * (c.quarter % 4), c.quarter >= 4 ? " upside down" : "", c.shift.x(),
+                90 * (c.turn % 4), upsideDown(c.turn) ? " upside down" : "", c.shift.x(),
                 c.shift.y(), c.shift.z());
   return Hypothesis{t, double(c.score) / double(n), label};
 }
 
-/// The placed sample on grid `g` for each turn (quarterTurn).
+/// The placed sample on grid `g` for each turn (turnAbout).
 std::vector<PlacedSample> placeTurns(const std::vector<Eigen::Vector3d>& sample,
                                      const RigidTransform& chosen, const Eigen::Vector3d& centre,
                                      const OccupancyGrid& g, int turns) {
   std::vector<PlacedSample> out;
   for (int t = 0; t < turns; ++t)
-    out.push_back(placeSample(sample, quarterTurn(t, centre) * chosen, g, t));
+    out.push_back(placeSample(sample, turnAbout(t, centre) * chosen, g, t));
   return out;
 }
 
@@ -327,13 +329,13 @@ std::vector<Copy> fineCopies(const std::vector<Copy>& coarse,
   const int threshold = std::max(1, int(std::ceil(p.min_fraction * own_score)));
   std::vector<Copy> scored;
   for (const Copy& c : coarse) {
-    const Copy f = refineOnFineGrid(c, placed[std::size_t(c.quarter)], fine, coarse_cell, p.separation, threshold);
+    const Copy f = refineOnFineGrid(c, placed[std::size_t(c.turn)], fine, coarse_cell, p.separation, threshold);
     if (f.score >= threshold) scored.push_back(f);
   }
   // Upright and upside-down copies kept apart, each up to max_copies: on a grid, an upside-down
   // room fits about as well as an upright one, and must not push the upright copies out.
   std::vector<Copy> upright, upside_down;
-  for (const Copy& c : scored) (c.quarter < 4 ? upright : upside_down).push_back(c);
+  for (const Copy& c : scored) (upsideDown(c.turn) ? upside_down : upright).push_back(c);
   std::vector<Copy> kept = suppressNonMaxima(upright, p.separation, p.max_copies);
   for (const Copy& c : suppressNonMaxima(upside_down, p.separation, p.max_copies)) kept.push_back(c);
   return kept;
