@@ -1,6 +1,8 @@
 #pragma once
 // The parts of the application that reactions (menu actions) work on. Owned by MainWindow
 // (Qt parent ownership); reactions hold a reference to this for their lifetime.
+#include <cstdint>
+
 class QMainWindow;
 class QUndoStack;
 
@@ -30,6 +32,8 @@ struct AppContext {
   RegistrationPanel* registration = nullptr;  ///< the Registration dock (set once built)
   ManualAlignPanel* manual = nullptr;         ///< the Manual alignment dock
   MeasureTool* measure = nullptr;             ///< View > Measure (view clicks measure while on)
+  /// Memory budget promised to point files still loading (load_budget.hpp, loadShare), bytes.
+  std::uint64_t loads_reserved = 0;
 };
 
 }  // namespace plumb::ui

@@ -11,7 +11,6 @@
 #include "ui/layers/scene.hpp"
 #include "ui/lod/detail_layer.hpp"
 #include "ui/panels/log_panel.hpp"
-#include "ui/tasks/load_budget.hpp"
 #include "ui/tasks/task_manager.hpp"
 
 namespace plumb::ui {
@@ -50,12 +49,12 @@ OpenedCache openOrBuild(const std::filesystem::path& source, const std::filesyst
 
 }  // namespace
 
-Task* startDetailCache(AppContext& app, DatasetLayer& layer) {
+Task* startDetailCache(AppContext& app, DatasetLayer& layer, std::uint64_t budget_share) {
   const std::filesystem::path source = layer.dataset().source;
   const std::filesystem::path root = lodCacheRoot();
-  // An eighth of the budget for the build's buckets (64 MB .. 1 GB): the subsample shown and a
-  // registration keep the rest.
-  const double budget_mb = std::clamp(double(memoryBudget(app)) / 8.0 / (1024.0 * 1024.0), 64.0, 1024.0);
+  // An eighth of the file's share for the build's buckets (64 MB .. 1 GB): the subsample shown
+  // and a registration keep the rest.
+  const double budget_mb = std::clamp(double(budget_share) / 8.0 / (1024.0 * 1024.0), 64.0, 1024.0);
   const LayerRef held(layer);
   const QString name = layer.name();
   return app.tasks.run(

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "ui/app_context.hpp"
 #include "ui/layers/color_ramp.hpp"
@@ -57,23 +59,28 @@ DetailController::DetailController(AppContext& app, LodController& lod, QObject*
 
 void DetailController::refresh() {
   if (lod_.moving()) return;
+  std::vector<std::pair<DatasetLayer*, DetailLayer*>> shown;
   for (const auto& root : app_.scene.layers()) {
     if (root->kind() != LayerKind::Dataset || !root->effectivelyVisible()) continue;
     auto& dataset = static_cast<DatasetLayer&>(*root);
     for (const auto& child : dataset.children())
       if (child->kind() == LayerKind::Detail && child->effectivelyVisible())
-        refreshLayer(dataset, static_cast<DetailLayer&>(*child));
+        shown.emplace_back(&dataset, static_cast<DetailLayer*>(child.get()));
   }
+  // One still frame's budget for all files: a campaign of several files draws (and holds) no
+  // more detail than one.
+  const std::size_t budget = shown.empty() ? 0 : lod_.stillBudget().points() / shown.size();
+  for (auto [dataset, detail] : shown) refreshLayer(*dataset, *detail, std::clamp(budget, kMinPoints, kMaxPoints));
 }
 
-void DetailController::refreshLayer(DatasetLayer& dataset, DetailLayer& detail) {
+void DetailController::refreshLayer(DatasetLayer& dataset, DetailLayer& detail, std::size_t point_budget) {
   if (loading_.count(&detail)) return;
   VtkViewWidget& view = app_.view;
   const double dpr = view.devicePixelRatioF();
   const CameraState camera = cameraState(*view.renderer()->GetActiveCamera(), int(view.width() * dpr),
                                          int(view.height() * dpr));
   LodSelectParams select;
-  select.point_budget = std::clamp(lod_.stillBudget().points(), kMinPoints, kMaxPoints);
+  select.point_budget = point_budget;
   const LodView lod_view = lodViewInDataset(camera, app_.scene.origin(), detail.datasetTransform());
   std::vector<std::uint32_t> nodes = selectLodNodes(detail.cache()->hierarchy(), lod_view, select).nodes;
   const DetailColouring colouring = colouringOf(dataset, detail);

@@ -21,7 +21,8 @@ class Layer;
 class DetailController : public QObject {
   Q_OBJECT
  public:
-  /// Fewest and most points a view draws from a cache.
+  /// Fewest and most points a view draws from one cache (the still frame's budget is split
+  /// evenly among the visible detail layers, each within these).
   static constexpr std::size_t kMinPoints = 200'000;
   static constexpr std::size_t kMaxPoints = 4'000'000;
 
@@ -36,7 +37,7 @@ class DetailController : public QObject {
   void detailShown();
 
  private:
-  void refreshLayer(DatasetLayer& dataset, DetailLayer& detail);
+  void refreshLayer(DatasetLayer& dataset, DetailLayer& detail, std::size_t point_budget);
   AppContext& app_;
   LodController& lod_;
   std::map<const Layer*, bool> loading_;  ///< detail layers with a load running

@@ -2,6 +2,7 @@
 
 #include <QFileInfo>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -46,21 +47,32 @@ struct Loaded {
   /// How the subsample was made: from the level-of-detail cache (and how long it took), or
   /// why the file was streamed although a cache exists.
   QString subsample_route;
+  std::uint64_t budget_share = 0;  ///< bytes this file was allowed (LoadLimits::budget)
 };
+
+double gigabytes(std::uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0 * 1024.0); }
 
 /// Fraction of a load's progress bar for reading (the rest prepares the display data).
 constexpr double kReadShare = 0.8;
 
 /// What bounds a load, taken on the UI thread when it starts.
 struct LoadLimits {
-  std::uint64_t budget = 0;  ///< bytes
+  std::uint64_t budget = 0;  ///< bytes this file may take (loadShare), 0: no budget
   double voxel = 0.02;       ///< subsample voxel, metres
   std::filesystem::path cache_root;  ///< level-of-detail caches (lodCacheRoot)
 };
 
-LoadLimits loadLimits(AppContext& app) {
+LoadLimits loadLimits(AppContext& app, std::size_t point_files) {
   const PipelineParams params = app.registration ? app.registration->params() : PipelineParams{};
-  return {memoryBudget(app), subsampleVoxel(params), lodCacheRoot()};
+  return {loadShare(app, point_files), subsampleVoxel(params), lodCacheRoot()};
+}
+
+/// The files among `paths` that hold points, who share what the budget leaves (a .ply may
+/// still turn out to be a mesh: it then leaves its share unused).
+std::size_t pointFileCount(const QStringList& paths) {
+  return static_cast<std::size_t>(std::count_if(paths.begin(), paths.end(), [](const QString& p) {
+    return !isModelFormat(formatFromExtension(p.toStdString()));
+  }));
 }
 
 /// The subsample from the file's level-of-detail cache when a valid one exists (a reopen:
@@ -96,6 +108,7 @@ LoadedData readWithin(const std::string& path, const LoadLimits& limits, Progres
 Loaded readAndPrepare(const std::string& path, const LoadLimits& limits, Progress& progress) {
   Progress reading = progress.sub(0.0, kReadShare);
   Loaded out;
+  out.budget_share = limits.budget;
   LoadedData data = readWithin(path, limits, reading, out);
   if (auto* dataset = std::get_if<Dataset>(&data)) {
     out.dataset = std::make_shared<const Dataset>(std::move(*dataset));
@@ -123,16 +136,17 @@ Layer& addLoaded(AppContext& app, Loaded& data, const QString& path) {
                      .arg(scans));
     if (data.subsampled) {
       dataset_layer.setSubsampledFrom(*data.subsampled);
-      app.log.warning(QObject::tr("%1 holds %2 points: showing it whole would exceed the memory "
-                                  "budget (%3 GB), so it is shown and registered as a %4 cm voxel "
-                                  "subsample; exports read the whole file")
+      app.log.warning(QObject::tr("%1 holds %2 points: showing it whole would exceed its part of the "
+                                  "memory budget (%3 of %4 GB), so it is shown and registered as a "
+                                  "%5 cm voxel subsample; exports read the whole file")
                           .arg(QFileInfo(path).fileName())
                           .arg(data.subsampled->points_in_file)
-                          .arg(double(memoryBudget(app)) / (1024.0 * 1024.0 * 1024.0), 0, 'f', 1)
+                          .arg(gigabytes(data.budget_share), 0, 'f', 2)
+                          .arg(gigabytes(memoryBudget(app)), 0, 'f', 2)
                           .arg(data.subsampled->voxel * 100.0, 0, 'f', 1));
       if (!data.subsample_route.isEmpty())
         app.log.info(QObject::tr("%1: the subsample was %2").arg(QFileInfo(path).fileName(), data.subsample_route));
-      startDetailCache(app, dataset_layer);  // full resolution where the view needs it
+      startDetailCache(app, dataset_layer, data.budget_share);  // full resolution where the view needs it
     }
   } else {
     const auto triangles = data.model->mesh.triangleCount();
@@ -152,12 +166,16 @@ Layer& addLoaded(AppContext& app, Loaded& data, const QString& path) {
 }  // namespace
 
 void loadFiles(AppContext& app, const QStringList& paths, OnLoaded on_loaded, OnFileDone on_done) {
+  const LoadLimits limits = loadLimits(app, pointFileCount(paths));
   for (const QString& path : paths) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
+    // Held until the file is a layer (then its points count in heldBytes) or has failed.
+    const std::uint64_t reserved = isModelFormat(formatFromExtension(path.toStdString())) ? 0 : limits.budget;
+    app.loads_reserved += reserved;
     app.log.info(QObject::tr("Loading %1").arg(absolute));
     Task* task = app.tasks.run(
         QObject::tr("Loading %1").arg(QFileInfo(path).fileName()),
-        [&app, absolute, path, on_loaded, limits = loadLimits(app)](Progress& progress) -> Task::Apply {
+        [&app, absolute, path, on_loaded, limits](Progress& progress) -> Task::Apply {
           auto data = std::make_shared<Loaded>(readAndPrepare(absolute.toStdString(), limits, progress));
           return [&app, data, absolute, path, on_loaded] {
             Layer& layer = addLoaded(app, *data, absolute);
@@ -165,7 +183,8 @@ void loadFiles(AppContext& app, const QStringList& paths, OnLoaded on_loaded, On
           };
         });
     QObject::connect(task, &Task::finished, &app.log,
-                     [&app, absolute, path, on_done](bool ok, const QString& msg) {
+                     [&app, absolute, path, on_done, reserved](bool ok, const QString& msg) {
+                       app.loads_reserved -= std::min(app.loads_reserved, reserved);
                        if (!ok) app.log.error(QObject::tr("Cannot load %1: %2").arg(absolute, msg));
                        if (on_done) on_done(path, ok);
                      });

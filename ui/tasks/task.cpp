@@ -1,5 +1,6 @@
 #include "ui/tasks/task.hpp"
 
+#include <QThreadPool>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "common/error.hpp"
@@ -25,9 +26,9 @@ Task::~Task() {
   }
 }
 
-void Task::start() {
+void Task::start(QThreadPool* pool) {
   poll_.start();
-  watcher_.setFuture(QtConcurrent::run([this] {
+  watcher_.setFuture(QtConcurrent::run(pool ? pool : QThreadPool::globalInstance(), [this] {
     try {
       apply_ = work_(progress_);
     } catch (const Canceled&) {

@@ -1,10 +1,20 @@
 #include "ui/tasks/task_manager.hpp"
 
+#include <QThread>
+
 #include <algorithm>
 
 namespace plumb::ui {
 
-TaskManager::TaskManager(QObject* parent) : QObject(parent) {}
+TaskManager::TaskManager(QObject* parent) : QObject(parent) {
+  pool_.setMaxThreadCount(QThread::idealThreadCount());
+}
+
+TaskManager::~TaskManager() {
+  // The tasks (children, deleted after this body) hold their workers: stop them first.
+  cancelAll();
+  pool_.waitForDone();
+}
 
 Task* TaskManager::run(const QString& title, Task::Work work, std::vector<LayerRef> holds) {
   auto* task = new Task(title, std::move(work), this);
@@ -18,7 +28,7 @@ Task* TaskManager::run(const QString& title, Task::Work work, std::vector<LayerR
     if (tasks_.empty()) emit idle();
   });
   emit taskStarted(task);
-  task->start();
+  task->start(&pool_);
   return task;
 }
 

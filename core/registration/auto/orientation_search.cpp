@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -138,6 +139,15 @@ void sortForMethod(std::vector<Hypothesis>& pool, const std::vector<bool>& same_
   pool = std::move(sorted);
 }
 
+/// The runner-up of one up direction's answer when it scores within the method's gap of it
+/// (that direction's own result is ambiguous): under a gable roof the right up direction can
+/// come with the half-turned yaw first, and its runner-up is the truth.
+std::optional<Hypothesis> closeRunnerUp(const GlobalRegistrationResult& g, const PipelineParams& p) {
+  if (!g.runner_up || g.score <= 0) return std::nullopt;
+  if ((g.score - g.runner_up->score) / g.score >= minGapOf(g.method, p)) return std::nullopt;
+  return g.runner_up;
+}
+
 /// The best up direction's result with every other up direction's answer as a runner-up or
 /// further hypothesis; ambiguous when one of them scores within the method's gap.
 GlobalRegistrationResult mergeOrientations(std::vector<OrientedResult> results,
@@ -161,6 +171,9 @@ GlobalRegistrationResult mergeOrientations(std::vector<OrientedResult> results,
     if (!hasAnswer(o.global)) continue;
     pool.push_back({o.global.transform, o.global.score, "up " + vec(o.up) + ": " + o.global.method});
     best.orientation_answers.push_back(pool.back());
+    if (const auto second = closeRunnerUp(o.global, p))  // a symmetric building's other yaw
+      best.orientation_answers.push_back({second->transform, second->score,
+                                          "up " + vec(o.up) + ": " + o.global.method + " runner-up"});
     same_method.push_back(o.global.method == best.method);
     if (same_method.back() && statusRank(o.global) == statusRank(best) && best.score > 0 &&
         (best.score - o.global.score) / best.score < minGapOf(best.method, p))

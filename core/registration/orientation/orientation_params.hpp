@@ -16,7 +16,7 @@ struct OrientationParams {
   SourceOrientation source = SourceOrientation::Auto;
   /// auto: the source looks levelled when a direction of its plane normals lies within this
   /// angle of Z, deg, [0, 45] (the levelled search then allows the same tilt: planes.max-tilt).
-  double level_tolerance_deg = 10.0;
+  double level_tolerance_deg = 3.0;
   /// An axis of the source's plane normals (or segment directions) is an up candidate when it
   /// carries at least this fraction of their weight, [0, 1].
   double min_axis_share = 0.05;

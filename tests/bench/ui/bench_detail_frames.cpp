@@ -11,8 +11,11 @@
 // subsample and the detail drawn in every frame), so the gain is visible.
 // Prints the open time, the frames per second (median and worst frame) and the peak RSS.
 //
-// usage: xvfb-run -a -s "-screen 0 1600x1200x24" bench_detail_frames FILE [--budget-mb 4096]
-//                  [--frames 30] [--rounds 3]   (PLUMB_LOD_CACHE_DIR: where the cache goes)
+// Several files open together, as a campaign does: they share the budget (loadShare) and the
+// still frame's detail budget; the figures are summed over them.
+//
+// usage: xvfb-run -a -s "-screen 0 1600x1200x24" bench_detail_frames FILE... [--budget-mb 4096]
+//                  [--frames 30] [--rounds 3]   (PLUMB_LOD_CACHE_DIR: where the caches go)
 #include <QApplication>
 #include <QElapsedTimer>
 
@@ -29,6 +32,7 @@
 #include "ui/app_context.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/lod/detail_controller.hpp"
 #include "ui/lod/detail_layer.hpp"
 #include "ui/main_window.hpp"
 #include "ui/panels/log_panel.hpp"
@@ -74,76 +78,124 @@ DetailLayer* detailOf(DatasetLayer& layer) {
   return nullptr;
 }
 
+struct Options {
+  QStringList files;
+  double budget_mb = 4096;
+  int frames = 30, rounds = 3;
+};
+
+Options parse(int argc, char** argv) {
+  Options o;
+  int i = 1;
+  for (; i < argc && std::strncmp(argv[i], "--", 2) != 0; ++i) o.files << argv[i];
+  for (; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--budget-mb")) o.budget_mb = std::stod(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--frames")) o.frames = std::stoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--rounds")) o.rounds = std::stoi(argv[i + 1]);
+  }
+  return o;
+}
+
+/// The opened files' layers and their detail layers (one each once their caches are ready).
+struct Opened {
+  std::vector<DatasetLayer*> layers;
+  std::vector<DetailLayer*> details;
+  std::size_t subsample_points() const {
+    std::size_t n = 0;
+    for (const DatasetLayer* l : layers) n += l->dataset().pointCount();
+    return n;
+  }
+  std::size_t detail_points() const {
+    std::size_t n = 0;
+    for (const DetailLayer* d : details) n += d->drawnPointCount();
+    return n;
+  }
+  std::vector<std::vector<std::uint32_t>> drawn_nodes() const {
+    std::vector<std::vector<std::uint32_t>> v;
+    for (const DetailLayer* d : details) v.push_back(d->drawn().nodes);
+    return v;
+  }
+};
+
+std::vector<DatasetLayer*> datasetLayers(Scene& scene) {
+  std::vector<DatasetLayer*> out;
+  for (const auto& l : scene.layers())
+    if (auto* d = dynamic_cast<DatasetLayer*>(l.get())) out.push_back(d);
+  return out;
+}
+
+bool allDetailed(const std::vector<DatasetLayer*>& layers) {
+  return std::all_of(layers.begin(), layers.end(), [](DatasetLayer* l) { return detailOf(*l) != nullptr; });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   setDefaultSurfaceFormat();
   QApplication app(argc, argv);
-  if (argc < 2) {
-    std::fprintf(stderr, "usage: bench_detail_frames FILE [--budget-mb MB] [--frames N] [--rounds N]\n");
+  const Options o = parse(argc, argv);
+  if (o.files.isEmpty()) {
+    std::fprintf(stderr, "usage: bench_detail_frames FILE... [--budget-mb MB] [--frames N] [--rounds N]\n");
     return 2;
-  }
-  const QString file = argv[1];
-  double budget_mb = 4096;
-  int frames = 30, rounds = 3;
-  for (int i = 2; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--budget-mb")) budget_mb = std::stod(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--frames")) frames = std::stoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--rounds")) rounds = std::stoi(argv[i + 1]);
   }
   MainWindow window;
   window.resize(1600, 1000);
   window.show();
   AppContext& ctx = window.context();
-  ctx.registration->params().memory.budget_mb = budget_mb;
+  ctx.registration->params().memory.budget_mb = o.budget_mb;
   auto* lod = window.findChild<LodController*>();
-  if (!lod) return 2;
+  auto* details = window.findChild<DetailController*>();
+  if (!lod || !details) return 2;
   ctx.view.setFrameTiming(true);
 
   QElapsedTimer open;
   open.start();
-  window.openFiles({file});
-  waitUntil([&] { return !ctx.scene.layers().empty(); }, 600);
+  window.openFiles(o.files);
+  const auto files = static_cast<std::size_t>(o.files.size());
+  waitUntil([&] { return !ctx.scene.layers().empty(); }, 1800);
   const double first_view_s = double(open.elapsed()) / 1000.0;
-  auto* layer = ctx.scene.layers().empty() ? nullptr : dynamic_cast<DatasetLayer*>(ctx.scene.layers()[0].get());
-  if (!layer) {
-    std::fprintf(stderr, "%s did not open:\n%s\n", argv[1], qPrintable(ctx.log.toPlainText()));
+  waitUntil([&] { return datasetLayers(ctx.scene).size() == files || ctx.tasks.runningCount() == 0; }, 3600);
+  const double all_open_s = double(open.elapsed()) / 1000.0;
+  Opened opened{datasetLayers(ctx.scene), {}};
+  if (opened.layers.size() != files) {
+    std::fprintf(stderr, "%zu of %zu files opened:\n%s\n", opened.layers.size(), files, qPrintable(ctx.log.toPlainText()));
     return 1;
   }
-  waitUntil([&] { return detailOf(*layer) != nullptr; }, 1800);
-  DetailLayer* detail = detailOf(*layer);
+  waitUntil([&] { return allDetailed(opened.layers); }, 7200);
   const double cache_s = double(open.elapsed()) / 1000.0;
-  if (!detail) {
-    std::fprintf(stderr, "no detail layer:\n%s\n", qPrintable(ctx.log.toPlainText()));
+  if (!allDetailed(opened.layers)) {
+    std::fprintf(stderr, "a file has no detail layer:\n%s\n", qPrintable(ctx.log.toPlainText()));
     return 1;
   }
-  waitUntil([&] { return (ctx.view.requestRender(), detail->drawnPointCount() > 0); }, 120);
-  std::printf("bench_detail_frames: %s, budget %.0f MB\n", argv[1], budget_mb);
-  std::printf("  opened as a subsample of %zu points, first view %.1f s; detail cache ready at %.1f s; "
-              "detail drawn: %zu points\n",
-              layer->dataset().pointCount(), first_view_s, cache_s, detail->drawnPointCount());
+  for (DatasetLayer* l : opened.layers) opened.details.push_back(detailOf(*l));
+  waitUntil([&] { return (ctx.view.requestRender(), opened.detail_points() > 0 && !details->loading()); }, 120);
+  std::printf("bench_detail_frames: %zu file(s) (%s ...), budget %.0f MB\n", files, qPrintable(o.files.front()), o.budget_mb);
+  std::printf("  opened as subsamples of %zu points in all; first view %.1f s, every file open %.1f s; "
+              "detail caches ready at %.1f s; detail drawn: %zu points\n",
+              opened.subsample_points(), first_view_s, all_open_s, cache_s, opened.detail_points());
   std::printf("  %-7s | %-24s | %-30s | %s\n", "round", "moving (LoD)", "still: detail back after",
               "orbit without LoD (whole subsample + detail)");
-  for (int r = 0; r < rounds; ++r) {
+  for (int r = 0; r < o.rounds; ++r) {
     lod->startMoving();
-    const Frames moving = orbit(ctx.view, ctx.scene, frames);
+    const Frames moving = orbit(ctx.view, ctx.scene, o.frames);
     lod->stopMoving();
     QElapsedTimer still;
     still.start();
     lod->showStill();
-    const std::vector<std::uint32_t> before = detail->drawn().nodes;
-    waitUntil([&] { return detail->drawn().nodes != before && detail->drawnPointCount() > 0; }, 120);
+    const auto before = opened.drawn_nodes();
+    waitUntil([&] { return opened.drawn_nodes() != before && !details->loading() && opened.detail_points() > 0; }, 120);
     const double still_s = double(still.elapsed()) / 1000.0;
-    const std::size_t detail_points = detail->drawnPointCount();
+    const std::size_t detail_points = opened.detail_points();
     lod->setFullDetailWhenStill(true);  // the peer: every subsample point (and the detail) each frame
     lod->showStill();
-    const Frames full = orbit(ctx.view, ctx.scene, std::max(3, frames / 5));
+    const Frames full = orbit(ctx.view, ctx.scene, std::max(3, o.frames / 5));
     lod->setFullDetailWhenStill(false);
     std::printf("  %-7d | %5.1f fps (%4.0f / %4.0f ms) %7zu pts | %5.2f s, %8zu detail points | "
                 "%5.1f fps (%5.0f / %5.0f ms) %9zu + %zu pts\n",
                 r, moving.fps(), moving.median, moving.worst, moving.drawn, still_s, detail_points,
-                full.fps(), full.median, full.worst, full.drawn, detail->drawnPointCount());
+                full.fps(), full.median, full.worst, full.drawn, opened.detail_points());
   }
   std::printf("  peak RSS %.2f GB\n", double(procKilobytesLine("/proc/self/status", "VmHWM")) / (1024.0 * 1024.0 * 1024.0));
+  std::fprintf(stderr, "desktop log:\n%s\n", qPrintable(ctx.log.toPlainText()));
   return 0;
 }

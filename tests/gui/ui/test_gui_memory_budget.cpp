@@ -4,7 +4,7 @@
 // the whole file through the registration transform, every point kept to 0.1 mm at national-grid
 // coordinates. The file's level-of-detail cache is built in the background and its nodes drawn
 // over the subsample where the view needs them, coloured like the dataset; a second opening
-// reuses the cache.
+// reuses the cache. Files opened together share the budget and the still frame's detail.
 #include <QLabel>
 #include <QSignalSpy>
 #include <QStatusBar>
@@ -21,6 +21,7 @@
 #include "ui/layers/scan_layer.hpp"
 #include "ui/layers/color_ramp.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/lod/detail_controller.hpp"
 #include "ui/lod/detail_layer.hpp"
 #include "ui/panels/memory_status_widget.hpp"
 #include "ui/registration/point_picking.hpp"
@@ -28,6 +29,7 @@
 #include "ui/tasks/export_tasks.hpp"
 #include "ui/tasks/load_budget.hpp"
 #include "ui/tasks/task.hpp"
+#include "ui/view/lod_controller.hpp"
 #include "ui/view/vtk_view_widget.hpp"
 
 using namespace plumb;
@@ -157,6 +159,46 @@ class GuiMemoryBudgetTest : public QObject {
     QCOMPARE(layer->dataset().pointCount(), std::size_t(kColumns) * kRows);
   }
 
+  /// A campaign of files opened together shares the one budget: two files that would each
+  /// open whole alone (330 MB of 400) are both subsamples, together within the budget; a file
+  /// opened afterwards gets what is left. Their details share the still frame's budget.
+  void filesOpenedTogetherShareTheBudget() {
+    AppContext& app = window_->context();
+    const auto dir = test::scratchDir("gui_memory_budget_shared");
+    const auto a = writeGeoGrid(dir / "grid_a.ply"), b = writeGeoGrid(dir / "grid_b.ply");
+    app.registration->params().memory.budget_mb = 400;
+    const std::uint64_t budget = std::uint64_t{400} << 20;
+    QSignalSpy idle(&app.tasks, &TaskManager::idle);
+    window_->openFiles({q(a), q(b)});
+    QVERIFY(idle.wait(120000));
+    QCOMPARE(app.log.errorCount(), 0);
+    QCOMPARE(app.scene.layers().size(), std::size_t{2});
+    for (const auto& l : app.scene.layers()) {
+      auto* layer = dynamic_cast<DatasetLayer*>(l.get());
+      QVERIFY(layer && layer->subsampledFrom().has_value());
+      QVERIFY(layer->dataset().pointCount() <= budget / 2 / kDisplayBytesPerPoint);
+    }
+    QVERIFY2(app.log.toPlainText().contains("its part of the memory budget (0.20 of 0.39 GB)"),
+             qPrintable(app.log.toPlainText()));
+    QCOMPARE(app.loads_reserved, std::uint64_t{0});
+    const std::uint64_t held = heldBytes(app);
+    QVERIFY(held <= budget);
+    // The details of both, after still frames: together within one still frame's budget.
+    QTRY_VERIFY_WITH_TIMEOUT((app.view.requestRender(), detailPoints(app) > 0), 60000);
+    const std::size_t still = window_->findChild<LodController*>()->stillBudget().points();
+    QVERIFY2(detailPoints(app) <= std::max(still, 2 * DetailController::kMinPoints),
+             qPrintable(QString("%1 detail points, still budget %2").arg(detailPoints(app)).arg(still)));
+    // A third file now, which would fit the whole budget alone: what the budget leaves.
+    const auto c = writeGeoGrid(dir / "grid_c.ply");
+    window_->openFiles({q(c)});
+    QVERIFY(idle.wait(120000));
+    QCOMPARE(app.scene.layers().size(), std::size_t{3});
+    auto* third = dynamic_cast<DatasetLayer*>(app.scene.layers()[2].get());
+    QVERIFY(third && third->subsampledFrom().has_value());
+    QVERIFY(third->dataset().pointCount() * kDisplayBytesPerPoint <= budget - held);
+    QVERIFY(heldBytes(app) <= budget);
+  }
+
   void aSecondOpeningReusesTheCache() {
     AppContext& app = window_->context();
     const auto file = test::scratchDir("gui_memory_budget") / "grid.ply";  // written again: new mtime
@@ -226,6 +268,14 @@ class GuiMemoryBudgetTest : public QObject {
     const auto& ramp = detail->drawn().colouring.coloring;
     QVERIFY2(ramp.value_max < 1.5 && ramp.value_min < 0.2,
              qPrintable(QString("detail intensity ramp %1 .. %2").arg(ramp.value_min).arg(ramp.value_max)));
+  }
+
+  static std::size_t detailPoints(AppContext& app) {
+    std::size_t n = 0;
+    for (const auto& l : app.scene.layers())
+      for (const auto& c : l->children())
+        if (c->kind() == LayerKind::Detail) n += static_cast<DetailLayer&>(*c).drawnPointCount();
+    return n;
   }
 
   /// Picking sees the detail: with the subsample's scans hidden, a click at the view's centre

@@ -7,6 +7,9 @@
 // target by bench_ui). The colours shown at the end must be exactly those of the last style
 // requested, checked against colours computed here from the ramps' published anchor values.
 #include <QApplication>
+#include <QProgressBar>
+#include <QThread>
+#include <QThreadPool>
 #include <QElapsedTimer>
 #include <QTest>
 #include <QTimer>
@@ -20,6 +23,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <memory>
 
@@ -127,6 +131,33 @@ std::size_t mismatches(const ScanLayer& scan, const Expected& expected, QString&
 class GuiResponsiveTest : public QObject {
   Q_OBJECT
  private slots:
+  /// Long tasks on every worker (four huge files loading) leave Qt's global thread pool free:
+  /// Qt's raster painting waits for jobs it puts there, so a window painted while the tasks
+  /// held it froze until one finished. A large widget still paints while they run.
+  void longTasksOnEveryWorkerLeaveThePaintingFree() {
+    TaskManager tasks;
+    std::atomic<int> started{0};
+    const int workers = std::max(2, QThread::idealThreadCount());
+    for (int i = 0; i < workers + 1; ++i)
+      tasks.run("long load", [&started](Progress& progress) -> Task::Apply {
+        ++started;
+        while (!progress.canceled()) QThread::msleep(5);
+        checkCanceled(&progress);
+        return {};
+      });
+    QTRY_COMPARE_WITH_TIMEOUT(started.load(), workers, 10000);
+    QCOMPARE(QThreadPool::globalInstance()->activeThreadCount(), 0);
+    QProgressBar bar;
+    bar.resize(1600, 1000);
+    bar.setValue(40);
+    QElapsedTimer painting;
+    painting.start();
+    for (int i = 0; i < 5; ++i) (void)bar.grab();
+    QVERIFY2(painting.elapsed() < 20000, qPrintable(QString("%1 ms to paint").arg(painting.elapsed())));
+    tasks.cancelAll();
+    QTRY_COMPARE_WITH_TIMEOUT(tasks.runningCount(), 0, 10000);
+  }
+
   void largeLayerIsPreparedAndRecolouredOffTheUiThread() {
     vtkNew<vtkRenderer> renderer;
     Scene scene(renderer);
