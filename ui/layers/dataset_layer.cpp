@@ -141,6 +141,7 @@ void DatasetLayer::clearDistances() {
   for (ScanLayer* s : scans()) s->setDistances({}, DistanceScale{});
   if (style_.mode == PointColorMode::Distance) style_.mode = mode_before_distances_;
   has_distances_ = false;
+  distance_reference_.reset();
   colours_stale_ = true;
 }
 

@@ -24,6 +24,8 @@ class TaskManager;
 
 /// A dataset opened as a voxel subsample because showing it whole would exceed the memory
 /// budget (ui/tasks/load_budget.hpp): what the file holds and how it was thinned.
+struct DetailDistances;  // ui/lod/detail_points.hpp
+
 struct SubsampledFrom {
   std::uint64_t points_in_file = 0;  ///< points the file delivered
   double voxel = 0;                  ///< voxel edge of the subsample, metres
@@ -85,6 +87,10 @@ class DatasetLayer : public Layer {
   std::vector<std::shared_ptr<const std::vector<float>>> distances() const;
   /// Drops the distances; the colour mode goes back to the one before them.
   void clearDistances();
+  /// What the distances shown were measured to (DistanceCheck): the detail of a subsampled file
+  /// measures its own points to it. Cleared with the distances.
+  void setDistanceReference(std::shared_ptr<const DetailDistances> reference) { distance_reference_ = std::move(reference); }
+  const std::shared_ptr<const DetailDistances>& distanceReference() const { return distance_reference_; }
   /// The colour mode without the distances: style().mode, or the one before them.
   PointColorMode modeWithoutDistances() const {
     return style_.mode == PointColorMode::Distance ? mode_before_distances_ : style_.mode;
@@ -133,6 +139,7 @@ class DatasetLayer : public Layer {
   RigidTransform transform_;
   bool shows_transform_ = true;
   bool has_distances_ = false;
+  std::shared_ptr<const DetailDistances> distance_reference_;
   PointColorMode mode_before_distances_ = PointColorMode::Rgb;
   bool colours_stale_ = false;
   std::size_t dataset_colour_index_ = 0;

@@ -47,6 +47,8 @@ DetailColouring colouringOf(const DatasetLayer& dataset, const DetailLayer& deta
   c.coloring.z_min = b.min.z();
   c.coloring.z_max = b.max.z();
   std::tie(c.coloring.value_min, c.coloring.value_max) = intensityRange(dataset.dataset());
+  if (c.coloring.style.mode == PointColorMode::Distance) c.distances = dataset.distanceReference();
+  c.to_world = detail.datasetTransform();
   return c;
 }
 
@@ -70,17 +72,18 @@ void DetailController::refresh() {
   // One still frame's budget for all files: a campaign of several files draws (and holds) no
   // more detail than one.
   const std::size_t budget = shown.empty() ? 0 : lod_.stillBudget().points() / shown.size();
-  for (auto [dataset, detail] : shown) refreshLayer(*dataset, *detail, std::clamp(budget, kMinPoints, kMaxPoints));
+  for (auto [dataset, detail] : shown)
+    refreshLayer(*dataset, *detail, {std::clamp(budget, kMinPoints, kMaxPoints), shown.size()});
 }
 
-void DetailController::refreshLayer(DatasetLayer& dataset, DetailLayer& detail, std::size_t point_budget) {
+void DetailController::refreshLayer(DatasetLayer& dataset, DetailLayer& detail, Share share) {
   if (loading_.count(&detail)) return;
   VtkViewWidget& view = app_.view;
   const double dpr = view.devicePixelRatioF();
   const CameraState camera = cameraState(*view.renderer()->GetActiveCamera(), int(view.width() * dpr),
                                          int(view.height() * dpr));
   LodSelectParams select;
-  select.point_budget = point_budget;
+  select.point_budget = share.points;
   const LodView lod_view = lodViewInDataset(camera, app_.scene.origin(), detail.datasetTransform());
   std::vector<std::uint32_t> nodes = selectLodNodes(detail.cache()->hierarchy(), lod_view, select).nodes;
   const DetailColouring colouring = colouringOf(dataset, detail);
@@ -90,8 +93,10 @@ void DetailController::refreshLayer(DatasetLayer& dataset, DetailLayer& detail, 
   const Layer* key = &detail;
   Task* task = app_.tasks.run(
       tr("Loading detail of %1").arg(dataset.name()),
-      [cache = detail.cache(), nodes = std::move(nodes), colouring, held, this](Progress& progress) -> Task::Apply {
+      [cache = detail.cache(), nodes = std::move(nodes), colouring, held, share, this](Progress& progress) -> Task::Apply {
         auto points = std::make_shared<DetailPoints>(loadDetailPoints(*cache, nodes, colouring, &progress));
+        points->point_budget = share.points;
+        points->layers_sharing = share.layers;
         return [points, held, this] {
           if (auto* target = static_cast<DetailLayer*>(held.get())) {
             target->show(std::move(*points));

@@ -37,7 +37,12 @@ class DetailController : public QObject {
   void detailShown();
 
  private:
-  void refreshLayer(DatasetLayer& dataset, DetailLayer& detail, std::size_t point_budget);
+  /// One layer's part of the still frame's budget.
+  struct Share {
+    std::size_t points = 0;
+    std::size_t layers = 1;  ///< visible detail layers sharing the budget
+  };
+  void refreshLayer(DatasetLayer& dataset, DetailLayer& detail, Share share);
   AppContext& app_;
   LodController& lod_;
   std::map<const Layer*, bool> loading_;  ///< detail layers with a load running

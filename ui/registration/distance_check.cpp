@@ -4,6 +4,7 @@
 #include <QObject>
 
 #include "ui/layers/dataset_layer.hpp"
+#include "ui/lod/detail_points.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/panels/histogram_widget.hpp"
 #include "ui/registration/registration_tasks.hpp"
@@ -51,6 +52,9 @@ void DistanceCheck::show(std::shared_ptr<const LayerDistances> d, DatasetLayer& 
   target_ = LayerRef(const_cast<Layer&>(target));
   const DistanceScale scale{max, distances_->signed_values};
   source.setDistances(distances_->per_scan, scale);
+  if (distances_->target)
+    source.setDistanceReference(std::make_shared<const DetailDistances>(
+        DetailDistances{distances_->target, distances_->params, scale}));
   scene_.layerChanged(&source);
   legend_->show(scale, scale.signed_values ? QObject::tr("Signed distance (m)\n+ in front, - behind")
                                            : QObject::tr("Distance (m)"));

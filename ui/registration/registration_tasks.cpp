@@ -115,10 +115,11 @@ Task* startDistanceComputation(AppContext& app, Layer& source, Layer& target,
   return app.tasks.run(QObject::tr("Distances %1 to %2").arg(s.name, t.name), [s, t, src, tgt, params, done](
                                                                                    Progress& progress) {
     // The target in world as registration sees it: its sensor origins orient the signs.
-    const RegistrationInput in_t = inputOf(t, t.to_world);
     auto out = std::make_shared<LayerDistances>();
+    out->target = std::make_shared<const RegistrationInput>(inputOf(t, t.to_world));
+    out->params = params;
     static_cast<DatasetDistances&>(*out) =
-        datasetDistances(*s.dataset, s.to_world, distanceTarget(in_t), params, &progress);
+        datasetDistances(*s.dataset, s.to_world, distanceTarget(*out->target), params, &progress);
     return [s, t, src, tgt, out, done] {
       Layer& source = stillThere(src, s.name, "the distance computation");
       Layer& target = stillThere(tgt, t.name, "the distance computation");

@@ -54,8 +54,12 @@ Task* startRegistration(AppContext& app, Layer& source, Layer& target, const Pip
                         const ModelElementFilter& target_elements = {});
 
 /// Per-scan distances of a dataset layer to the target (cloud-to-cloud for a dataset,
-/// cloud-to-mesh for a model), as shown (current transforms).
-struct LayerDistances : DatasetDistances {};
+/// cloud-to-mesh for a model), as shown (current transforms), with the target they were
+/// measured to (in world) and how: the source's full-resolution detail is coloured the same way.
+struct LayerDistances : DatasetDistances {
+  std::shared_ptr<const RegistrationInput> target;
+  DistanceParams params;
+};
 using DistancesDone = std::function<void(std::shared_ptr<const LayerDistances> distances,
                                          DatasetLayer& source, Layer& target)>;
 Task* startDistanceComputation(AppContext& app, Layer& source, Layer& target,

@@ -5,12 +5,14 @@
 // the peak RSS.
 //
 //   bench_registration [--poses N] [--scenarios a,b,...] [--no-peers] [--no-big] [--big-only]
-//                      [--tilted] [--smoke] [--step DEG] [--fpfh-voxel M] [--fpfh-radius M] [--sac-iterations N]
+//                      [--tilted] [--methods planes,openings,segments] [--smoke] [--step DEG] [--fpfh-voxel M] [--fpfh-radius M] [--sac-iterations N]
 // Plumb runs end to end per case (source features from the moved cloud, target features
 // extracted once, like the acceptance test); each peer prepares its target once too (thinning,
 // normals, FPFH) and is timed on the source side + registration. Peers start from the initial
 // pose (ICP, GICP) or search globally (FPFH + SampleConsensusPrerejective, then ICP).
 // --tilted adds a row per scenario: Plumb on as many poses with any 3D rotation (issue 14).
+// --methods planes,openings,segments adds a row per method forced (register --method), beside
+// auto, on the same poses: what each method alone achieves on scan-to-BIM (issue 14's table).
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
@@ -122,9 +124,22 @@ Row runTilted(const Scenario& s, int poses, std::uint64_t seed) {
   return row;
 }
 
+/// Plumb with `method` forced on one case (a row beside auto's).
+void runForcedMethods(const Scenario& s, const RigidTransform& pose, const std::vector<RegistrationMethod>& methods,
+                      std::vector<Row>& rows, std::size_t first_row) {
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    PipelineParams forced = acceptanceParams();
+    forced.method = methods[m];
+    const CaseOutcome o = runPlumbCase(s, pose, forced);
+    rows[first_row + m].add(o.reported_success, o.error, o.seconds_total);
+    std::printf(" | %s %s %.4f/%.4f %.1fs", methodName(methods[m]).c_str(), o.reported_success ? "success" : "FAILED",
+                o.error.rotation_deg, o.error.translation_m, o.seconds_total);
+  }
+}
+
 /// Returns Plumb's row.
 Row runScenario(const std::string& name, int poses, bool peers, bool tilted,
-                const bench::PeerParams& pp) {
+                const std::vector<RegistrationMethod>& methods, const bench::PeerParams& pp) {
   const PipelineParams params = acceptanceParams();
   const Scenario s = makeScenario(name, params);
   const PointCloud& peer_target = s.isBim() ? s.target_samples : s.target;
@@ -144,6 +159,8 @@ Row runScenario(const std::string& name, int poses, bool peers, bool tilted,
   const std::vector<Peer> peer_list{Peer::Icp, Peer::Gicp, Peer::FpfhRansac};
   if (peers)
     for (Peer p : peer_list) rows.push_back({bench::peerName(p)});
+  const std::size_t method_rows = rows.size();
+  for (RegistrationMethod m : methods) rows.push_back({"Plumb " + methodName(m)});
   const auto cases = randomPoses(poses, 1000 + std::hash<std::string>{}(name) % 1000);
   for (int i = 0; i < poses; ++i) {
     const RigidTransform& pose = cases[i];
@@ -164,6 +181,7 @@ Row runScenario(const std::string& name, int poses, bool peers, bool tilted,
                     po.returned ? "ret" : "none", e.rotation_deg, e.translation_m, po.seconds);
       }
     }
+    runForcedMethods(s, pose, methods, rows, method_rows);
     std::printf("\n");
     std::fflush(stdout);
   }
@@ -277,6 +295,7 @@ int main(int argc, char** argv) {
   bool peers = true, big = true, tables = true, smoke = false, tilted = false;
   double step = 0.42;  // deg: ~300k returns per station in the rooms of "house"
   std::vector<std::string> names = scenarioNames();
+  std::vector<RegistrationMethod> methods;
   bench::PeerParams pp;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -292,6 +311,10 @@ int main(int argc, char** argv) {
     } else if (a == "--no-peers") peers = false;
     else if (a == "--no-big") big = false;
     else if (a == "--tilted") tilted = true;
+    else if (a == "--methods") {
+      std::stringstream ss(next());
+      for (std::string m; std::getline(ss, m, ',');) methods.push_back(methodFromName(m));
+    }
     else if (a == "--big-only") tables = false;
     else if (a == "--step") step = std::stod(next());
     else if (a == "--fpfh-voxel") pp.fpfh_voxel = std::stod(next());
@@ -308,7 +331,7 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: bench_registration [--poses N] [--scenarios a,b] [--no-peers] "
-                   "[--no-big] [--big-only] [--tilted] [--step DEG] [--smoke] [--fpfh-voxel M] "
+                   "[--no-big] [--big-only] [--tilted] [--methods a,b] [--step DEG] [--smoke] [--fpfh-voxel M] "
                    "[--fpfh-radius M] [--sac-iterations N]\n");
       return 2;
     }
@@ -322,7 +345,7 @@ int main(int argc, char** argv) {
   int plumb_failures = 0;
   if (tables)
     for (const auto& n : names) {
-      const Row plumb = runScenario(n, poses, peers, tilted, pp);
+      const Row plumb = runScenario(n, poses, peers, tilted, methods, pp);
       plumb_failures += plumb.cases - plumb.correct;
     }
   // The smoke run (CTest) fails when Plumb misses its indoor-indoor case.
