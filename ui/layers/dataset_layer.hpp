@@ -22,10 +22,10 @@ class ScanLayer;
 class Task;
 class TaskManager;
 
-/// A dataset opened as a voxel subsample because showing it whole would exceed the memory
-/// budget (ui/tasks/load_budget.hpp): what the file holds and how it was thinned.
 struct DetailDistances;  // ui/lod/detail_points.hpp
 
+/// A dataset opened as a voxel subsample because showing it whole would exceed the memory
+/// budget (ui/tasks/load_budget.hpp): what the file holds and how it was thinned.
 struct SubsampledFrom {
   std::uint64_t points_in_file = 0;  ///< points the file delivered
   double voxel = 0;                  ///< voxel edge of the subsample, metres

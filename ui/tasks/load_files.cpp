@@ -67,13 +67,9 @@ LoadLimits loadLimits(AppContext& app, std::size_t point_files) {
   return {loadShare(app, point_files), subsampleVoxel(params), lodCacheRoot()};
 }
 
-/// The files among `paths` that hold points, who share what the budget leaves (a .ply may
-/// still turn out to be a mesh: it then leaves its share unused).
-std::size_t pointFileCount(const QStringList& paths) {
-  return static_cast<std::size_t>(std::count_if(paths.begin(), paths.end(), [](const QString& p) {
-    return !isModelFormat(formatFromExtension(p.toStdString()));
-  }));
-}
+/// A file that holds points, by its extension: the point files opened together share what the
+/// budget leaves (a .ply may still turn out to be a mesh: it then leaves its share unused).
+bool holdsPoints(const QString& path) { return !isModelFormat(formatFromExtension(path.toStdString())); }
 
 /// The subsample from the file's level-of-detail cache when a valid one exists (a reopen:
 /// seconds instead of streaming the file), else nullopt; `route` says which and why.
@@ -166,11 +162,12 @@ Layer& addLoaded(AppContext& app, Loaded& data, const QString& path) {
 }  // namespace
 
 void loadFiles(AppContext& app, const QStringList& paths, OnLoaded on_loaded, OnFileDone on_done) {
-  const LoadLimits limits = loadLimits(app, pointFileCount(paths));
+  const LoadLimits limits =
+      loadLimits(app, static_cast<std::size_t>(std::count_if(paths.begin(), paths.end(), holdsPoints)));
   for (const QString& path : paths) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
     // Held until the file is a layer (then its points count in heldBytes) or has failed.
-    const std::uint64_t reserved = isModelFormat(formatFromExtension(path.toStdString())) ? 0 : limits.budget;
+    const std::uint64_t reserved = holdsPoints(path) ? limits.budget : 0;
     app.loads_reserved += reserved;
     app.log.info(QObject::tr("Loading %1").arg(absolute));
     Task* task = app.tasks.run(

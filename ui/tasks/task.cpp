@@ -26,9 +26,9 @@ Task::~Task() {
   }
 }
 
-void Task::start(QThreadPool* pool) {
+void Task::start(QThreadPool& pool) {
   poll_.start();
-  watcher_.setFuture(QtConcurrent::run(pool ? pool : QThreadPool::globalInstance(), [this] {
+  watcher_.setFuture(QtConcurrent::run(&pool, [this] {
     try {
       apply_ = work_(progress_);
     } catch (const Canceled&) {

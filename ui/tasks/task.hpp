@@ -1,18 +1,19 @@
 #pragma once
-// A long operation run off the UI thread (QGIS-style task): the work function runs on a
-// thread pool (the TaskManager's own, never Qt's global pool, see task_manager.hpp) with a plumb::Progress it reports to and checks for cancellation; it returns a
-// continuation that is applied on the UI thread (e.g. adding the loaded layer). Progress is
-// polled from the UI thread, so the worker never touches widgets and nothing pumps events.
+// A long operation run off the UI thread (QGIS-style task): the work function runs on the
+// TaskManager's thread pool (never Qt's global pool, see task_manager.hpp) with a
+// plumb::Progress it reports to and checks for cancellation; it returns a continuation that
+// is applied on the UI thread (e.g. adding the loaded layer). Progress is polled from the UI
+// thread, so the worker never touches widgets and nothing pumps events.
 #include <QFutureWatcher>
 #include <QObject>
 #include <QString>
 #include <QTimer>
 
-class QThreadPool;
-
 #include <functional>
 
 #include "common/progress.hpp"
+
+class QThreadPool;
 
 namespace plumb::ui {
 
@@ -27,8 +28,8 @@ class Task : public QObject {
   ~Task() override;
 
   const QString& title() const { return title_; }
-  /// Runs the work on `pool` (Qt's global pool when null).
-  void start(QThreadPool* pool = nullptr);
+  /// Runs the work on `pool`.
+  void start(QThreadPool& pool);
   void cancel();
   bool isRunning() const;
   double fraction() const { return progress_.fraction(); }

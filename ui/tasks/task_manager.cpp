@@ -28,7 +28,7 @@ Task* TaskManager::run(const QString& title, Task::Work work, std::vector<LayerR
     if (tasks_.empty()) emit idle();
   });
   emit taskStarted(task);
-  task->start(&pool_);
+  task->start(pool_);
   return task;
 }
 
