@@ -193,7 +193,8 @@ namespace {
 std::unique_ptr<RefineTarget> refinementTarget(const RegistrationSide& target, const PipelineParams& p,
                                                const RefineParams& rp, PointCloud& storage,
                                                std::vector<std::string>& log) {
-  if (!target.isModel()) return target.cloud ? std::make_unique<RefineTarget>(*target.cloud, rp) : nullptr;
+  if (!target.isModel())
+    return target.cloud ? std::make_unique<RefineTarget>(*target.cloud, rp, target.viewpoint) : nullptr;
   if (rp.model_surface == RefineParams::ModelSurface::Triangles &&
       rp.method == RefineParams::Method::PointToPlane) {
     log.push_back("refinement: against the model's triangles (closest point on the triangles the "
@@ -317,14 +318,15 @@ std::vector<Hypothesis> copiesOf(const PointCloud& sc, const PointCloud& tc,
 
 /// The global answer refined, then (when `compare`) the runner-up, the further distinct
 /// hypotheses and the best placement elsewhere, refined without the slide test (only compared).
-std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const RefineTarget& prepared,
+std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const std::optional<Eigen::Vector3d>& vp,
+                                                const RefineTarget& prepared,
                                                 const RefineParams& rp, PipelineResult& out,
                                                 bool target_is_model, const PipelineParams& p,
                                                 bool compare, Progress* progress) {
   const GlobalRegistrationResult& g = out.global;
   std::vector<RefinedHypothesis> h;
   h.push_back({Hypothesis{g.transform, g.score, "global answer"},
-               refineRegistration(sc, prepared, g.transform, rp, progress)});
+               refineRegistration(sc, prepared, g.transform, rp, progress, vp)});
   if (!compare) return h;
   std::vector<Hypothesis> others;
   if (g.runner_up) others.push_back(*g.runner_up);
@@ -339,7 +341,7 @@ std::vector<RefinedHypothesis> refineHypotheses(const PointCloud& sc, const Refi
     if (!listed) others.push_back(a);
   }
   for (const Hypothesis& o : others)
-    h.push_back({o, refineRegistration(sc, prepared, o.transform, comparedParams(rp), progress)});
+    h.push_back({o, refineRegistration(sc, prepared, o.transform, comparedParams(rp), progress, vp)});
   return h;
 }
 
@@ -367,7 +369,8 @@ bool alreadyRefined(const Hypothesis& copy, const std::vector<RefinedHypothesis>
 
 /// Refines the copies of h[centre] (copy_search.hpp) that no hypothesis has reached yet and
 /// appends them; returns how many were appended.
-std::size_t addCopies(const PointCloud& sc, const PointCloud& tc, const RefineTarget& prepared,
+std::size_t addCopies(const PointCloud& sc, const std::optional<Eigen::Vector3d>& vp,
+                      const PointCloud& tc, const RefineTarget& prepared,
                       const RefineParams& rp, std::size_t centre, bool up_estimated,
                       const PipelineParams& p, std::vector<RefinedHypothesis>& h,
                       std::vector<std::string>& log, Progress* progress) {
@@ -375,7 +378,7 @@ std::size_t addCopies(const PointCloud& sc, const PointCloud& tc, const RefineTa
   std::size_t added = 0;
   for (const Hypothesis& c : copiesOf(sc, tc, h[centre].refined.transform, up_estimated, p, log)) {
     if (alreadyRefined(c, h, centroid, p.candidates.copy_cell)) continue;
-    h.push_back({c, refineRegistration(sc, prepared, c.transform, comparedParams(rp), progress)});
+    h.push_back({c, refineRegistration(sc, prepared, c.transform, comparedParams(rp), progress, vp)});
     ++added;
   }
   return added;
@@ -404,13 +407,14 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
   if (g.method == "icp") tc = nullptr;
   const bool compare = p.candidates.refine_runner_up && (g.runner_up || tc);
   std::vector<RefinedHypothesis> h =
-      refineHypotheses(*sc, prepared, rp, out, target.isModel(), p, compare, progress);
+      refineHypotheses(*sc, source.viewpoint, prepared, rp, out, target.isModel(), p, compare, progress);
   std::size_t centre = bestFitting(h);
-  if (compare && tc) addCopies(*sc, *tc, prepared, rp, centre, g.up_estimated, p, h, out.log, progress);
+  if (compare && tc)
+    addCopies(*sc, source.viewpoint, *tc, prepared, rp, centre, g.up_estimated, p, h, out.log, progress);
   const PointCloud structure =
       compare ? structurePoints(*sc, out.source_features.planes, p.visibility.structure_min_area)
               : PointCloud{};
-  measureStructureOverlap(structure, prepared, rp, h);
+  measureStructureOverlap(structure, source.viewpoint, prepared, rp, h);
   const bool global_chose = g.ok();
   const Eigen::Vector3d centroid = sc->bounds().center();
   auto select = [&] {
@@ -427,14 +431,17 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
        ++round) {
     centre = sel.chosen;
     const std::size_t before = h.size();
-    if (addCopies(*sc, *tc, prepared, rp, centre, g.up_estimated, p, h, out.log, progress) == 0) break;
-    measureStructureOverlap(structure, prepared, rp, h, before);
+    if (addCopies(*sc, source.viewpoint, *tc, prepared, rp, centre, g.up_estimated, p, h, out.log,
+                  progress) == 0)
+      break;
+    measureStructureOverlap(structure, source.viewpoint, prepared, rp, h, before);
     sel = select();
   }
   out.candidates = sel.candidates;
   if (compare) out.log.push_back(sel.message);
   if (sel.chosen != 0) {
-    h[sel.chosen].refined = refineRegistration(*sc, prepared, h[sel.chosen].refined.transform, rp, progress);
+    h[sel.chosen].refined =
+        refineRegistration(*sc, prepared, h[sel.chosen].refined.transform, rp, progress, source.viewpoint);
     g.transform = h[sel.chosen].hypothesis.transform;
     g.score = h[sel.chosen].hypothesis.score;
     g.runner_up = h[0].hypothesis;
@@ -452,6 +459,9 @@ void refineCandidates(const RegistrationSide& source, const RegistrationSide& ta
     out.log.push_back("refinement: the source has no sensor origins, so the model triangles it "
                       "saw are unknown: matched against every triangle whose front faces the "
                       "point (" + std::to_string(out.refinement->target_points) + " triangles)");
+  else if (out.refinement->surface == "points both stations see")
+    out.log.push_back("refinement: matched only on surfaces both stations see (the target point's "
+                      "front faces its own station and the source point's)");
   else if (out.refinement->surface == "visible triangles")
     out.log.push_back("refinement: matched against the " + std::to_string(out.refinement->target_points) +
                       " model triangles the source's stations see");

@@ -14,7 +14,8 @@ PointCloud structurePoints(const PointCloud& source, const std::vector<PlanarPol
   return source.subset(indices);
 }
 
-void measureStructureOverlap(const PointCloud& structure, const RefineTarget& target,
+void measureStructureOverlap(const PointCloud& structure, const std::optional<Eigen::Vector3d>& viewpoint,
+                             const RefineTarget& target,
                              const RefineParams& params, std::vector<RefinedHypothesis>& h, std::size_t first) {
   if (structure.empty()) return;
   RefineParams measure = params;
@@ -22,7 +23,7 @@ void measureStructureOverlap(const PointCloud& structure, const RefineTarget& ta
   measure.slide_test = false;
   for (std::size_t i = first; i < h.size(); ++i)
     h[i].refined.structure_overlap =
-        refineRegistration(structure, target, h[i].refined.transform, measure).overlap;
+        refineRegistration(structure, target, h[i].refined.transform, measure, nullptr, viewpoint).overlap;
 }
 
 }  // namespace plumb

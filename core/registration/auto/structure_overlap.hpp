@@ -22,8 +22,10 @@ PointCloud structurePoints(const PointCloud& source, const std::vector<PlanarPol
 
 /// Sets RefineResult::structure_overlap of every hypothesis from index `first` on: the overlap of `structure` under
 /// its refined transform, measured as the refinement measures its own overlap (same target,
-/// same distances, no iteration). Leaves it unmeasured (< 0) when `structure` is empty.
-void measureStructureOverlap(const PointCloud& structure, const RefineTarget& target,
+/// same distances, no iteration; `viewpoint`: the source's scanner when its points carry no
+/// sensor origins). Leaves it unmeasured (< 0) when `structure` is empty.
+void measureStructureOverlap(const PointCloud& structure, const std::optional<Eigen::Vector3d>& viewpoint,
+                             const RefineTarget& target,
                              const RefineParams& params, std::vector<RefinedHypothesis>& h,
                              std::size_t first = 0);
 

@@ -33,9 +33,11 @@ struct RefineResult {
   double structure_overlap = -1.0;
   std::size_t source_points = 0;  ///< used (after thinning)
   std::size_t target_points = 0;  ///< used: thinned target points, or visible triangles
-  /// What the source was matched against: "points" (a scan or model samples), "visible
-  /// triangles" (a model, visibility from the source's sensor origins) or "front-facing
-  /// triangles" (a model, the source has no sensor origins).
+  /// What the source was matched against: "points" (a scan or model samples), "points both
+  /// stations see" (a scan, both sides' stations known: the target point's front faces its own
+  /// station and the source point's), "visible triangles" (a model, visibility from the
+  /// source's sensor origins) or "front-facing triangles" (a model, the source has no sensor
+  /// origins).
   std::string surface = "points";
   double visibility_seconds = 0.0;  ///< spent finding the visible triangles (a model target)
   /// Normal matrix sum J^T J of the final point-to-plane problem, J = [(p x n)/L, n], rotation

@@ -16,12 +16,22 @@ namespace plumb::refine_detail {
 
 namespace {
 
+/// The surface point matched to source point i placed at x; `placed` moves a local-frame point
+/// the way x was moved (its viewer goes with it).
+template <typename Place>
+bool matchPoint(const TargetSurface& surface, SourceViewers viewers, std::size_t i,
+                const Eigen::Vector3d& x, const Place& placed, double max_d, Eigen::Vector3d& q,
+                Eigen::Vector3d& n) {
+  if (!viewers) return surface.nearest(x, max_d, q, n);
+  return surface.nearestSeenFrom(x, placed((*viewers)[i]), max_d, q, n);
+}
+
 /// Mean capped point-to-plane cost, min(r^2, d^2) / d^2, of every source point placed by
 /// (R, t) and then moved by (dR, dt) about `centre`; a point without a surface point within
 /// `gate` costs 1.
 double slideCost(const Cloud& src, const TargetSurface& surface, const Eigen::Matrix3d& R,
                  const Eigen::Vector3d& t, const Eigen::Vector3d& centre, const Eigen::Matrix3d& dR,
-                 const Eigen::Vector3d& dt, double d, double gate) {
+                 const Eigen::Vector3d& dt, double d, double gate, SourceViewers viewers) {
   const double d2 = d * d;
   // Deterministic reduce: the same chunks summed in the same order on every run, so the cost
   // (and the candidates compared on it) do not change with thread timing.
@@ -29,11 +39,13 @@ double slideCost(const Cloud& src, const TargetSurface& surface, const Eigen::Ma
              tbb::blocked_range<std::size_t>(0, src.size(), 512), 0.0,
              [&](const auto& range, double sum) {
                Eigen::Vector3d q, n;
+               const auto placed = [&](const Eigen::Vector3d& v) {
+                 return Eigen::Vector3d(dR * (R * v + t - centre) + centre + dt);
+               };
                for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                 const Eigen::Vector3d x0 = R * src[i].getVector3fMap().cast<double>() + t;
-                 const Eigen::Vector3d x = dR * (x0 - centre) + centre + dt;
+                 const Eigen::Vector3d x = placed(src[i].getVector3fMap().cast<double>());
                  double r2 = d2;
-                 if (surface.nearest(x, gate, q, n)) {
+                 if (matchPoint(surface, viewers, i, x, placed, gate, q, n)) {
                    const double r = n.dot(x - q);
                    r2 = std::min(r * r, d2);
                  }
@@ -55,10 +67,12 @@ double slideGate(double final_distance) {
 /// res.fit_cost (the cost unmoved), over the overlap ratio.
 std::array<double, 6> slideResistance(const Cloud& src, const TargetSurface& surface,
                                       const LocalPose& pose, const Eigen::Vector3d& centre,
-                                      const RefineResult& res, double final_distance) {
+                                      const RefineResult& res, double final_distance,
+                                      SourceViewers viewers) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(res.normal_matrix);
   auto cost = [&](const Eigen::Matrix3d& dR, const Eigen::Vector3d& dt) {
-    return slideCost(src, surface, pose.R, pose.t, centre, dR, dt, final_distance, slideGate(final_distance));
+    return slideCost(src, surface, pose.R, pose.t, centre, dR, dt, final_distance,
+                     slideGate(final_distance), viewers);
   };
   const double base = res.fit_cost;
   std::array<double, 6> out{};
@@ -80,15 +94,16 @@ std::array<double, 6> slideResistance(const Cloud& src, const TargetSurface& sur
 /// within max_d with the normal there; in source order.
 std::vector<PlaneCorrespondence> findCorrespondences(const Cloud& src, const TargetSurface& surface,
                                                      const LocalPose& pose, std::size_t step,
-                                                     double max_d) {
+                                                     double max_d, SourceViewers viewers) {
   const std::size_t n = (src.size() + step - 1) / step;
   std::vector<PlaneCorrespondence> c(n);
   std::vector<char> valid(n, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512), [&](const auto& range) {
     Eigen::Vector3d y, nn;
+    const auto placed = [&](const Eigen::Vector3d& v) { return Eigen::Vector3d(pose.R * v + pose.t); };
     for (std::size_t i = range.begin(); i < range.end(); ++i) {
-      const Eigen::Vector3d x = pose.R * src[i * step].getVector3fMap().cast<double>() + pose.t;
-      if (!surface.nearest(x, max_d, y, nn)) continue;
+      const Eigen::Vector3d x = placed(src[i * step].getVector3fMap().cast<double>());
+      if (!matchPoint(surface, viewers, i * step, x, placed, max_d, y, nn)) continue;
       c[i] = {x, y, nn, nn.dot(x - y)};
       valid[i] = 1;
     }
@@ -104,10 +119,11 @@ std::vector<PlaneCorrespondence> findCorrespondences(const Cloud& src, const Tar
 /// max_d: up to p.iterations steps (factor, reduction, optimizer: point_to_plane.hpp) until a
 /// step is small, which sets out.converged (it stays set for the later stages).
 void pointToPlaneStage(const Cloud& src, const TargetSurface& surface, const RefineParams& p,
-                       double max_d, std::size_t step, LoopOutcome& out, Progress* progress) {
+                       double max_d, std::size_t step, LoopOutcome& out, Progress* progress,
+                       SourceViewers viewers) {
   for (int it = 0; it < p.iterations; ++it) {
     checkCanceled(progress);
-    auto c = findCorrespondences(src, surface, out.pose, step, max_d);
+    auto c = findCorrespondences(src, surface, out.pose, step, max_d, viewers);
     trimCorrespondences(c, p.trim_fraction, p.trim_per_direction);
     huberWeights(c, p.huber);
     if (c.size() < 6) break;
@@ -126,23 +142,24 @@ void pointToPlaneStage(const Cloud& src, const TargetSurface& surface, const Ref
 }  // namespace
 
 LoopOutcome runPointToPlane(const Cloud& src, const SurfaceAt& surface, const RefineParams& p,
-                            Progress* progress) {
+                            Progress* progress, SourceViewers viewers) {
   const int stages = std::max(1, p.stages);
   LoopOutcome out;
   for (int st = 0; st < stages; ++st) {
     const TargetSurface& s = surface(out.pose);
     pointToPlaneStage(src, s, p, stageDistance(p.start_distance, p.final_distance, stages, st),
-                      st + 1 < stages ? 4 : 1, out, progress);
+                      st + 1 < stages ? 4 : 1, out, progress, viewers);
     reportProgress(progress, 0.1 + 0.8 * (st + 1) / stages, "refine: ICP");
   }
   return out;
 }
 
 void measureFit(const Cloud& src, const TargetSurface& surface, const LocalPose& pose,
-                const Eigen::Vector3d& origin, const RefineParams& p, RefineResult& res) {
+                const Eigen::Vector3d& origin, const RefineParams& p, RefineResult& res,
+                SourceViewers viewers) {
   // Inliers: a surface point within max(final distance, 0.15 m) (sparse or thinned targets)
   // and a point-to-plane residual below the final distance.
-  auto c = findCorrespondences(src, surface, pose, 1, std::max(p.final_distance, 0.15));
+  auto c = findCorrespondences(src, surface, pose, 1, std::max(p.final_distance, 0.15), viewers);
   const InlierFigures f = inlierFigures(c, p.final_distance);
   res.inliers = f.inliers;
   res.rms = f.rms;
@@ -151,9 +168,9 @@ void measureFit(const Cloud& src, const TargetSurface& surface, const LocalPose&
   res.normal_matrix = f.normal_matrix;
   res.centre = f.centre + origin;
   res.fit_cost = slideCost(src, surface, pose.R, pose.t, f.centre, Eigen::Matrix3d::Identity(),
-                           Eigen::Vector3d::Zero(), p.final_distance, slideGate(p.final_distance));
+                           Eigen::Vector3d::Zero(), p.final_distance, slideGate(p.final_distance), viewers);
   if (!c.empty() && p.slide_test)
-    res.direction_resistance = slideResistance(src, surface, pose, f.centre, res, p.final_distance);
+    res.direction_resistance = slideResistance(src, surface, pose, f.centre, res, p.final_distance, viewers);
 }
 
 }  // namespace plumb::refine_detail

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <vector>
 
 #include "common/progress.hpp"
 #include "registration/common/refine_result.hpp"
@@ -30,16 +31,22 @@ struct LoopOutcome {
   bool converged = false;
 };
 
+/// The sensor origin of each source point (local frame, aligned with the source cloud) when
+/// correspondences must be surfaces both stations saw (TargetSurface::nearestSeenFrom); null:
+/// the nearest surface point, whichever side of it was seen.
+using SourceViewers = const std::vector<Eigen::Vector3d>*;
+
 /// Coarse-to-fine point-to-plane ICP: stages of shrinking correspondence distance, early
 /// stages on a regular quarter of the source points, the last on all of them. Converged when a
 /// step of some stage was small.
 LoopOutcome runPointToPlane(const Cloud& src, const SurfaceAt& surface, const RefineParams& p,
-                            Progress* progress);
+                            Progress* progress, SourceViewers viewers = nullptr);
 
 /// Final figures at `pose` (untrimmed: the overlap is what it is): inliers, RMS, overlap,
 /// normal matrix, fit cost and (p.slide_test) the slide resistance, into res. `origin`: world
 /// position of the local frame's origin.
 void measureFit(const Cloud& src, const TargetSurface& surface, const LocalPose& pose,
-                const Eigen::Vector3d& origin, const RefineParams& p, RefineResult& res);
+                const Eigen::Vector3d& origin, const RefineParams& p, RefineResult& res,
+                SourceViewers viewers = nullptr);
 
 }  // namespace plumb::refine_detail

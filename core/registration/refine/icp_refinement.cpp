@@ -38,6 +38,9 @@ const ParamSchema<RefineParams>& RefineParams::schema() {
           .boolean(&P::trim_per_direction, "trim-per-direction", "Trim per direction",
                    "Keep the trim fraction within each wall / floor direction, so that the "
                    "points constraining one direction are never trimmed away together", true)
+          .boolean(&P::both_stations, "both-stations", "Seen from both stations",
+                   "Scan to scan: match only surfaces whose front faces both the target's and "
+                   "the source's station (never a wall's other face)", true)
           .real(&P::huber, "huber", "Huber threshold", "m", 0.0, 1.0,
                 "Residuals beyond this get a Huber weight (0: trimming only)", true);
   return s;
@@ -81,19 +84,50 @@ struct RefineTarget::Data {
   Cloud::Ptr cloud;        ///< thinned target, local frame (a point target)
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
   std::vector<Eigen::Vector3d> normals;
+  /// A point target's normals face the stations that saw each point (visibility rule on).
+  bool oriented = false;
   std::unique_ptr<refine_detail::PointSurface> points;
   std::unique_ptr<refine_detail::TriangleTarget> triangles;  ///< a model target
 };
 
-RefineTarget::RefineTarget(const PointCloud& target, const RefineParams& p) : d_(std::make_unique<Data>()) {
+namespace {
+
+/// The station that saw each thinned target point (local frame): the sensor origin of the first
+/// point of its voxel, or the single viewpoint; empty when neither is known.
+std::vector<Eigen::Vector3f> targetStations(const PointCloud& target, const std::vector<std::uint32_t>& first,
+                                            const std::optional<Eigen::Vector3d>& viewpoint,
+                                            const Eigen::Vector3d& origin) {
+  std::vector<Eigen::Vector3f> out;
+  if (target.hasSensorOrigins()) {
+    out.reserve(first.size());
+    for (const std::uint32_t i : first)
+      out.push_back((target.offset + target.sensor_origins[i].cast<double>() - origin).cast<float>());
+  } else if (viewpoint) {
+    out.assign(first.size(), (*viewpoint - origin).cast<float>());
+  }
+  return out;
+}
+
+}  // namespace
+
+RefineTarget::RefineTarget(const PointCloud& target, const RefineParams& p,
+                           const std::optional<Eigen::Vector3d>& viewpoint)
+    : d_(std::make_unique<Data>()) {
   if (target.empty()) throw InputError("refinement needs two non-empty clouds");
   d_->origin = target.bounds().center();
   d_->voxel_size = p.voxel_size;
   // Work in a frame centred on the target: x_local = x_world - origin.
-  d_->cloud = refine_detail::toPcl(target, RigidTransform(), d_->origin, p.voxel_size);
+  std::vector<std::uint32_t> first;
+  const bool stations_known = target.hasSensorOrigins() || viewpoint.has_value();
+  d_->cloud = refine_detail::toPcl(target, RigidTransform(), d_->origin, p.voxel_size,
+                                   stations_known ? &first : nullptr);
   d_->tree.setInputCloud(d_->cloud);
   d_->normals = refine_detail::targetNormals(*d_->cloud, d_->tree, p.voxel_size);
-  d_->points = std::make_unique<refine_detail::PointSurface>(*d_->cloud, d_->tree, d_->normals);
+  if (stations_known) {
+    refine_detail::orientTowards(*d_->cloud, targetStations(target, first, viewpoint, d_->origin), d_->normals);
+    d_->oriented = true;
+  }
+  d_->points = std::make_unique<refine_detail::PointSurface>(*d_->cloud, d_->tree, d_->normals, d_->oriented);
 }
 
 RefineTarget::RefineTarget(const TriangleMesh& mesh, const RefineParams& p) : d_(std::make_unique<Data>()) {
@@ -120,15 +154,21 @@ namespace {
 /// of its voxel) when the source has them and `rays` is given.
 Cloud::Ptr usedSourcePoints(const PointCloud& source, const RigidTransform& initial,
                             const Eigen::Vector3d& origin, const RefineParams& p,
-                            refine_detail::SourceRays* rays = nullptr) {
+                            refine_detail::SourceRays* rays = nullptr,
+                            const std::optional<Eigen::Vector3d>& viewpoint = std::nullopt) {
   std::vector<std::uint32_t> first;
   const bool with_origins = rays && source.hasSensorOrigins();
+  const bool with_viewpoint = rays && !with_origins && viewpoint;
   Cloud::Ptr src_all = refine_detail::toPcl(source, initial, origin, p.voxel_size, with_origins ? &first : nullptr);
   Cloud::Ptr src(new Cloud);
   const std::size_t stride =
       std::max<std::size_t>(1, (src_all->size() + p.max_source_points - 1) / p.max_source_points);
   for (std::size_t i = 0; i < src_all->size(); i += stride) {
     src->push_back((*src_all)[i]);
+    if (with_viewpoint) {
+      rays->points.push_back((*src_all)[i].getVector3fMap().cast<double>());
+      rays->origins.push_back(initial.apply(*viewpoint) - origin);
+    }
     if (!with_origins) continue;
     rays->points.push_back((*src_all)[i].getVector3fMap().cast<double>());
     const Eigen::Vector3d o = source.offset + source.sensor_origins[first[i]].cast<double>();
@@ -218,7 +258,7 @@ RefineResult refineOnTriangles(const PointCloud& source, const RefineTarget::Dat
 
 RefineResult refineRegistration(const PointCloud& source, const RefineTarget& prepared,
                                 const RigidTransform& initial, const RefineParams& p,
-                                Progress* progress) {
+                                Progress* progress, const std::optional<Eigen::Vector3d>& source_viewpoint) {
   if (source.empty()) throw InputError("refinement needs two non-empty clouds");
   const RefineTarget::Data& d = prepared.data();
   if (p.voxel_size != d.voxel_size)
@@ -230,7 +270,11 @@ RefineResult refineRegistration(const PointCloud& source, const RefineTarget& pr
     return res;
   }
   RefineResult res;
-  const Cloud::Ptr src = usedSourcePoints(source, initial, d.origin, p);
+  // Both sides' stations known: correspondences on surfaces both stations saw.
+  refine_detail::SourceRays rays;
+  const bool seen = d.oriented && p.both_stations && p.method == RefineParams::Method::PointToPlane;
+  const Cloud::Ptr src = usedSourcePoints(source, initial, d.origin, p, seen ? &rays : nullptr, source_viewpoint);
+  const refine_detail::SourceViewers viewers = rays.origins.empty() ? nullptr : &rays.origins;
   res.source_points = src->size();
   res.target_points = d.cloud->size();
   if (src->size() < 10 || d.cloud->size() < 10) throw InputError("refinement: too few points");
@@ -240,10 +284,11 @@ RefineResult refineRegistration(const PointCloud& source, const RefineTarget& pr
           ? runGicp(src, d.cloud, p, progress)
           : refine_detail::runPointToPlane(
                 *src, [&surface](const LocalPose&) -> const refine_detail::TargetSurface& { return surface; },
-                p, progress);
+                p, progress, viewers);
   res.iterations = loop.iterations;
   res.converged = loop.converged;
-  refine_detail::measureFit(*src, surface, loop.pose, d.origin, p, res);
+  refine_detail::measureFit(*src, surface, loop.pose, d.origin, p, res, viewers);
+  if (viewers) res.surface = "points both stations see";
   finish(res, loop.pose, d.origin, initial, p);
   reportProgress(progress, 1.0, "refine: done");
   return res;

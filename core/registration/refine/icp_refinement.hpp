@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "common/params.hpp"
 #include "common/progress.hpp"
@@ -55,6 +56,11 @@ struct RefineParams {
   /// Apply trim_fraction within each normal-direction class (floors/ceilings, walls by
   /// azimuth) rather than over all correspondences (point_to_plane.hpp). Default on.
   bool trim_per_direction = true;
+  /// Scan targets whose stations are known (sensor origins or a viewpoint), sources too: match
+  /// only surfaces both stations see (the target point's front faces its own station and the
+  /// source point's: RefineTarget). Off: the nearest target point, whichever side of it was
+  /// seen (the behaviour before issue 14).
+  bool both_stations = true;
   /// Measure RefineResult::direction_resistance (the slide test: 12 more passes over the
   /// source points). Not a user setting (not in the schema: a report without it would find
   /// every direction unconstrained): the pipeline turns it off for the runner-up candidates
@@ -76,8 +82,14 @@ RefineResult refineRegistration(const PointCloud& source, const PointCloud& targ
 /// with the RefineParams::voxel_size it is then refined with.
 class RefineTarget {
  public:
-  /// Throws InputError for an empty cloud.
-  RefineTarget(const PointCloud& target, const RefineParams& params);
+  /// Throws InputError for an empty cloud. When the target's stations are known (per-point
+  /// sensor origins, else `viewpoint`: the scanner of a single static scan, world), each
+  /// target point's normal is turned towards the station that saw it, and a source that has
+  /// stations too is matched only to surfaces both stations saw (the other face of a wall, a
+  /// partition's far side and surfaces behind the source's station are never correspondences;
+  /// RefineResult::surface says "points both stations see").
+  RefineTarget(const PointCloud& target, const RefineParams& params,
+               const std::optional<Eigen::Vector3d>& viewpoint = std::nullopt);
   /// A model surface: point-to-triangle correspondences, in the first (coarsest) stage on
   /// every triangle, then on the triangles the source's stations see (rays from its sensor
   /// origins, found again at each stage); without sensor origins, every triangle whose front
@@ -95,9 +107,12 @@ class RefineTarget {
 };
 
 /// As above, against a prepared target (same result as with the cloud it was prepared from).
+/// `source_viewpoint` (world, before `initial`): the scanner of a source without per-point
+/// sensor origins, for the visibility rule of a point target whose stations are known.
 RefineResult refineRegistration(const PointCloud& source, const RefineTarget& target,
                                 const RigidTransform& initial, const RefineParams& params,
-                                Progress* progress = nullptr);
+                                Progress* progress = nullptr,
+                                const std::optional<Eigen::Vector3d>& source_viewpoint = std::nullopt);
 
 /// Points on a mesh surface, about one per `spacing`^2 of area, with the triangle normals;
 /// deterministic for a seed.

@@ -30,19 +30,32 @@ Cloud::Ptr toPcl(const PointCloud& c, const RigidTransform& t, const Eigen::Vect
 std::vector<Eigen::Vector3d> targetNormals(const Cloud& c, const pcl::KdTreeFLANN<pcl::PointXYZ>& tree,
                                            double voxel);
 
-/// The nearest target point (kd-tree) with its normal.
+/// Turns each finite normal to face the sensor origin its point was seen from (`origins`, one
+/// per point, local frame), so that its front side is the side the target's station saw.
+void orientTowards(const Cloud& c, const std::vector<Eigen::Vector3f>& origins,
+                   std::vector<Eigen::Vector3d>& normals);
+
+/// The nearest target point (kd-tree) with its normal. With `oriented` (normals turned towards
+/// the target's own stations, orientTowards), nearestSeenFrom keeps only points whose front
+/// side faces the source point's station as well.
 class PointSurface final : public TargetSurface {
  public:
   PointSurface(const Cloud& cloud, const pcl::KdTreeFLANN<pcl::PointXYZ>& tree,
-               const std::vector<Eigen::Vector3d>& normals)
-      : cloud_(cloud), tree_(tree), normals_(normals) {}
+               const std::vector<Eigen::Vector3d>& normals, bool oriented = false)
+      : cloud_(cloud), tree_(tree), normals_(normals), oriented_(oriented) {}
   bool nearest(const Eigen::Vector3d& x, double max_d, Eigen::Vector3d& q,
                Eigen::Vector3d& n) const override;
+  /// The nearest point within max_d whose front faces `viewer`, among the kSeenCandidates
+  /// nearest, then the 8 kSeenCandidates nearest (false beyond).
+  bool nearestSeenFrom(const Eigen::Vector3d& x, const Eigen::Vector3d& viewer, double max_d,
+                       Eigen::Vector3d& q, Eigen::Vector3d& n) const override;
+  static constexpr int kSeenCandidates = 8;
 
  private:
   const Cloud& cloud_;
   const pcl::KdTreeFLANN<pcl::PointXYZ>& tree_;
   const std::vector<Eigen::Vector3d>& normals_;
+  bool oriented_;
 };
 
 }  // namespace plumb::refine_detail

@@ -5,7 +5,10 @@
 // the peak RSS.
 //
 //   bench_registration [--poses N] [--scenarios a,b,...] [--no-peers] [--no-big] [--big-only]
-//                      [--tilted] [--methods planes,openings,segments] [--smoke] [--step DEG] [--fpfh-voxel M] [--fpfh-radius M] [--sac-iterations N]
+//                      [--tilted] [--methods planes,openings,segments] [--smoke] [--step DEG]
+//                      [--set GROUP.KEY=VALUE] [--fpfh-voxel M] [--fpfh-radius M] [--sac-iterations N]
+// --set changes a registration parameter of every Plumb run (as plumb-cli register --set), e.g.
+// refinement.both-stations=false for the refinement without the visibility rule.
 // Plumb runs end to end per case (source features from the moved cloud, target features
 // extracted once, like the acceptance test); each peer prepares its target once too (thinning,
 // normals, FPFH) and is timed on the source side + registration. Peers start from the initial
@@ -31,6 +34,7 @@
 #include "acceptance_scenarios.hpp"
 #include "model/dataset.hpp"
 #include "support/pcl_peers.hpp"
+#include "registration/auto/pipeline_param_groups.hpp"
 #include "registration/auto/registration_input.hpp"
 #include "simulation/building_generator.hpp"
 #include "simulation/presets.hpp"
@@ -43,6 +47,15 @@ using namespace plumb::test;
 using plumb::bench::Peer;
 
 namespace {
+
+/// --set GROUP.KEY=VALUE settings, applied to every Plumb run (the acceptance parameters).
+std::vector<std::pair<std::string, std::string>> g_settings;
+
+PipelineParams benchParams() {
+  PipelineParams p = acceptanceParams();
+  for (const auto& [key, value] : g_settings) setPipelineParam(p, key, value);
+  return p;
+}
 
 std::string loadavg() {
   std::ifstream f("/proc/loadavg");
@@ -113,7 +126,7 @@ void printTable(const std::string& scenario, const std::string& info, const std:
 Row runTilted(const Scenario& s, int poses, std::uint64_t seed) {
   Row row{"Plumb auto, any 3D rot"};
   for (const RigidTransform& pose : randomPoses3d(poses, seed)) {
-    const CaseOutcome o = runPlumbCase(s, pose, acceptanceParams());
+    const CaseOutcome o = runPlumbCase(s, pose, benchParams());
     row.add(o.reported_success, o.error, o.seconds_total);
     const double tilt = std::acos(std::clamp(pose.rotation()(2, 2), -1.0, 1.0)) * 180.0 / M_PI;
     std::printf("  [%s tilted %.0f deg] Plumb %s %s rot %.4f trans %.4f  %.2f s\n", s.name.c_str(),
@@ -128,7 +141,7 @@ Row runTilted(const Scenario& s, int poses, std::uint64_t seed) {
 void runForcedMethods(const Scenario& s, const RigidTransform& pose, const std::vector<RegistrationMethod>& methods,
                       std::vector<Row>& rows, std::size_t first_row) {
   for (std::size_t m = 0; m < methods.size(); ++m) {
-    PipelineParams forced = acceptanceParams();
+    PipelineParams forced = benchParams();
     forced.method = methods[m];
     const CaseOutcome o = runPlumbCase(s, pose, forced);
     rows[first_row + m].add(o.reported_success, o.error, o.seconds_total);
@@ -140,7 +153,7 @@ void runForcedMethods(const Scenario& s, const RigidTransform& pose, const std::
 /// Returns Plumb's row.
 Row runScenario(const std::string& name, int poses, bool peers, bool tilted,
                 const std::vector<RegistrationMethod>& methods, const bench::PeerParams& pp) {
-  const PipelineParams params = acceptanceParams();
+  const PipelineParams params = benchParams();
   const Scenario s = makeScenario(name, params);
   const PointCloud& peer_target = s.isBim() ? s.target_samples : s.target;
   std::ostringstream info;
@@ -317,6 +330,12 @@ int main(int argc, char** argv) {
     }
     else if (a == "--big-only") tables = false;
     else if (a == "--step") step = std::stod(next());
+    else if (a == "--set") {  // GROUP.KEY=VALUE, as plumb-cli register --set
+      const std::string kv = next();
+      const auto eq = kv.find('=');
+      if (eq == std::string::npos) throw std::runtime_error("--set expects GROUP.KEY=VALUE");
+      g_settings.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+    }
     else if (a == "--fpfh-voxel") pp.fpfh_voxel = std::stod(next());
     else if (a == "--fpfh-radius") {  // feature radius; normals at half of it
       pp.feature_radius = std::stod(next());
@@ -331,7 +350,7 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: bench_registration [--poses N] [--scenarios a,b] [--no-peers] "
-                   "[--no-big] [--big-only] [--tilted] [--methods a,b] [--step DEG] [--smoke] [--fpfh-voxel M] "
+                   "[--no-big] [--big-only] [--tilted] [--methods a,b] [--step DEG] [--set GROUP.KEY=VALUE] [--smoke] [--fpfh-voxel M] "
                    "[--fpfh-radius M] [--sac-iterations N]\n");
       return 2;
     }

@@ -3,6 +3,8 @@
 // that the ThreadSanitizer run (tests/unit/tsan) builds little.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "registration/refine/icp_refinement.hpp"
 #include "unit/registration/refine_scenes.hpp"
 #include "unit/registration/synthetic_building.hpp"
@@ -62,4 +64,97 @@ TEST(IcpRefinement, SameInputsGiveBitIdenticalFiguresOnEveryRun) {
     EXPECT_EQ(again.direction_resistance, first.direction_resistance) << "run " << run;
     EXPECT_EQ(again.transform.matrix(), first.transform.matrix()) << "run " << run;
   }
+}
+
+namespace {
+
+/// Points every `step` m on the axis-aligned rectangle from `a` to `b` (one coordinate equal),
+/// seen from `station` (their sensor origin), with 1 mm of noise.
+void addFace(PointCloud& c, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+             const Eigen::Vector3d& station, std::uint64_t seed, double step = 0.02) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0.0, 0.001);
+  int flat = 0;
+  while (a[flat] != b[flat]) ++flat;
+  const int u = (flat + 1) % 3, v = (flat + 2) % 3;
+  for (double s = a[u]; s <= b[u] + 1e-9; s += step)
+    for (double t = a[v]; t <= b[v] + 1e-9; t += step) {
+      Eigen::Vector3d p = a;
+      p[u] = s;
+      p[v] = t;
+      p[flat] += noise(rng);
+      c.positions.push_back(p.cast<float>());
+      c.sensor_origins.push_back(station.cast<float>());
+    }
+}
+
+/// Two rooms either side of a 20 cm wall (faces x = 0 and x = 0.2), each scanned from its own
+/// station: `west` and `east` select the rooms; a point every `step` m.
+PointCloud twoRoomsScan(bool west, bool east, std::uint64_t seed, double step = 0.02) {
+  PointCloud c;
+  const Eigen::Vector3d a(-2.5, 0.5, 1.5), b(2.7, -0.3, 1.5);
+  if (west) {
+    addFace(c, {0, -3, 0}, {0, 3, 3}, a, seed, step);        // the wall's west face
+    addFace(c, {-3, -3, 0}, {0, 3, 0}, a, seed + 1, step);   // floor
+    addFace(c, {-3, 3, 0}, {0, 3, 3}, a, seed + 2, step);    // north wall
+  }
+  if (east) {
+    addFace(c, {0.2, -3, 0}, {0.2, 3, 3}, b, seed + 3, step);  // the wall's east face
+    addFace(c, {0.2, -3, 0}, {3.2, 3, 0}, b, seed + 4, step);
+    addFace(c, {0.2, 3, 0}, {3.2, 3, 3}, b, seed + 5, step);
+  }
+  return c;
+}
+
+}  // namespace
+
+// Issue 14: scan-to-scan refinement with visibility from both stations. The west room's scan,
+// started 13 cm east of the truth, is nearer the wall's east face (7 cm) than its own (13 cm):
+// nearest-point ICP slides it onto the wrong face; matched only on surfaces both stations
+// see, it comes back to the truth.
+TEST(IcpRefinement, AScanOfOneWallFaceIsNotMatchedToTheOtherFaceSeenFromTheOtherRoom) {
+  const PointCloud target = twoRoomsScan(true, true, 1);
+  const PointCloud source = twoRoomsScan(true, false, 11);
+  const RigidTransform start(Eigen::Matrix3d::Identity(), {0.13, 0.0, 0.0});
+  RefineParams p;
+  p.voxel_size = 0.05;
+  const RefineResult seen = refineRegistration(source, target, start, p);
+  EXPECT_EQ(seen.surface, "points both stations see");
+  EXPECT_LT(RigidTransform::translationError(seen.transform, RigidTransform()), 0.003);
+  EXPECT_LT(seen.rms, 0.003);
+  // The same clouds without sensor origins: nearest points, the wrong face.
+  PointCloud blind_target = target, blind_source = source;
+  blind_target.sensor_origins = {};
+  blind_source.sensor_origins = {};
+  const RefineResult blind = refineRegistration(blind_source, blind_target, start, p);
+  EXPECT_EQ(blind.surface, "points");
+  EXPECT_NEAR(blind.transform.translation().x(), 0.2, 0.01);
+}
+
+// A static scan's single viewpoint stands in for per-point origins, on either side.
+TEST(IcpRefinement, AScanViewpointStandsInForPerPointOrigins) {
+  // Target: the west room, its scanner given as a viewpoint instead of per-point origins.
+  PointCloud target = twoRoomsScan(true, false, 1, 0.05);
+  target.sensor_origins = {};
+  RefineParams p;
+  p.max_source_points = 4000;  // the wall face's points search 64 neighbours each: keep it short
+  const RefineTarget prepared(target, p, Eigen::Vector3d(-2.5, 0.5, 1.5));
+  // Source: the east room, started 15 cm west: its wall face lies 5 cm from the west face,
+  // which its station cannot see. Only the floor and the north wall (seen from both
+  // stations) may match; the wall face never pulls it onto the west face (x = -0.2).
+  PointCloud source = twoRoomsScan(false, true, 3, 0.05);
+  const RigidTransform start(Eigen::Matrix3d::Identity(), {-0.15, 0.0, 0.0});
+  const RefineResult r = refineRegistration(source, prepared, start, p);
+  EXPECT_EQ(r.surface, "points both stations see");
+  EXPECT_GT(std::abs(r.transform.translation().x() + 0.2), 0.05);
+  // The source's scanner given as a viewpoint: the same answer.
+  source.sensor_origins = {};
+  const RefineResult v = refineRegistration(source, prepared, start, p, nullptr,
+                                            Eigen::Vector3d(2.7, -0.3, 1.5));
+  EXPECT_EQ(v.surface, "points both stations see");
+  EXPECT_LT(RigidTransform::translationError(v.transform, r.transform), 1e-4);
+  // Without either, the wall face is matched and pulls the source onto it.
+  const RefineResult blind = refineRegistration(source, prepared, start, p);
+  EXPECT_EQ(blind.surface, "points");
+  EXPECT_NEAR(blind.transform.translation().x(), -0.2, 0.005);
 }

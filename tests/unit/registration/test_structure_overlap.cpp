@@ -58,11 +58,11 @@ TEST(StructureOverlap, TheRightPlacementExplainsTheStructureAShiftedOneDoesNot) 
   const RefineTarget target(r.cloud, rp);
   std::vector<RefinedHypothesis> h(2);
   h[1].refined.transform = RigidTransform::fromYaw(0.0, {0.3, 0.0, 0.0});
-  measureStructureOverlap(structurePoints(r.cloud, r.planes, 4.0), target, rp, h);
+  measureStructureOverlap(structurePoints(r.cloud, r.planes, 4.0), std::nullopt, target, rp, h);
   EXPECT_GT(h[0].refined.structure_overlap, 0.98);
   EXPECT_LT(h[1].refined.structure_overlap, h[0].refined.structure_overlap - 0.02);
   // No structure: nothing measured.
   std::vector<RefinedHypothesis> none(1);
-  measureStructureOverlap(PointCloud{}, target, rp, none);
+  measureStructureOverlap(PointCloud{}, std::nullopt, target, rp, none);
   EXPECT_LT(none[0].refined.structure_overlap, 0.0);
 }
