@@ -1,12 +1,16 @@
 // plumb-cli network INPUTS... [--reference NAME | --model BIM] [-o REGISTERED.e57] [--report R.json|R.html]...
-//   [--transforms DIR] [--set GROUP.KEY=VALUE]... [--seed N] [--print-params]
+//   [--transforms DIR] [--control POINTS.csv --targets SEEN.csv [--grid-scale K | --crs CRS]]
+//   [--plan DIR | --links-from DIR]
+//   [--set GROUP.KEY=VALUE]... [--seed N] [--print-params]
 // Registers the stations of a campaign as one network (issue 15, docs/NETWORK.md): each data3D
 // of each E57 input, and each scan of any other point file, is a station with its own pose.
 // Candidate pairs are registered with the pipeline, then a robust pose-graph adjustment
 // (Ceres, Cauchy loss) places every station relative to the reference (default: the first
 // station), which keeps its pose in its file; with --model, every station is also registered
 // onto the BIM, which is then the reference (the stations come out in the model frame). Links
-// that disagree with the network are flagged and dropped.
+// that disagree with the network are flagged and dropped. With --control and --targets, the
+// adjusted network is georeferenced on the control points (the grid's scale factor applied to
+// them first) and every control and check point's residual is reported (georeference.hpp).
 // Outputs: -o a multi-scan E57 of the stations with their adjusted poses (not merged);
 // --transforms DIR one <station>.json per station (its file frame -> the registered frame);
 // --report R.json / R.html the JSON report (network_report.hpp) or the HTML report to hand over
@@ -14,6 +18,8 @@
 // Exit: 0 every station placed; 3 placed but a kept link disagrees (check visually); 2 a
 // station could not be placed, or is ambiguous (two loop-checked placements): the parts are reported, -o and --transforms are not written
 // (existing files stay untouched); 1 bad input or parameters.
+// Batch: --plan DIR writes the first round's link jobs (network_batch.hpp) and exits 0;
+// --links-from DIR adjusts the network from their reports (no pair is added to a split network).
 // Parameters: --set pair-selection.KEY, link-weights.KEY, pose-graph.KEY, or any registration
 // parameter (GROUP.KEY / KEY as in plumb-cli register) for the links.
 #include <nlohmann/json.hpp>
@@ -24,6 +30,7 @@
 #include <unistd.h>
 
 #include "cli/command.hpp"
+#include "cli/network_batch.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/written_output.hpp"
 #include "common/atomic_file.hpp"
@@ -39,8 +46,36 @@ namespace {
 struct NetworkOptions {
   std::vector<std::string> inputs, settings, reports;
   std::string reference, model, output, transforms, seed;
+  std::string control, targets, crs;  ///< control points, target observations, grid CRS
+  std::string plan, links_from;       ///< batch link jobs: write them / read their reports
+  double grid_scale = 0.0;            ///< 0: from --crs, else 1
+  double target_sigma = 0.002;
   bool print_params = false;
 };
+
+/// The control survey of --control / --targets, its grid scale factor from --grid-scale or
+/// --crs (PROJ, at the control points' centroid); nullopt without --control.
+std::optional<ControlSurvey> loadControl(const NetworkOptions& o) {
+  if (o.control.empty() && o.targets.empty()) {
+    if (!o.crs.empty() || o.grid_scale != 0.0) throw InputError("network: --crs and --grid-scale need --control");
+    return std::nullopt;
+  }
+  if (o.control.empty() || o.targets.empty())
+    throw InputError("network: --control POINTS.csv and --targets OBSERVATIONS.csv go together");
+  if (!o.crs.empty() && o.grid_scale != 0.0) throw InputError("network: give --crs or --grid-scale, not both");
+  if (o.grid_scale != 0.0 && !(o.grid_scale > 0.9 && o.grid_scale < 1.1))
+    throw InputError("network: --grid-scale must lie in (0.9, 1.1) (a map projection's scale factor)");
+  if (!(o.target_sigma >= 1e-5 && o.target_sigma <= 1.0)) throw InputError("network: --target-sigma must lie in [1e-5, 1] m");
+  ControlSurvey c;
+  c.points = readControlPoints(o.control);
+  c.observations = readTargetObservations(o.targets);
+  c.targets_file = o.targets;
+  c.sigma = o.target_sigma;
+  c.grid = makeGridFrame(c.points, 1.0);
+  const double k = !o.crs.empty() ? gridScaleFactor(o.crs, c.grid.origin) : o.grid_scale != 0.0 ? o.grid_scale : 1.0;
+  c.grid = makeGridFrame(c.points, k, o.crs);
+  return c;
+}
 
 NetworkParams loadParams(const NetworkOptions& o) {
   NetworkParams p;
@@ -51,6 +86,9 @@ NetworkParams loadParams(const NetworkOptions& o) {
 }
 
 void checkOutputs(const NetworkOptions& o) {
+  if (!o.plan.empty() && !o.links_from.empty()) throw InputError("network: --plan and --links-from exclude each other");
+  if (!o.plan.empty() && (!o.output.empty() || !o.reports.empty() || !o.transforms.empty() || !o.control.empty()))
+    throw InputError("network: --plan registers nothing: give -o, --report, --transforms and --control with --links-from");
   if (!o.output.empty()) {
     checkOutputPath(o.output, false);
     if (formatFromExtension(o.output) != FileFormat::E57)
@@ -117,6 +155,67 @@ void writeResults(const NetworkOptions& o, const NetworkResult& r, const std::ve
   }
 }
 
+/// Reports, exit code, the reasons of an incomplete network on stderr, and the outputs.
+int finish(const NetworkOptions& o, const NetworkResult& r, const std::vector<Station>& stations,
+           const std::vector<Dataset>& datasets) {
+  const nlohmann::json json_report = networkReportToJson(r, stations);
+  for (const auto& path : o.reports)
+    writeFileAtomically(path, [&](std::ostream& out) {
+      if (std::filesystem::path(path).extension() == ".html")
+        out << report::networkReportHtml(json_report, report::nowUtc());
+      else
+        out << json_report.dump(2) << "\n";
+    });
+  std::cout << networkReportToText(r, stations);
+  const int code = networkExitCode(r);
+  if (code == 2) {
+    std::cerr << "plumb-cli: network incomplete:";
+    if (r.georeference && !r.georeference->done) std::cerr << " " << r.georeference->message << ";";
+    if (!r.unplaced.empty()) {
+      std::cerr << " " << r.unplaced.size() << " station(s) could not be placed:";
+      for (std::size_t i : r.unplaced) std::cerr << " " << stations[i].name;
+      std::cerr << " (no accepted link joins them to the reference " << stations[r.reference].name << ")";
+    }
+    if (const auto ambiguous = r.ambiguous(); !ambiguous.empty()) {
+      std::cerr << (r.unplaced.empty() ? " " : "; ") << ambiguous.size() << " station(s) ambiguous:";
+      for (std::size_t i : ambiguous) std::cerr << " " << stations[i].name;
+      std::cerr << " (identical rooms or a symmetric building: the links or the BIM place them in more than one"
+                   " way; add a station that sees what tells them apart, or control: see \"ambiguous_why\" and"
+                   " \"competing\" in the report)";
+    }
+    std::cerr << (o.output.empty() && o.transforms.empty() ? "" : "; no output written") << "\n";
+    return code;
+  }
+  if (code == 3) std::cerr << "plumb-cli: check visually (exit 3): a kept link disagrees with the network (see FLAGGED)\n";
+  writeResults(o, r, stations, datasets);
+  return code;
+}
+
+void detectFeatures(std::vector<Station>& stations, const NetworkParams& p, Progress& progress) {
+  for (std::size_t i = 0; i < stations.size(); ++i) {
+    progress.report(double(i) / double(stations.size()), "features of " + stations[i].name);
+    detectStationFeatures(stations[i], p.link);
+  }
+}
+
+/// --plan DIR: the first round's link jobs (network_batch.hpp).
+int writePlan(const NetworkOptions& o, const NetworkParams& p, std::vector<Station>& stations,
+              std::vector<Dataset>& datasets, Progress& progress) {
+  detectFeatures(stations, p, progress);
+  LinkPlan plan{o.plan, {}, p.link.seed, o.model};
+  for (const auto& s : o.settings) {
+    const std::string group = s.substr(0, s.find('.'));
+    if (group != "pair-selection" && group != "link-weights" && group != "pose-graph") plan.settings.push_back(s);
+  }
+  const auto pairs = plannedPairs(stations, p);
+  const auto jobs = writeLinkPlan(plan, stations, datasets, pairs);
+  std::cerr << "\r\033[K";
+  std::cout << "wrote " << pairs.size() << " link jobs to " << jobs.string() << " (of " << stations.size() * (stations.size() - 1) / 2
+            << " station pairs); run them, e.g. `parallel < " << jobs.string()
+            << "`, then: plumb-cli network INPUTS... --links-from " << o.plan << "\n";
+  return 0;
+}
+
 int run(const NetworkOptions& o) {
   const NetworkParams p = loadParams(o);
   if (o.print_params) {
@@ -134,46 +233,23 @@ int run(const NetworkOptions& o) {
                                                       : findStation(stations, o.reference);
   if (stations.size() < 2) throw InputError("network: the inputs hold " + std::to_string(stations.size()) +
                                             " station(s); a network needs at least two (or one and --model)");
+  const std::optional<ControlSurvey> control = loadControl(o);
+  if (control) checkObservations(*control, stationNames(stations));  // before minutes of features
   const bool tty = isatty(2);
   Progress progress([tty](double f, std::string_view stage) {
     if (tty) std::cerr << "\r[" << int(f * 100) << "%] " << stage << "\033[K" << std::flush;
   });
-  for (std::size_t i = 0; i < stations.size(); ++i) {
-    progress.report(double(i) / double(stations.size()), "features of " + stations[i].name);
-    detectStationFeatures(stations[i], p.link);
+  if (!o.plan.empty()) return writePlan(o, p, stations, datasets, progress);
+  const ControlSurvey* c = control ? &*control : nullptr;
+  NetworkResult r;
+  if (!o.links_from.empty()) {
+    r = adjustRegisteredLinks(stations, readLinkReports(o.links_from, stations, p), reference, p, c);
+  } else {
+    detectFeatures(stations, p, progress);
+    r = registerNetwork(stations, reference, p, &progress, c);
   }
-  const NetworkResult r = registerNetwork(stations, reference, p, &progress);
   if (tty) std::cerr << "\r\033[K";
-  const nlohmann::json json_report = networkReportToJson(r, stations);
-  for (const auto& path : o.reports)
-    writeFileAtomically(path, [&](std::ostream& out) {
-      if (std::filesystem::path(path).extension() == ".html")
-        out << report::networkReportHtml(json_report, report::nowUtc());
-      else
-        out << json_report.dump(2) << "\n";
-    });
-  std::cout << networkReportToText(r, stations);
-  const int code = networkExitCode(r);
-  if (code == 2) {
-    std::cerr << "plumb-cli: network incomplete:";
-    if (!r.unplaced.empty()) {
-      std::cerr << " " << r.unplaced.size() << " station(s) could not be placed:";
-      for (std::size_t i : r.unplaced) std::cerr << " " << stations[i].name;
-      std::cerr << " (no accepted link joins them to the reference " << stations[reference].name << ")";
-    }
-    if (const auto ambiguous = r.ambiguous(); !ambiguous.empty()) {
-      std::cerr << (r.unplaced.empty() ? " " : "; ") << ambiguous.size() << " station(s) ambiguous:";
-      for (std::size_t i : ambiguous) std::cerr << " " << stations[i].name;
-      std::cerr << " (identical rooms or a symmetric building: the links or the BIM place them in more than one"
-                   " way; add a station that sees what tells them apart, or control: see \"ambiguous_why\" and"
-                   " \"competing\" in the report)";
-    }
-    std::cerr << (o.output.empty() && o.transforms.empty() ? "" : "; no output written") << "\n";
-    return code;
-  }
-  if (code == 3) std::cerr << "plumb-cli: check visually (exit 3): a kept link disagrees with the network (see FLAGGED)\n";
-  writeResults(o, r, stations, datasets);
-  return code;
+  return finish(o, r, stations, datasets);
 }
 
 }  // namespace
@@ -195,6 +271,27 @@ void addNetworkCommand(CLI::App& app, Action& action) {
   cmd->add_option("--set", o->settings,
                   "One parameter, GROUP.KEY=VALUE: pair-selection, link-weights, pose-graph, or a registration "
                   "group for the links (planes.max-tilt=5); repeatable");
+  cmd->add_option("--control", o->control,
+                  "Control and check points in the project's grid: 'name, E, N, H[, control|check]' per line; "
+                  "3 control points seen by the stations georeference the network, check points are only "
+                  "reported")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--targets", o->targets,
+                  "Where the stations saw the points: 'station, point, x, y, z' per line, in the station's own "
+                  "frame (as scanner software exports its targets)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--grid-scale", o->grid_scale,
+                  "Grid scale factor of the control coordinates (grid distance / ground distance; default 1)");
+  cmd->add_option("--crs", o->crs,
+                  "Projected coordinate system of the control coordinates (EPSG:32632...): its scale factor at "
+                  "the control points, from PROJ");
+  cmd->add_option("--target-sigma", o->target_sigma,
+                  "Standard deviation of one coordinate of a target observation, m (default 0.002)");
+  cmd->add_option("--plan", o->plan,
+                  "Do not register: write the link jobs to this directory (stations/, jobs.txt with one plumb-cli "
+                  "register command per link, plan.json) for a batch engine (GNU parallel, Slurm, Kubernetes)");
+  cmd->add_option("--links-from", o->links_from,
+                  "Adjust the network from the reports of the link jobs of --plan DIR (same inputs)");
   cmd->add_option("--seed", o->seed, "Random seed of every link registration, 0 .. 9e15 (default 1)");
   cmd->add_flag("--print-params", o->print_params, "Write the parameters as JSON to stdout and exit");
   cmd->callback([o, &action] { action = [o] { return run(*o); }; });

@@ -16,6 +16,9 @@
 //   trajectory.txt             the MMS trajectory ("t x y z" per line) in the outdoor dataset
 //                              frame (the model frame unless --perturb-mms), for
 //                              `register --target-trajectory` on files without sensor origins
+// --control-points N,M (with --grid E,N,H and --grid-scale K): survey control for a network
+//   control.csv                name, E, N, H, role: control and check targets in the grid
+//   targets.csv                station, point, x, y, z: each target in each station that sees it
 // Scanner parameters: --tls-<key> / --mms-<key> for every TlsParams / MmsParams field.
 // Demo pair: plumb-cli simulate --demo -o DIR   (house, a station per room, MMS loop).
 #include <nlohmann/json.hpp>
@@ -32,7 +35,9 @@
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "io/io.hpp"
+#include "registration/network/control_points.hpp"
 #include "simulation/building_generator.hpp"
+#include "simulation/control_targets.hpp"
 #include "simulation/doorway_stations.hpp"
 #include "simulation/ground_truth_json.hpp"
 #include "simulation/presets.hpp"
@@ -66,6 +71,8 @@ void applyParamOptions(const ParamSchema<P>& schema, const std::string& prefix,
 
 struct Args {
   std::string preset, building, model, trajectory, perturb, perturb_stations, outdir, format = "e57";
+  std::string control_points, grid, crs;  ///< --control-points N,M, --grid E,N,H, --crs
+  double grid_scale = 1.0;
   std::vector<std::string> tls;
   bool tls_rooms = false, tls_doors = false, tls_walk = false, mms = false, perturb_mms = false, list = false, demo = false, opaque_glass = false;
   std::string seed = "1", noise_mm;  // parsed and range-checked in run()
@@ -113,6 +120,9 @@ void checkChoices(const Args& a) {
   const int sources = !a.preset.empty() + !a.building.empty() + !a.model.empty();
   if (sources > 1) throw InputError("simulate: give only one of --preset, --building, --model");
   if (a.format != "e57" && a.format != "ply") throw InputError("simulate: --format must be e57 or ply");
+  if (a.control_points.empty() && (!a.grid.empty() || a.grid_scale != 1.0 || !a.crs.empty()))
+    throw InputError("simulate: --grid, --grid-scale and --crs need --control-points");
+  if (!a.crs.empty() && a.grid_scale != 1.0) throw InputError("simulate: give --crs or --grid-scale, not both");
 }
 
 /// What is scanned: an imported model, or a generated building (with its spec and truth).
@@ -217,6 +227,48 @@ void writeTrajectory(const std::filesystem::path& out, const SimulatedSurvey& su
   std::cout << "trajectory.txt: " << traj.times.size() << " samples, " << traj.duration() << " s\n";
 }
 
+/// --control-points N,M: control.csv (each target's grid coordinates: --grid origin plus
+/// --grid-scale times the model frame's horizontal coordinates) and targets.csv (each target in
+/// each station that sees it, station frame), listed in `truth`.
+void writeControl(const Args& a, const std::filesystem::path& out, const Subject& subject, const SurveyRequest& r,
+                  const SimulatedSurvey& survey, nlohmann::json& truth) {
+  const auto counts = parseNumberList(a.control_points, 2, "--control-points");
+  if (counts[0] < 3 || counts[0] > 100 || counts[1] < 0 || counts[1] > 100)
+    throw InputError("simulate: --control-points N,M wants 3 to 100 control and 0 to 100 check points");
+  if (!(a.grid_scale > 0.9 && a.grid_scale < 1.1))
+    throw InputError("simulate: --grid-scale must lie in (0.9, 1.1) (a map projection's scale factor)");
+  const auto grid = a.grid.empty() ? std::vector<double>{0, 0, 0} : parseNumberList(a.grid, 3, "--grid");
+  const double k = a.crs.empty() ? a.grid_scale : gridScaleFactor(a.crs, {grid[0], grid[1], grid[2]});
+  const SimulatedDataset* indoor = nullptr;
+  for (const auto& d : survey.datasets)
+    if (d.name == "indoor") indoor = &d;
+  if (!indoor) throw InputError("simulate: --control-points needs TLS stations");
+  const auto targets = placeControlTargets(r.tls_stations, int(counts[0]), int(counts[1]));
+  const RayCaster caster(subject.model.mesh);
+  const auto sightings = sightTargets(caster, indoor->true_poses, targets);
+  const Eigen::Vector3d origin(grid[0], grid[1], grid[2]);
+  writeFileAtomically(out / "control.csv", [&](std::ostream& o) {
+    o.precision(std::numeric_limits<double>::max_digits10);
+    o << "# name, E, N, H, role (grid: origin " << grid[0] << " " << grid[1] << " " << grid[2] << ", scale factor "
+      << k << (a.crs.empty() ? "" : " of " + a.crs) << ")\n";
+    for (const auto& t : targets)
+      o << t.name << "," << origin.x() + k * t.position.x() << "," << origin.y() + k * t.position.y()
+        << "," << origin.z() + t.position.z() << "," << (t.check ? "check" : "control") << "\n";
+  });
+  writeFileAtomically(out / "targets.csv", [&](std::ostream& o) {
+    o.precision(std::numeric_limits<double>::max_digits10);
+    o << "# station, point, x, y, z (the target centre in the station's own frame)\n";
+    for (const auto& s : sightings)
+      o << indoor->data.scans[s.station].name << "," << targets[s.target].name << "," << s.in_station.x() << ","
+        << s.in_station.y() << "," << s.in_station.z() << "\n";
+  });
+  truth["control"] = {{"points", "control.csv"}, {"targets", "targets.csv"}, {"grid_origin", grid},
+                      {"grid_scale", k}, {"crs", a.crs},
+                      {"description", "grid = grid_origin + grid_scale x (model x, y), H = grid_origin z + model z"}};
+  std::cout << "control.csv: " << counts[0] << " control, " << counts[1] << " check points; targets.csv: "
+            << sightings.size() << " sightings\n";
+}
+
 int run(const Args& a) {
   if (a.list) {
     for (const auto& n : buildingPresetNames()) std::cout << n << "  " << buildingPresetDescription(n) << "\n";
@@ -238,6 +290,7 @@ int run(const Args& a) {
   std::filesystem::create_directories(out);
   nlohmann::json truth = writeDatasets(out, survey, a.format);
   if (survey.mms_trajectory) writeTrajectory(out, survey, truth);
+  if (!a.control_points.empty()) writeControl(a, out, subject, r, survey, truth);
   writeModel(out / "model.ply", subject.model);
   writeModel(out / "model.obj", subject.model);
   if (subject.generated) writeBuildingTruth(out / "ground_truth.json", *subject.generated);
@@ -268,6 +321,14 @@ void addSimulateCommand(CLI::App& app, Action& action) {
                   "Move every TLS station by its own random perturbation yaw_max_deg,shift_max_m");
   cmd->add_flag("--perturb-mms", a->perturb_mms, "Perturb the outdoor dataset too (default: it is the reference)");
   cmd->add_flag("--opaque-glass", a->opaque_glass, "Glass stops the laser");
+  cmd->add_option("--control-points", a->control_points,
+                  "N,M: N control and M check targets beside the TLS stations; writes control.csv (grid "
+                  "coordinates) and targets.csv (each target in each station that sees it)");
+  cmd->add_option("--grid", a->grid, "E,N,H: grid coordinates of the model frame's origin (with --control-points)");
+  cmd->add_option("--grid-scale", a->grid_scale,
+                  "Grid scale factor of the control coordinates (with --control-points; default 1)");
+  cmd->add_option("--crs", a->crs,
+                  "Projected coordinate system of the grid (EPSG:32632...): its scale factor at --grid, from PROJ");
   cmd->add_option("--seed", a->seed, "Random seed, 0 .. 9e15 (same seed, same output)");
   cmd->add_option("--noise-mm", a->noise_mm, "Range noise sigma for all scanners, 0 .. 100 [mm]");
   cmd->add_option("--format", a->format, "Scan file format: e57 (with poses) or ply");

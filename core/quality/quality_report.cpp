@@ -169,6 +169,7 @@ std::string assessRefinement(const GlobalRegistrationResult& g, const RefineResu
   q.point_rms = r.rms;
   q.overlap_ratio = r.overlap;
   q.point_inliers = r.inliers;
+  q.length_scale = r.length_scale;
   q.refinement_shift = RigidTransform::translationError(r.transform, g.transform);
   q.refinement_rotation = RigidTransform::rotationErrorDeg(r.transform, g.transform);
   q.weak_directions = weakDirections(r, p, &q.eigenvalues);
@@ -325,6 +326,7 @@ std::string qualityReportToJson(const QualityReport& q) {
     j["points"] = {{"rms_m", q.point_rms},
                    {"overlap_ratio", q.overlap_ratio},
                    {"inliers", q.point_inliers},
+                   {"length_scale_m", q.length_scale},
                    {"refinement_shift_m", q.refinement_shift},
                    {"refinement_rotation_deg", q.refinement_rotation}};
     j["normal_matrix_eigenvalues"] = q.eigenvalues;

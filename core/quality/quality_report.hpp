@@ -72,6 +72,7 @@ struct QualityReport {
   double point_rms = 0.0;    ///< m
   double overlap_ratio = 0.0;
   std::size_t point_inliers = 0;
+  double length_scale = 0.0;           ///< m, RMS radius of the matched points (RefineResult)
   double refinement_shift = 0.0;       ///< m, |t_refined - t_global|
   double refinement_rotation = 0.0;    ///< deg
   std::array<double, 6> eigenvalues{};  ///< of the scaled normal matrix, ascending

@@ -40,6 +40,8 @@ const Table& byPath() {
                        "after refinement"},
       {"points.overlap_ratio", "Fraction of source points matched to the target after refinement"},
       {"points.inliers", "Source points matched to the target after refinement"},
+      {"points.length_scale_m", "RMS radius of the matched points about their centroid: the lever "
+                                "arm that turns a rotation error into a displacement"},
       {"points.refinement_shift_m", "How far the refinement moved the global result"},
       {"points.refinement_rotation_deg", "How far the refinement turned the global result"},
       {"normal_matrix_eigenvalues", "Eigenvalues of the refinement's normal matrix, ascending: "

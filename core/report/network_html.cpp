@@ -190,6 +190,40 @@ void residualHistogram(std::ostringstream& h, const json& r) {
   h << "<h2>Residuals</h2><figure>" << barsSvg(p) << "</figure>\n";
 }
 
+/// Control and check points (a network georeferenced on control points): the figures a
+/// surveyor signs on. Residual = adjusted minus given, grid units.
+void control(std::ostringstream& h, const json& r) {
+  if (!r.contains("georeference")) return;
+  const json& g = r["georeference"];
+  h << "<h2>Control and check points</h2><p>" << esc(g["message"].get<std::string>()) << ". Grid scale factor "
+    << fixedDigits(g["scale_factor"].get<double>(), 8)
+    << (g["crs"].get<std::string>().empty() ? "" : " (" + esc(g["crs"].get<std::string>()) + ")")
+    << "; coordinates are grid coordinates at the origin " << fixedDigits(g["origin_grid"][0].get<double>(), 3) << ", "
+    << fixedDigits(g["origin_grid"][1].get<double>(), 3) << ", " << fixedDigits(g["origin_grid"][2].get<double>(), 3)
+    << " and ground distances about it.</p><table><tr><th>point</th><th>role</th><th>stations</th>"
+       "<th>residual E, N, H (mm)</th><th>residual (mm)</th></tr>";
+  for (std::size_t i = 0; i < g["points"].size(); ++i) {
+    const json& p = g["points"][i];
+    const std::string base = "georeference.points[" + std::to_string(i) + "]";
+    h << "<tr>" << cell(p, base, "name", p["name"]) << cell(p, base, "role", p["role"])
+      << cell(p, base, "observations", p["observations"].dump());
+    if (p.contains("residual_grid_m")) {
+      const auto& d = p["residual_grid_m"];
+      h << cell(base + ".residual_grid_m", d,
+                fixedDigits(1e3 * d[0].get<double>(), 1) + ", " + fixedDigits(1e3 * d[1].get<double>(), 1) + ", " +
+                    fixedDigits(1e3 * d[2].get<double>(), 1))
+        << cell(p, base, "residual_m", fixedDigits(1e3 * p["residual_m"].get<double>(), 1));
+    } else {
+      h << "<td>not seen by a placed station</td><td></td>";
+    }
+    h << "</tr>";
+  }
+  h << "<tr><th>control RMS</th><td></td><td></td><td></td>"
+    << cell(g, "georeference", "control_rms_m", fixedDigits(1e3 * g["control_rms_m"].get<double>(), 1))
+    << "</tr><tr><th>check max</th><td></td><td></td><td></td>"
+    << cell(g, "georeference", "check_max_m", fixedDigits(1e3 * g["check_max_m"].get<double>(), 1)) << "</tr></table>\n";
+}
+
 void figures(std::ostringstream& h, const json& r) {
   h << "<h2>Network figures</h2><table><tr><th>figure</th><th>value</th></tr>";
   for (const auto& [path, value] : flattenReportJson(json{{"network", r["network"]}}.dump()))
@@ -210,6 +244,7 @@ std::string networkReportHtml(const json& r, const std::string& created_utc) {
   plan(h, r);
   stations(h, r);
   links(h, r);
+  control(h, r);
   residualHistogram(h, r);
   figures(h, r);
   h << "<h2>Sign-off</h2><table class=\"sign\"><tr><th>checked by</th><td></td></tr>"

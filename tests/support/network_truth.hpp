@@ -31,14 +31,18 @@ inline nlohmann::json readJsonFile(const std::filesystem::path& p) {
 
 inline RigidTransform matrixOf(const nlohmann::json& j) { return transformFromJson(j.dump()); }
 
-/// Errors of poses[name] (station -> registered frame; nullopt: not placed).
+/// Errors of poses[name] (station -> registered frame; nullopt: not placed). `model_to_registered`:
+/// when given, the registered frame (a georeferenced network), else the reference's frame.
 inline std::vector<StationError> stationErrors(const nlohmann::json& truth, const std::string& reference,
-                                               const std::map<std::string, std::optional<RigidTransform>>& poses) {
+                                               const std::map<std::string, std::optional<RigidTransform>>& poses,
+                                               const std::optional<RigidTransform>& model_to_registered = {}) {
   std::map<std::string, nlohmann::json> scans;
   for (const auto& s : truth["scans"]) scans[s["scan"].get<std::string>()] = s;
   // With a model as the reference (network --model), the registered frame is the model frame.
   const RigidTransform to_registered =
-      scans.count(reference) ? matrixOf(scans.at(reference)["transform"]).inverse() : RigidTransform();
+      model_to_registered ? *model_to_registered
+      : scans.count(reference) ? matrixOf(scans.at(reference)["transform"]).inverse()
+                               : RigidTransform();
   std::vector<StationError> out;
   for (const auto& [name, pose] : poses) {
     StationError e;
@@ -54,6 +58,22 @@ inline std::vector<StationError> stationErrors(const nlohmann::json& truth, cons
   return out;
 }
 
+/// A georeferenced network's frame (control points, simulate --control-points): the ground frame
+/// moved to the report's grid origin O. A model point m has grid coordinates g0 + k m (E, N) and
+/// H0 + m_z, so its registered position is O + (g0 - O) / k + m horizontally and H0 + m_z
+/// vertically: a translation of the model frame.
+inline std::optional<RigidTransform> georeferencedFrame(const nlohmann::json& truth, const nlohmann::json& report) {
+  if (!report.contains("georeference") || !report["georeference"]["done"].get<bool>() || !truth.contains("control"))
+    return std::nullopt;
+  const auto& g0 = truth["control"]["grid_origin"];
+  const double k = truth["control"]["grid_scale"].get<double>();
+  const auto& o = report["georeference"]["origin_grid"];
+  Eigen::Vector3d t;
+  for (int a = 0; a < 2; ++a) t[a] = o[a].get<double>() + (g0[a].get<double>() - o[a].get<double>()) / k;
+  t.z() = g0[2].get<double>();
+  return RigidTransform(Eigen::Matrix3d::Identity(), t);
+}
+
 /// The errors of a plumb-cli network --report JSON.
 inline std::vector<StationError> reportErrors(const nlohmann::json& truth, const nlohmann::json& report) {
   std::map<std::string, std::optional<RigidTransform>> poses;
@@ -66,7 +86,7 @@ inline std::vector<StationError> reportErrors(const nlohmann::json& truth, const
       sigma[name] = Eigen::Vector3d(s["sigma_position_m"][0].get<double>(), s["sigma_position_m"][1].get<double>(),
                                     s["sigma_position_m"][2].get<double>());
   }
-  auto errors = stationErrors(truth, report["reference"], poses);
+  auto errors = stationErrors(truth, report["reference"], poses, georeferencedFrame(truth, report));
   for (auto& e : errors)
     if (sigma.count(e.name)) e.sigma_position = sigma[e.name];
   return errors;

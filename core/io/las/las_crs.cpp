@@ -1,6 +1,6 @@
 #include "io/las/las_crs.hpp"
 
-#include <proj.h>
+#include "common/proj_context.hpp"
 
 #include <cctype>
 #include <cstring>
@@ -8,17 +8,6 @@
 
 namespace plumb::las {
 namespace {
-
-/// One PROJ context per call: contexts are not shared between threads, and opening the
-/// database costs about a millisecond, nothing beside writing a point file.
-struct ProjContext {
-  PJ_CONTEXT* ctx = proj_context_create();
-  ProjContext() { proj_log_level(ctx, PJ_LOG_NONE); }
-  ~ProjContext() { proj_context_destroy(ctx); }
-  ProjContext(const ProjContext&) = delete;
-  ProjContext& operator=(const ProjContext&) = delete;
-};
-using ProjObject = std::unique_ptr<PJ, decltype(&proj_destroy)>;
 
 /// The code of a plain "EPSG:<digits>" text, else 0.
 int epsgCode(const std::string& crs) {

@@ -1,8 +1,12 @@
 #include "registration/network/link.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+
+#include "common/error.hpp"
 
 namespace plumb {
 
@@ -29,6 +33,76 @@ std::vector<LinkAlternative> alternativesOf(const PipelineResult& r) {
 }
 }  // namespace
 
+namespace {
+
+RigidTransform matrixFrom(const nlohmann::json& m) {
+  Eigen::Matrix4d t;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) t(r, c) = m.at(r).at(c).get<double>();
+  return RigidTransform(t.topLeftCorner<3, 3>(), t.topRightCorner<3, 1>());
+}
+
+VerdictLevel levelFrom(const std::string& s) {
+  for (const VerdictLevel l : {VerdictLevel::Usable, VerdictLevel::CheckVisually, VerdictLevel::Failed})
+    if (s == verdictLevelName(l)) return l;
+  throw InputError("unknown verdict_level '" + s + "'");
+}
+
+/// The report's "seconds ..." figures summed (features, global step, refinement).
+double secondsOf(const nlohmann::json& j) {
+  double s = 0.0;
+  if (j.contains("figures"))
+    for (const auto& [name, value] : j["figures"].items())
+      if (name.rfind("seconds ", 0) == 0 && value.is_number()) s += value.get<double>();
+  return s;
+}
+
+void acceptAndWeigh(Link& link, const NetworkParams& params) {
+  link.accepted = link.registered && (link.level == VerdictLevel::Usable ||
+                                      (link.level == VerdictLevel::CheckVisually && params.weights.accept_check_visually));
+  weighLink(link, params.weights);
+}
+
+}  // namespace
+
+Link linkFromReport(const nlohmann::json& j, const CandidatePair& pair, bool onto_model, const NetworkParams& params) {
+  Link link;
+  link.a = pair.a;
+  link.b = pair.b;
+  link.reason = pair.reason;
+  link.similarity = pair.similarity;
+  try {
+    link.level = levelFrom(j.at("verdict_level").get<std::string>());
+    link.verdict = j.at("verdict").get<std::string>();
+    link.status = j.at("status").get<std::string>();
+    link.method = j.at("method").get<std::string>();
+    link.warnings = j.value("warnings", std::vector<std::string>{});
+    link.registered = j.at("success").get<bool>();
+    if (link.registered) {
+      const RigidTransform t = matrixFrom(j.at("transform"));
+      link.transform = onto_model ? t.inverse() : t;
+    }
+    if (j.value("refined", false)) {
+      const auto& p = j.at("points");
+      link.overlap = p.at("overlap_ratio").get<double>();
+      link.point_rms = p.at("rms_m").get<double>();
+      link.length_scale = p.value("length_scale_m", 0.0);
+      const auto resistance = j.at("direction_resistance").get<std::vector<double>>();
+      if (!resistance.empty()) link.weakest_resistance = *std::min_element(resistance.begin(), resistance.end());
+    }
+    link.seconds = secondsOf(j);
+    if (!onto_model && j.contains("candidates"))
+      for (const auto& c : j["candidates"])
+        if (c.value("refined", false) && (c.value("role", "") == "competing" || c.value("role", "") == "worse"))
+          link.alternatives.push_back({matrixFrom(c.at("transform")), c["role"].get<std::string>(),
+                                       c.value("overlap_ratio", 0.0), c.value("rms_m", 0.0)});
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(std::string("not a plumb-cli register report: ") + e.what());
+  }
+  acceptAndWeigh(link, params);
+  return link;
+}
+
 Link registerLink(const Station& a, const Station& b, const CandidatePair& pair, const NetworkParams& params) {
   const auto t0 = std::chrono::steady_clock::now();
   Link link;
@@ -54,10 +128,8 @@ Link registerLink(const Station& a, const Station& b, const CandidatePair& pair,
   link.point_rms = r.report.point_rms;
   link.weakest_resistance = *std::min_element(r.report.direction_resistance.begin(), r.report.direction_resistance.end());
   link.length_scale = r.refinement ? r.refinement->length_scale : 0.0;
-  link.accepted = link.registered && (link.level == VerdictLevel::Usable ||
-                                      (link.level == VerdictLevel::CheckVisually && params.weights.accept_check_visually));
   if (!onto_model) link.alternatives = alternativesOf(r);
-  weighLink(link, params.weights);
+  acceptAndWeigh(link, params);
   link.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return link;
 }

@@ -2,6 +2,8 @@
 // A link of the network: one station pair registered with the pipeline (registerData, source =
 // station b, target = station a, each in its own frame), its quality figures and verdict, and
 // the standard deviations that weigh it in the adjustment (docs/NETWORK.md "Links").
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 #include <vector>
 
@@ -45,6 +47,13 @@ struct Link {
 /// Registers station b onto station a with params.link and weighs the result (when b is the
 /// model, a onto the model, the transform inverted).
 Link registerLink(const Station& a, const Station& b, const CandidatePair& pair, const NetworkParams& params);
+
+/// The link of `pair` from the JSON report of `plumb-cli register` run as a batch job
+/// (network --plan / --links-from, docs/NETWORK.md "Batch link jobs"): the same figures as
+/// registerLink takes from the pipeline. `onto_model`: the job registered station a onto the
+/// model (the transform is inverted). Throws InputError naming what the report lacks.
+Link linkFromReport(const nlohmann::json& report, const CandidatePair& pair, bool onto_model,
+                    const NetworkParams& params);
 
 /// sigma_t = max(min_sigma, rms_factor * point_rms) / sqrt(min(1, weakest / full_resistance));
 /// sigma_r = sigma_t / length_scale (radians; length_scale at least 1 m).

@@ -103,7 +103,8 @@ std::vector<std::size_t> copiesUnchecked(const std::vector<Station>& stations, c
 
 namespace {
 
-void adjust(const std::vector<Station>& stations, const NetworkParams& params, NetworkResult& out) {
+void adjust(const std::vector<Station>& stations, const NetworkParams& params, const ControlSurvey* control,
+            NetworkResult& out) {
   std::vector<AdjustmentLink> links;
   for (std::size_t k = 0; k < out.links.size(); ++k) {
     const Link& l = out.links[k];
@@ -118,6 +119,8 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, N
     out.competing = findCompetingPlacements(stations.size(), links, out.reference, reference_pose, params.graph,
                                             out.adjustment);
   out.copies_unchecked = copiesUnchecked(stations, out);
+  if (control)
+    out.georeference = georeferenceNetwork(*control, stationNames(stations), links, params.graph, out.adjustment);
   for (std::size_t i = 0; i < stations.size(); ++i)
     if (!out.adjustment.poses[i]) out.unplaced.push_back(i);
   std::vector<GraphEdge> kept;
@@ -153,8 +156,11 @@ std::size_t findStation(const std::vector<Station>& stations, const std::string&
   throw InputError("no station is named '" + name + "'; the stations are: " + names);
 }
 
-NetworkResult registerNetwork(const std::vector<Station>& stations, std::size_t reference,
-                              const NetworkParams& params, Progress* progress) {
+namespace {
+
+/// Throws InputError for invalid parameters, fewer than two stations, a bad reference or a
+/// model that is not the last node.
+void checkNetwork(const std::vector<Station>& stations, std::size_t reference, const NetworkParams& params) {
   validateNetworkParams(params);
   if (stations.size() < 2) throw InputError("a network needs at least two stations, got " + std::to_string(stations.size()));
   if (reference >= stations.size()) throw InputError("the reference station index is out of range");
@@ -162,15 +168,44 @@ NetworkResult registerNetwork(const std::vector<Station>& stations, std::size_t 
     if (stations[i].is_model) throw InputError("the model must be the last node of a network, and only one");
   if (stations.back().is_model && reference != stations.size() - 1)
     throw InputError("with a model, the model is the reference: its frame is the output frame");
+}
+
+}  // namespace
+
+std::vector<CandidatePair> plannedPairs(const std::vector<Station>& stations, const NetworkParams& params) {
+  checkNetwork(stations, stations.back().is_model ? stations.size() - 1 : 0, params);
+  return firstPairs(stations, nodeSimilarity(stations), params.pairs);
+}
+
+NetworkResult adjustRegisteredLinks(const std::vector<Station>& stations, std::vector<Link> links,
+                                    std::size_t reference, const NetworkParams& params, const ControlSurvey* control) {
+  checkNetwork(stations, reference, params);
+  if (control) checkObservations(*control, stationNames(stations));
+  NetworkResult out;
+  out.reference = reference;
+  out.all_pairs = stations.size() * (stations.size() - 1) / 2;
+  out.links = std::move(links);
+  out.rounds = 1;
+  for (const auto& l : out.links) out.seconds_links += l.seconds;
+  const auto t0 = std::chrono::steady_clock::now();
+  adjust(stations, params, control, out);
+  out.seconds_adjustment = secondsSince(t0);
+  return out;
+}
+
+NetworkResult registerNetwork(const std::vector<Station>& stations, std::size_t reference,
+                              const NetworkParams& params, Progress* progress, const ControlSurvey* control) {
+  checkNetwork(stations, reference, params);
   NetworkResult out;
   out.reference = reference;
   out.all_pairs = stations.size() * (stations.size() - 1) / 2;
   for (const auto& s : stations) out.seconds_features += s.seconds_features;
   auto t0 = std::chrono::steady_clock::now();
+  if (control) checkObservations(*control, stationNames(stations));  // before minutes of link registration
   registerLinks(stations, params, out, progress);
   out.seconds_links = secondsSince(t0);
   t0 = std::chrono::steady_clock::now();
-  adjust(stations, params, out);
+  adjust(stations, params, control, out);
   out.seconds_adjustment = secondsSince(t0);
   return out;
 }

@@ -4,11 +4,13 @@
 // accepted links leave the network split, then the robust adjustment (robust_adjustment.hpp)
 // with the reference station fixed at its pose in its file. Stations the links cannot join to
 // the reference are reported as not placed, never forced.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "common/progress.hpp"
 #include "registration/network/competing_placements.hpp"
+#include "registration/network/georeference.hpp"
 #include "registration/network/link.hpp"
 #include "registration/network/robust_adjustment.hpp"
 #include "registration/network/station.hpp"
@@ -31,12 +33,19 @@ struct NetworkResult {
   /// Stations the BIM places in several copies (their registration onto it was ambiguous)
   /// that only links no loop checks (bridges) place: one unchecked link chose the copy.
   std::vector<std::size_t> copies_unchecked;
+  /// With control points: the network moved into the survey's grid, and each control and check
+  /// point's residual (georeference.hpp).
+  std::optional<Georeference> georeference;
   /// In competing.ambiguous or copies_unchecked: adjusted, but not placed.
   bool isAmbiguous(std::size_t i) const;
   /// The ambiguous stations, sorted (the union of both lists).
   std::vector<std::size_t> ambiguous() const;
   bool placed(std::size_t i) const;  ///< adjusted and not ambiguous
-  bool complete() const { return unplaced.empty() && competing.ambiguous.empty() && copies_unchecked.empty(); }
+  /// Every station placed, none ambiguous, and georeferenced when control points were given.
+  bool complete() const {
+    return unplaced.empty() && competing.ambiguous.empty() && copies_unchecked.empty() &&
+           (!georeference || georeference->done);
+  }
 };
 
 /// Placed stations whose registration onto the BIM (the last station, when it is a model)
@@ -46,9 +55,24 @@ std::vector<std::size_t> copiesUnchecked(const std::vector<Station>& stations, c
 /// Index of the station named `name`; throws InputError listing the names when none is.
 std::size_t findStation(const std::vector<Station>& stations, const std::string& name);
 
-/// `stations` carry their features (detectStationFeatures). Throws InputError for invalid
-/// parameters or fewer than two stations.
+/// `stations` carry their features (detectStationFeatures). With `control`, the adjusted network
+/// is then georeferenced on its control points (georeferenceNetwork). Throws InputError for
+/// invalid parameters or fewer than two stations, FileError for a target observation naming an
+/// unknown station or point.
 NetworkResult registerNetwork(const std::vector<Station>& stations, std::size_t reference,
-                              const NetworkParams& params, Progress* progress = nullptr);
+                              const NetworkParams& params, Progress* progress = nullptr,
+                              const ControlSurvey* control = nullptr);
+
+/// The first round of candidate pairs registerNetwork would register (layout neighbours,
+/// sequence neighbours, every scan station with the model): the link jobs of `network --plan`.
+/// `stations` carry their features. Throws InputError as registerNetwork.
+std::vector<CandidatePair> plannedPairs(const std::vector<Station>& stations, const NetworkParams& params);
+
+/// The adjustment of links registered elsewhere (`network --links-from`, linkFromReport), as
+/// registerNetwork adjusts its own; no pair is added while the network is split (the parts are
+/// reported). Stations need no features.
+NetworkResult adjustRegisteredLinks(const std::vector<Station>& stations, std::vector<Link> links,
+                                    std::size_t reference, const NetworkParams& params,
+                                    const ControlSurvey* control = nullptr);
 
 }  // namespace plumb

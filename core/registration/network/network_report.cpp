@@ -130,6 +130,45 @@ nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& s
           {"seconds_links", r.seconds_links}, {"seconds_adjustment", r.seconds_adjustment}};
 }
 
+/// The frame the stations come out in: the reference station's, or the control points'.
+std::string referenceName(const NetworkResult& r, const std::vector<Station>& st) {
+  return r.georeference && r.georeference->done ? "control points" : st[r.reference].name;
+}
+
+nlohmann::json georeferenceJson(const Georeference& g) {
+  nlohmann::json points = nlohmann::json::array();
+  for (const auto& p : g.points) {
+    nlohmann::json j = {{"name", p.point}, {"role", p.check ? "check" : "control"}, {"observations", p.observations}};
+    if (p.observations > 0)
+      j.update({{"residual_ground_m", vec(p.ground)}, {"residual_grid_m", vec(p.grid)}, {"residual_m", p.ground.norm()}});
+    points.push_back(j);
+  }
+  return {{"done", g.done}, {"message", g.message}, {"crs", g.grid.crs}, {"scale_factor", g.grid.scale_factor},
+          {"origin_grid", vec(g.grid.origin)},
+          {"coordinates", "ground frame moved to origin_grid: grid coordinates at that point, ground distances "
+                          "about it (grid = origin + scale_factor x horizontal offset)"},
+          {"control_used", g.control_used}, {"control_rms_m", g.control_rms}, {"check_max_m", g.check_max},
+          {"points", points}};
+}
+
+void georeferenceText(const nlohmann::json& g, std::ostringstream& o) {
+  o << "georeference: " << g["message"].get<std::string>() << ", grid scale factor " << std::setprecision(8)
+    << g["scale_factor"].get<double>() << "\n";
+  for (const auto& p : g["points"]) {
+    o << "  " << p["role"].get<std::string>() << " " << p["name"].get<std::string>() << ": ";
+    if (p["observations"].get<std::size_t>() == 0) {
+      o << "not seen by a placed station\n";
+      continue;
+    }
+    const auto& d = p["residual_grid_m"];
+    o << std::setprecision(1) << p["observations"] << " station(s), residual dE " << 1000 * d[0].get<double>()
+      << " dN " << 1000 * d[1].get<double>() << " dH " << 1000 * d[2].get<double>() << " mm\n";
+  }
+  if (g["done"].get<bool>())
+    o << std::setprecision(1) << "  control RMS " << 1000 * g["control_rms_m"].get<double>() << " mm, check max "
+      << 1000 * g["check_max_m"].get<double>() << " mm\n";
+}
+
 }  // namespace
 
 int networkExitCode(const NetworkResult& r) {
@@ -146,12 +185,13 @@ std::optional<RigidTransform> stationTransform(const NetworkResult& r, const std
 
 nlohmann::json networkReportToJson(const NetworkResult& r, const std::vector<Station>& st) {
   nlohmann::json j = {{"format", "plumb-network-report"}, {"version", 1}, {"complete", r.complete()},
-                      {"exit_code", networkExitCode(r)}, {"reference", st[r.reference].name}};
+                      {"exit_code", networkExitCode(r)}, {"reference", referenceName(r, st)}};
   j["stations"] = nlohmann::json::array();
   for (std::size_t i = 0; i < st.size(); ++i) j["stations"].push_back(stationJson(r, st, i));
   j["links"] = nlohmann::json::array();
   for (std::size_t k = 0; k < r.links.size(); ++k) j["links"].push_back(linkJson(r, st, k));
   j["network"] = networkJson(r, st);
+  if (r.georeference) j["georeference"] = georeferenceJson(*r.georeference);
   return j;
 }
 
@@ -187,11 +227,12 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
       << 1000 * sp[2].get<double>() << " mm\n";
   }
   const auto& n = j["network"];
-  o << std::setprecision(2) << "network: " << st.size() << " stations, reference " << st[r.reference].name << ", "
+  o << std::setprecision(2) << "network: " << st.size() << " stations, reference " << referenceName(r, st) << ", "
     << n["pairs_registered"] << " of " << n["pairs_all"] << " pairs registered, " << n["links_accepted"]
     << " links accepted, " << n["links_dropped"].size() << " dropped; " << n["loop_closures"].size()
     << " loops, closure mean " << 1000 * n["loop_translation_mean_m"].get<double>() << " mm, max "
     << 1000 * n["loop_translation_max_m"].get<double>() << " mm\n";
+  if (j.contains("georeference")) georeferenceText(j["georeference"], o);
   for (const auto& c : n["competing"]) {
     if (!c["competes"].get<bool>()) continue;
     const auto& l = j["links"][c["link"].get<std::size_t>()];

@@ -25,7 +25,11 @@
 //              "model_links_dropped", "stations_moved": [names],
 //              "max_translation_m", "max_rotation_deg"}] (one per dropped link taken as true),
 //              "parts": [[names]], "solves", "converged", "covariance", "solver",
-//              "seconds_features", "seconds_links", "seconds_adjustment"}}
+//              "seconds_features", "seconds_links", "seconds_adjustment"},
+//  "georeference" (with control points): {"done", "message", "crs", "scale_factor",
+//              "origin_grid": [E,N,H], "coordinates", "control_used", "control_rms_m",
+//              "check_max_m", "points": [{"name", "role" (control|check), "observations",
+//              "residual_ground_m": [x,y,z], "residual_grid_m": [E,N,H], "residual_m"}]}}
 #include <nlohmann/json_fwd.hpp>
 
 #include <vector>
@@ -35,7 +39,8 @@
 namespace plumb {
 
 /// 0: every station placed and no kept link flagged; 3: placed, a kept link flagged (check
-/// visually); 2: a station could not be placed or is ambiguous (competing_placements.hpp).
+/// visually); 2: a station could not be placed or is ambiguous (competing_placements.hpp), or
+/// control points were given and could not georeference the network.
 int networkExitCode(const NetworkResult& result);
 
 /// Station i's transform: file frame -> registered frame (pose x file_pose^-1), if placed.

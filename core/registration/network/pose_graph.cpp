@@ -31,6 +31,21 @@ struct RelativePoseCost {
   }
 };
 
+/// r = (R_s p + t_s - target) / sigma (PointConstraint).
+struct PointCost {
+  Eigen::Vector3d p, target;
+  double w;
+
+  template <class T>
+  bool operator()(const T* q_p, const T* t_p, T* r) const {
+    const Eigen::Map<const Eigen::Quaternion<T>> q(q_p);
+    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t(t_p);
+    const Eigen::Matrix<T, 3, 1> x = q * p.cast<T>() + t;
+    for (int k = 0; k < 3; ++k) r[k] = T(w) * (x[k] - T(target[k]));
+    return true;
+  }
+};
+
 struct PoseBlocks {
   std::vector<Eigen::Quaterniond> q;  // coefficients x, y, z, w (Eigen order)
   std::vector<Eigen::Vector3d> t;
@@ -55,10 +70,14 @@ void addEdges(ceres::Problem& problem, PoseBlocks& b, const PoseGraphProblem& in
     problem.AddResidualBlock(cost, loss, b.q[e.a].coeffs().data(), b.t[e.a].data(), b.q[e.b].coeffs().data(),
                              b.t[e.b].data());
   }
+  for (const auto& c : in.points)
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<PointCost, 3, 4, 3>(new PointCost{c.observed, c.target, 1.0 / c.sigma}),
+        nullptr, b.q[c.station].coeffs().data(), b.t[c.station].data());
   for (std::size_t i = 0; i < b.q.size(); ++i) {
     if (!problem.HasParameterBlock(b.q[i].coeffs().data())) continue;
     problem.SetManifold(b.q[i].coeffs().data(), new ceres::EigenQuaternionManifold);
-    if (i == in.reference) {
+    if (in.fix_reference && i == in.reference) {
       problem.SetParameterBlockConstant(b.q[i].coeffs().data());
       problem.SetParameterBlockConstant(b.t[i].data());
     }
@@ -74,14 +93,14 @@ void stationCovariances(ceres::Problem& problem, PoseBlocks& b, const PoseGraphP
   ceres::Covariance covariance(options);
   std::vector<std::pair<const double*, const double*>> blocks;
   for (std::size_t i = 0; i < b.q.size(); ++i)
-    if (i != in.reference && problem.HasParameterBlock(b.t[i].data())) {
+    if (!(in.fix_reference && i == in.reference) && problem.HasParameterBlock(b.t[i].data())) {
       blocks.emplace_back(b.q[i].coeffs().data(), b.q[i].coeffs().data());
       blocks.emplace_back(b.t[i].data(), b.t[i].data());
     }
   if (blocks.empty() || !covariance.Compute(blocks, &problem)) return;
   out.covariance_ok = true;
   for (std::size_t i = 0; i < b.q.size(); ++i) {
-    if (i == in.reference || !problem.HasParameterBlock(b.t[i].data())) continue;
+    if ((in.fix_reference && i == in.reference) || !problem.HasParameterBlock(b.t[i].data())) continue;
     Eigen::Matrix3d ct, cr;
     covariance.GetCovarianceBlock(b.t[i].data(), b.t[i].data(), ct.data());
     covariance.GetCovarianceBlockInTangentSpace(b.q[i].coeffs().data(), b.q[i].coeffs().data(), cr.data());
@@ -113,7 +132,7 @@ PoseGraphSolution solvePoseGraph(const PoseGraphProblem& in) {
   PoseBlocks b = blocksFrom(in.initial);
   ceres::Problem problem;
   addEdges(problem, b, in);
-  if (!in.edges.empty()) {
+  if (!in.edges.empty() || !in.points.empty()) {
     ceres::Solver::Options options;
     options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
     options.max_num_iterations = in.max_iterations;

@@ -23,9 +23,21 @@ struct PoseGraphEdge {
   double sigma_rotation = 1e-4;      ///< rad
 };
 
+/// A point seen by a station whose coordinates in the reference frame are known (a control
+/// point's target): r = (R_s p + t_s - target) / sigma.
+struct PointConstraint {
+  std::size_t station = 0;
+  Eigen::Vector3d observed = Eigen::Vector3d::Zero();  ///< in the station's frame
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();    ///< in the reference frame
+  double sigma = 0.002;                                ///< m, per coordinate
+};
+
 struct PoseGraphProblem {
   std::vector<RigidTransform> initial;  ///< per station, station -> reference frame
-  std::size_t reference = 0;            ///< held fixed at its initial pose
+  std::size_t reference = 0;            ///< held fixed at its initial pose (fix_reference)
+  /// Off when point constraints fix the frame (control points): no station is held.
+  bool fix_reference = true;
+  std::vector<PointConstraint> points;  ///< least squares, no robust loss
   std::vector<PoseGraphEdge> edges;     ///< stations in no edge keep their initial pose
   double robust_scale = 3.0;            ///< Cauchy scale on the normalised residual; <= 0: none
   int max_iterations = 200;
@@ -40,7 +52,7 @@ struct EdgeResidual {
 struct PoseGraphSolution {
   std::vector<RigidTransform> poses;
   /// Per station: standard deviations of the position (x, y, z, m) and of the rotation about
-  /// the reference frame's axes (deg); zero for the reference and stations in no edge.
+  /// the reference frame's axes (deg); zero for a fixed reference and stations in no edge.
   std::vector<Eigen::Vector3d> sigma_position, sigma_rotation_deg;
   std::vector<EdgeResidual> residuals;  ///< per edge, at the solution
   bool converged = false;

@@ -56,4 +56,10 @@ void detectStationFeatures(Station& station, const PipelineParams& params) {
   station.seconds_features = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+std::vector<std::string> stationNames(const std::vector<Station>& stations) {
+  std::vector<std::string> names;
+  for (const auto& st : stations) names.push_back(st.name);
+  return names;
+}
+
 }  // namespace plumb

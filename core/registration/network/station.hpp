@@ -39,6 +39,9 @@ std::vector<Station> stationsOf(const Dataset& data, const std::string& file);
 /// ("indoor/tls-0"), then a number if still not unique.
 void makeStationNamesUnique(std::vector<Station>& stations);
 
+/// The stations' names, in order.
+std::vector<std::string> stationNames(const std::vector<Station>& stations);
+
 /// Detects the station's planes and openings (extractFeatures, as the pipeline does) and its
 /// layout descriptor.
 void detectStationFeatures(Station& station, const PipelineParams& params);

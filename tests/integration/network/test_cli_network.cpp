@@ -1,12 +1,17 @@
 // plumb-cli network end to end: a simulated campaign (two furnished rooms of 4 x 5 and
 // 4.5 x 5 m, stations in both rooms and the doorway, every station perturbed by any yaw and up
 // to 20 m) is placed within 0.02 deg and 5 mm of truth.json; a station nothing links to is
-// reported and nothing is written. (The two-rooms preset is not used: its two identical empty
-// rooms are symmetric under a half turn, so wrong links agree with each other: docs/NETWORK.md.)
+// reported and nothing is written; with control points the network comes out in a UTM grid;
+// link jobs planned for a batch engine and adjusted from their reports give the direct result.
+// (The two-rooms preset is not used: its two identical empty rooms are symmetric under a half
+// turn, so wrong links agree with each other: docs/NETWORK.md.)
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <map>
+
+#include <sys/wait.h>
 
 #include "io/io.hpp"
 #include "report/html_report.hpp"
@@ -18,15 +23,15 @@ namespace plumb {
 namespace {
 
 /// A station in each room centre, one in the doorway, one more in a corner of each room, shot
-/// as a walk; each independently perturbed.
-std::filesystem::path simulateCampaign(std::uint64_t seed) {
+/// as a walk; each independently perturbed. `more`: further simulate options.
+std::filesystem::path simulateCampaign(std::uint64_t seed, const std::string& more = {}) {
   // scratchDir keeps each test case apart (they run in parallel, several with the same seed).
-  const auto dir = test::scratchDir("cli_network_" + std::to_string(seed));
+  const auto dir = test::scratchDir("cli_network_" + std::to_string(seed) + (more.empty() ? "" : "_control"));
   std::ofstream(dir / "rooms.json") << R"({"name": "two-furnished-rooms", "column_widths": [4.0, 4.5],
                                           "row_depths": [5.0], "furniture_per_room": 1})";
   const auto r = test::plumbCli(dir, "simulate --building rooms.json --tls-rooms --tls-doors --tls 1.2,1.2,1.75 "
                                      "--tls 7.2,3.9,1.75 --tls-walk --perturb-stations 180,20 --seed " +
-                                     std::to_string(seed) + " -o sim");
+                                     std::to_string(seed) + " " + more + " -o sim");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   return dir;
 }
@@ -157,6 +162,118 @@ TEST(CliNetwork, UnknownReferenceIsAnErrorNamingTheStations) {
   const auto r = test::plumbCli(dir, "network sim/indoor.e57 --reference nowhere");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("tls-0"), std::string::npos) << r.err;
+}
+
+/// The campaign of simulateCampaign with 3 control and 2 check targets in UTM zone 32N
+/// (x ~ 651,000, y ~ 6,860,000: the scale factor there is 0.99988, 12 cm per km).
+std::filesystem::path simulateControlledCampaign(std::uint64_t seed) {
+  return simulateCampaign(seed, "--control-points 3,2 --grid 651000,6860000,40 --crs EPSG:32632");
+}
+
+// Issue 15 acceptance: 3 control points and 2 check points in a UTM grid with its scale factor;
+// check-point residuals <= 5 mm on exact simulations, and reported (JSON, text, HTML).
+TEST(CliNetwork, ControlPointsGeoreferenceTheNetworkInAUtmGrid) {
+  const auto dir = simulateControlledCampaign(5);
+  const auto r = test::plumbCli(dir, "network sim/indoor.e57 --control sim/control.csv --targets sim/targets.csv "
+                                     "--crs EPSG:32632 -o registered.e57 --report net.json --report net.html");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto report = test::readJsonFile(dir / "net.json");
+  const auto truth = test::readJsonFile(dir / "sim/truth.json");
+  EXPECT_EQ(report["reference"], "control points");
+  const auto& g = report["georeference"];
+  ASSERT_TRUE(g["done"].get<bool>()) << g["message"];
+  // PROJ's factor at the control points, against the simulator's at the grid origin, 3 m west
+  // (151 km east of the central meridian, k grows by 3.7e-9 per metre eastwards).
+  EXPECT_NEAR(g["scale_factor"].get<double>(), truth["control"]["grid_scale"].get<double>(), 3e-8);
+  EXPECT_NEAR(g["scale_factor"].get<double>(), 0.99988, 1e-5);
+  EXPECT_EQ(g["control_used"].get<int>(), 3);
+  int checks = 0;
+  for (const auto& p : g["points"]) {
+    ASSERT_GT(p["observations"].get<int>(), 0) << p["name"];
+    EXPECT_LT(p["residual_m"].get<double>(), 0.005) << p["name"];
+    if (p["role"] == "check") {
+      ++checks;
+      EXPECT_NE(r.out.find("check " + p["name"].get<std::string>() + ":"), std::string::npos) << r.out;
+    }
+  }
+  EXPECT_EQ(checks, 2);
+  EXPECT_LE(g["check_max_m"].get<double>(), 0.005);
+  EXPECT_NE(test::readAll(dir / "net.html").find("Control and check points"), std::string::npos);
+  // Every station in the grid within the issue's tolerance; the E57 holds grid coordinates.
+  const auto errors = test::reportErrors(truth, report);
+  ASSERT_EQ(errors.size(), 5u);
+  expectEveryStationWithinTarget(errors);
+  const Dataset out = readDataset(dir / "registered.e57");
+  ASSERT_EQ(out.scans.size(), 5u);
+  EXPECT_NEAR(out.scans[0].pose.translation().y(), 6860000.0, 20.0);
+}
+
+// Two control points leave the rotation about their line free: the network is not
+// georeferenced, exit 2 with the reason, the report written and no registered output.
+TEST(CliNetwork, TwoControlPointsCannotGeoreferenceAndNothingIsWritten) {
+  const auto dir = simulateControlledCampaign(6);
+  // Keep CP1 and CP2 as control, make CP3 a check point.
+  std::ifstream in(dir / "sim/control.csv");
+  std::ofstream two(dir / "two.csv");
+  for (std::string line; std::getline(in, line);)
+    two << (line.rfind("CP3,", 0) == 0 ? line.substr(0, line.rfind(',')) + ",check" : line) << "\n";
+  two.close();
+  const auto r = test::plumbCli(dir, "network sim/indoor.e57 --control two.csv --targets sim/targets.csv "
+                                     "--crs EPSG:32632 -o registered.e57 --report net.json");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("2 control point(s) seen by placed stations; 3 are needed"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "registered.e57"));
+  const auto report = test::readJsonFile(dir / "net.json");
+  EXPECT_FALSE(report["georeference"]["done"].get<bool>());
+  EXPECT_FALSE(report["complete"].get<bool>());
+}
+
+TEST(CliNetwork, ATargetOfAnUnknownStationIsAnErrorNamingTheLine) {
+  const auto dir = simulateControlledCampaign(7);
+  std::ofstream(dir / "bad.csv") << "# station, point, x, y, z\ntls-0,CP1,1,2,3\ntls-9,CP2,1,2,3\n";
+  const auto r = test::plumbCli(dir, "network sim/indoor.e57 --control sim/control.csv --targets bad.csv");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("bad.csv"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("line 3"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no station is named 'tls-9'"), std::string::npos) << r.err;
+}
+
+// Issue 15 "scale out": the link jobs run by a batch engine (here, one after the other with sh),
+// then the adjustment on their reports gives the network of a direct run.
+TEST(CliNetwork, LinkJobsPlannedThenAdjustedFromTheirReportsGiveTheDirectResult) {
+  const auto dir = simulateCampaign(5);
+  const auto plan = test::plumbCli(dir, "network sim/indoor.e57 --plan jobs");
+  ASSERT_EQ(plan.exit_code, 0) << plan.out << plan.err;
+  std::ifstream jobs(dir / "jobs/jobs.txt");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(jobs, line);) lines.push_back(line);
+  ASSERT_GE(lines.size(), 4u);
+  EXPECT_LT(lines.size(), 10u) << "not every one of the 10 pairs";
+  for (const auto& line : lines) {
+    ASSERT_NE(line.find(" register "), std::string::npos) << line;
+    const int code = std::system((line + " > /dev/null 2>&1").c_str());
+    ASSERT_TRUE(WIFEXITED(code)) << line;
+    EXPECT_NE(WEXITSTATUS(code), 1) << line;  // usable, check visually or failed: a report is written
+  }
+  const auto batch = test::plumbCli(dir, "network sim/indoor.e57 --links-from jobs --report batch.json");
+  ASSERT_EQ(batch.exit_code, 0) << batch.out << batch.err;
+  const auto direct = test::plumbCli(dir, "network sim/indoor.e57 --report direct.json");
+  ASSERT_EQ(direct.exit_code, 0) << direct.out << direct.err;
+  const auto b = test::readJsonFile(dir / "batch.json"), d = test::readJsonFile(dir / "direct.json");
+  expectEveryStationWithinTarget(test::reportErrors(test::readJsonFile(dir / "sim/truth.json"), b));
+  EXPECT_EQ(b["network"]["pairs_registered"].get<int>(), int(lines.size()));
+  ASSERT_EQ(b["stations"].size(), d["stations"].size());
+  for (std::size_t i = 0; i < b["stations"].size(); ++i)
+    EXPECT_LT(RigidTransform::translationError(test::matrixOf(b["stations"][i]["pose"]),
+                                               test::matrixOf(d["stations"][i]["pose"])),
+              1e-4)
+        << b["stations"][i]["name"];
+  // A missing report is named, never skipped.
+  std::filesystem::remove(dir / "jobs/links/0.json");
+  const auto missing = test::plumbCli(dir, "network sim/indoor.e57 --links-from jobs");
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("0.json"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("is missing"), std::string::npos) << missing.err;
 }
 
 }  // namespace

@@ -1,0 +1,35 @@
+#pragma once
+// Link registration as batch jobs (issue 15, docs/NETWORK.md "Batch link jobs"): `network
+// --plan DIR` writes each station alone in its own frame (DIR/stations/), one `plumb-cli
+// register` command line per planned link (DIR/jobs.txt, absolute paths: run them with GNU
+// parallel, a Slurm job array or Kubernetes Jobs) and DIR/plan.json; `network --links-from
+// DIR` reads the jobs' reports back as links for the adjustment.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "model/dataset.hpp"
+#include "registration/network/link.hpp"
+
+namespace plumb::cli {
+
+struct LinkPlan {
+  std::filesystem::path dir;
+  std::vector<std::string> settings;  ///< --set GROUP.KEY=VALUE of the link pipeline, passed on
+  std::uint64_t seed = 1;
+  std::string model;  ///< the BIM's file (the last station), empty without one
+};
+
+/// Writes DIR/stations/*.e57 (moving the scans out of `datasets`, in station order), DIR/links/,
+/// DIR/jobs.txt and DIR/plan.json for `pairs`; returns the jobs file. Written atomically.
+std::filesystem::path writeLinkPlan(const LinkPlan& plan, const std::vector<Station>& stations,
+                                    std::vector<Dataset>& datasets, const std::vector<CandidatePair>& pairs);
+
+/// The links of DIR/plan.json from the jobs' reports. Throws InputError when the plan's
+/// stations are not `stations` (same names, same order), FileError naming a report that is
+/// missing (its job did not run or failed on its input) or not a register report.
+std::vector<Link> readLinkReports(const std::filesystem::path& dir, const std::vector<Station>& stations,
+                                  const NetworkParams& params);
+
+}  // namespace plumb::cli

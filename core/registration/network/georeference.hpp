@@ -1,0 +1,50 @@
+#pragma once
+// Georeferencing a network on control points (issue 15, docs/NETWORK.md "Control points"):
+// after the robust adjustment (reference station fixed), the placed stations are moved into
+// the survey's ground frame by the rigid fit of their control-point targets (Umeyama, no
+// scale), then the pose graph is solved once more with the kept links and one constraint per
+// control-target observation and no station fixed: the control points hold the frame. Check
+// points stay out; every point's residual (adjusted minus given) is reported, in the ground
+// frame and in grid units. The poses come out in the ground frame moved to the grid origin.
+#include <string>
+#include <vector>
+
+#include "registration/network/control_points.hpp"
+#include "registration/network/robust_adjustment.hpp"
+
+namespace plumb {
+
+struct PointResidual {
+  std::string point;
+  bool check = false;
+  std::size_t observations = 0;  ///< by placed stations
+  /// Adjusted minus given position (mean over the observations), ground frame, m; zero when no
+  /// placed station saw the point.
+  Eigen::Vector3d ground = Eigen::Vector3d::Zero();
+  Eigen::Vector3d grid = Eigen::Vector3d::Zero();  ///< the same in grid units (E, N times k)
+};
+
+struct Georeference {
+  bool done = false;
+  std::string message;  ///< what was done, or why the network is not georeferenced
+  GridFrame grid;
+  std::vector<PointResidual> points;  ///< every control and check point, in file order
+  std::size_t control_used = 0;       ///< control points seen by placed stations
+  double control_rms = 0.0;           ///< m, 3D RMS of the control points' residuals
+  double check_max = 0.0;             ///< m, largest 3D check-point residual (0: none seen)
+};
+
+/// Checks that every observation names a station in `names` and a point of `survey`; throws
+/// FileError naming the targets file and line otherwise.
+void checkObservations(const ControlSurvey& survey, const std::vector<std::string>& names);
+
+/// Georeferences `adjustment` (poses of the stations in the reference frame; links as given to
+/// adjustNetwork, with its outcomes). Needs 3 control points, not in a line, seen by placed
+/// stations; otherwise returns done = false with the reason and leaves the adjustment as it
+/// was. On success, poses, sigmas, chain poses and link residuals are those of the ground
+/// frame at the grid origin.
+Georeference georeferenceNetwork(const ControlSurvey& survey, const std::vector<std::string>& station_names,
+                                 const std::vector<AdjustmentLink>& links, const PoseGraphParams& params,
+                                 NetworkAdjustment& adjustment);
+
+}  // namespace plumb
