@@ -21,6 +21,7 @@ PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config git
   libeigen3-dev libpcl-dev libcgal-dev libassimp-dev libtbb-dev libembree-dev
   nlohmann-json3-dev libpugixml-dev libcli11-dev libproj-dev libceres-dev libifcplusplus-dev
+  libopen3d-dev
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-svg-dev libvtk9-dev
   libgtest-dev libgmock-dev
   clang libclang-rt-14-dev
