@@ -71,7 +71,7 @@ std::filesystem::path writeLinkPlan(const LinkPlan& plan, const std::vector<Stat
   std::filesystem::create_directories(plan.dir / "links");
   const auto exe = std::filesystem::read_symlink("/proc/self/exe");
   nlohmann::json j = {{"format", "plumb-network-plan"}, {"version", 1}, {"seed", plan.seed},
-                      {"settings", plan.settings}, {"model", plan.model}};
+                      {"settings", plan.settings}, {"model", plan.model}, {"rounds", 1}};
   j["stations"] = stationNames(stations);
   j["links"] = nlohmann::json::array();
   std::vector<std::string> lines;
@@ -79,7 +79,8 @@ std::filesystem::path writeLinkPlan(const LinkPlan& plan, const std::vector<Stat
     const auto& p = pairs[k];
     const std::string report = "links/" + std::to_string(k) + ".json";
     j["links"].push_back({{"a", stations[p.a].name}, {"b", stations[p.b].name}, {"reason", p.reason},
-                          {"similarity", p.similarity}, {"onto_model", stations[p.b].is_model}, {"report", report}});
+                          {"similarity", p.similarity}, {"onto_model", stations[p.b].is_model}, {"report", report},
+                          {"round", 1}});
     lines.push_back(jobLine(plan, exe, stations, p, report));
   }
   writeFileAtomically(plan.dir / "plan.json", [&](std::ostream& o) { o << j.dump(2) << "\n"; });
@@ -89,8 +90,9 @@ std::filesystem::path writeLinkPlan(const LinkPlan& plan, const std::vector<Stat
   return plan.dir / "jobs.txt";
 }
 
-std::vector<Link> readLinkReports(const std::filesystem::path& dir, const std::vector<Station>& stations,
-                                  const NetworkParams& params) {
+namespace {
+
+nlohmann::json readPlan(const std::filesystem::path& dir) {
   std::ifstream in(dir / "plan.json");
   if (!in) throw FileError(dir / "plan.json", "cannot be opened (write it with network --plan)");
   nlohmann::json plan;
@@ -101,6 +103,38 @@ std::vector<Link> readLinkReports(const std::filesystem::path& dir, const std::v
   }
   if (plan.value("format", "") != "plumb-network-plan")
     throw FileError(dir / "plan.json", "is not a network plan (format plumb-network-plan)");
+  return plan;
+}
+
+}  // namespace
+
+std::filesystem::path appendLinkRound(const std::filesystem::path& dir, const std::vector<Station>& stations,
+                                      const std::vector<CandidatePair>& pairs) {
+  nlohmann::json plan = readPlan(dir);
+  const int round = plan.value("rounds", 1) + 1;
+  const LinkPlan lp{dir, plan["settings"].get<std::vector<std::string>>(), plan["seed"].get<std::uint64_t>(),
+                    plan["model"].get<std::string>()};
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe");
+  std::vector<std::string> lines;
+  for (const auto& p : pairs) {
+    const std::string report = "links/" + std::to_string(plan["links"].size()) + ".json";
+    plan["links"].push_back({{"a", stations[p.a].name}, {"b", stations[p.b].name}, {"reason", p.reason},
+                             {"similarity", p.similarity}, {"onto_model", stations[p.b].is_model},
+                             {"report", report}, {"round", round}});
+    lines.push_back(jobLine(lp, exe, stations, p, report));
+  }
+  plan["rounds"] = round;
+  const auto jobs = dir / ("jobs-" + std::to_string(round) + ".txt");
+  writeFileAtomically(jobs, [&](std::ostream& o) {
+    for (const auto& l : lines) o << l << "\n";
+  });
+  writeFileAtomically(dir / "plan.json", [&](std::ostream& o) { o << plan.dump(2) << "\n"; });
+  return jobs;
+}
+
+std::vector<Link> readLinkReports(const std::filesystem::path& dir, const std::vector<Station>& stations,
+                                  const NetworkParams& params) {
+  const nlohmann::json plan = readPlan(dir);
   if (plan["stations"].get<std::vector<std::string>>() != stationNames(stations))
     throw InputError("network --links-from: the inputs' stations are not those of " + (dir / "plan.json").string() +
                      " (give the same inputs, and --model, as to --plan)");

@@ -3,7 +3,8 @@
 // --plan DIR` writes each station alone in its own frame (DIR/stations/), one `plumb-cli
 // register` command line per planned link (DIR/jobs.txt, absolute paths: run them with GNU
 // parallel, a Slurm job array or Kubernetes Jobs) and DIR/plan.json; `network --links-from
-// DIR` reads the jobs' reports back as links for the adjustment.
+// DIR` reads the jobs' reports back as links for the adjustment and, when they leave the
+// network split, writes the next round of jobs (appendLinkRound).
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -25,6 +26,12 @@ struct LinkPlan {
 /// DIR/jobs.txt and DIR/plan.json for `pairs`; returns the jobs file. Written atomically.
 std::filesystem::path writeLinkPlan(const LinkPlan& plan, const std::vector<Station>& stations,
                                     std::vector<Dataset>& datasets, const std::vector<CandidatePair>& pairs);
+
+/// Appends `pairs` (an expansion round: the planned links left the network split) to
+/// DIR/plan.json as round R and writes their jobs to DIR/jobs-R.txt, which it returns; the
+/// station files of the first plan are reused.
+std::filesystem::path appendLinkRound(const std::filesystem::path& dir, const std::vector<Station>& stations,
+                                      const std::vector<CandidatePair>& pairs);
 
 /// The links of DIR/plan.json from the jobs' reports. Throws InputError when the plan's
 /// stations are not `stations` (same names, same order), FileError naming a report that is

@@ -209,11 +209,30 @@ int writePlan(const NetworkOptions& o, const NetworkParams& p, std::vector<Stati
   }
   const auto pairs = plannedPairs(stations, p);
   const auto jobs = writeLinkPlan(plan, stations, datasets, pairs);
-  std::cerr << "\r\033[K";
+  if (isatty(2)) std::cerr << "\r\033[K";
   std::cout << "wrote " << pairs.size() << " link jobs to " << jobs.string() << " (of " << stations.size() * (stations.size() - 1) / 2
             << " station pairs); run them, e.g. `parallel < " << jobs.string()
             << "`, then: plumb-cli network INPUTS... --links-from " << o.plan << "\n";
   return 0;
+}
+
+/// --links-from DIR when the reports' accepted links leave the network split: the next round of
+/// jobs, as a network run would register next (the adjustment still reports the parts).
+void planNextRound(const NetworkOptions& o, const NetworkParams& p, std::vector<Station>& stations,
+                   const std::vector<Link>& links, Progress& progress) {
+  std::vector<GraphEdge> accepted;
+  for (const auto& l : links)
+    if (l.accepted) accepted.push_back({l.a, l.b, l.transform});
+  const auto parts = connectedComponents(stations.size(), accepted);
+  if (*std::max_element(parts.begin(), parts.end()) == 0) return;
+  detectFeatures(stations, p, progress);
+  const auto pairs = expansionRound(stations, links, p);
+  if (pairs.empty()) return;
+  const auto jobs = appendLinkRound(o.links_from, stations, pairs);
+  if (isatty(2)) std::cerr << "\r\033[K";
+  std::cerr << "plumb-cli: the links leave the network split; " << pairs.size()
+            << " more link jobs written to " << jobs.string() << ": run them, then --links-from "
+            << o.links_from << " again\n";
 }
 
 int run(const NetworkOptions& o) {
@@ -243,7 +262,9 @@ int run(const NetworkOptions& o) {
   const ControlSurvey* c = control ? &*control : nullptr;
   NetworkResult r;
   if (!o.links_from.empty()) {
-    r = adjustRegisteredLinks(stations, readLinkReports(o.links_from, stations, p), reference, p, c);
+    std::vector<Link> links = readLinkReports(o.links_from, stations, p);
+    planNextRound(o, p, stations, links, progress);
+    r = adjustRegisteredLinks(stations, std::move(links), reference, p, c);
   } else {
     detectFeatures(stations, p, progress);
     r = registerNetwork(stations, reference, p, &progress, c);

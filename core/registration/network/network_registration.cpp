@@ -177,6 +177,15 @@ std::vector<CandidatePair> plannedPairs(const std::vector<Station>& stations, co
   return firstPairs(stations, nodeSimilarity(stations), params.pairs);
 }
 
+std::vector<CandidatePair> expansionRound(const std::vector<Station>& stations, const std::vector<Link>& links,
+                                          const NetworkParams& params) {
+  const auto component = connectedComponents(stations.size(), acceptedEdges(links));
+  if (*std::max_element(component.begin(), component.end()) == 0) return {};
+  std::set<std::pair<std::size_t, std::size_t>> tried;
+  for (const auto& l : links) tried.insert({std::min(l.a, l.b), std::max(l.a, l.b)});
+  return expansionPairs(nodeSimilarity(stations), component, tried, params.pairs);
+}
+
 NetworkResult adjustRegisteredLinks(const std::vector<Station>& stations, std::vector<Link> links,
                                     std::size_t reference, const NetworkParams& params, const ControlSurvey* control) {
   checkNetwork(stations, reference, params);

@@ -68,6 +68,12 @@ NetworkResult registerNetwork(const std::vector<Station>& stations, std::size_t 
 /// `stations` carry their features. Throws InputError as registerNetwork.
 std::vector<CandidatePair> plannedPairs(const std::vector<Station>& stations, const NetworkParams& params);
 
+/// While the accepted `links` leave the network split: the next round of pairs between its parts
+/// (not yet tried, most similar first), as registerNetwork would register next; empty when the
+/// network is connected or every pair between the parts was tried. `stations` carry features.
+std::vector<CandidatePair> expansionRound(const std::vector<Station>& stations, const std::vector<Link>& links,
+                                          const NetworkParams& params);
+
 /// The adjustment of links registered elsewhere (`network --links-from`, linkFromReport), as
 /// registerNetwork adjusts its own; no pair is added while the network is split (the parts are
 /// reported). Stations need no features.

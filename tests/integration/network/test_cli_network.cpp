@@ -238,6 +238,16 @@ TEST(CliNetwork, ATargetOfAnUnknownStationIsAnErrorNamingTheLine) {
   EXPECT_NE(r.err.find("no station is named 'tls-9'"), std::string::npos) << r.err;
 }
 
+/// Runs every line of a jobs file with sh; false when one exits 1 (bad input: no report).
+bool runJobs(const std::filesystem::path& jobs) {
+  std::ifstream in(jobs);
+  for (std::string line; std::getline(in, line);) {
+    const int code = std::system((line + " > /dev/null 2>&1").c_str());
+    if (!WIFEXITED(code) || WEXITSTATUS(code) == 1) return false;
+  }
+  return true;
+}
+
 // Issue 15 "scale out": the link jobs run by a batch engine (here, one after the other with sh),
 // then the adjustment on their reports gives the network of a direct run.
 TEST(CliNetwork, LinkJobsPlannedThenAdjustedFromTheirReportsGiveTheDirectResult) {
@@ -249,12 +259,8 @@ TEST(CliNetwork, LinkJobsPlannedThenAdjustedFromTheirReportsGiveTheDirectResult)
   for (std::string line; std::getline(jobs, line);) lines.push_back(line);
   ASSERT_GE(lines.size(), 4u);
   EXPECT_LT(lines.size(), 10u) << "not every one of the 10 pairs";
-  for (const auto& line : lines) {
-    ASSERT_NE(line.find(" register "), std::string::npos) << line;
-    const int code = std::system((line + " > /dev/null 2>&1").c_str());
-    ASSERT_TRUE(WIFEXITED(code)) << line;
-    EXPECT_NE(WEXITSTATUS(code), 1) << line;  // usable, check visually or failed: a report is written
-  }
+  for (const auto& line : lines) ASSERT_NE(line.find(" register "), std::string::npos) << line;
+  ASSERT_TRUE(runJobs(dir / "jobs/jobs.txt"));  // usable, check visually or failed: a report each
   const auto batch = test::plumbCli(dir, "network sim/indoor.e57 --links-from jobs --report batch.json");
   ASSERT_EQ(batch.exit_code, 0) << batch.out << batch.err;
   const auto direct = test::plumbCli(dir, "network sim/indoor.e57 --report direct.json");
@@ -274,6 +280,32 @@ TEST(CliNetwork, LinkJobsPlannedThenAdjustedFromTheirReportsGiveTheDirectResult)
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.err.find("0.json"), std::string::npos) << missing.err;
   EXPECT_NE(missing.err.find("is missing"), std::string::npos) << missing.err;
+}
+
+// A link job whose registration failed leaves the planned links split: --links-from reports the
+// parts (exit 2) and writes the next round of jobs between them, as a network run would
+// register next; with their reports the network is whole.
+TEST(CliNetwork, ASplitBatchNetworkGetsAnExpansionRoundOfJobs) {
+  const auto dir = simulateCampaign(8);
+  const std::string chain = " --set pair-selection.nearest-layouts=0";  // the walk's 4 links only
+  ASSERT_EQ(test::plumbCli(dir, "network sim/indoor.e57 --plan jobs" + chain).exit_code, 0);
+  ASSERT_TRUE(runJobs(dir / "jobs/jobs.txt"));
+  // The second link's job failed: its report says so.
+  auto failed = test::readJsonFile(dir / "jobs/links/1.json");
+  failed["success"] = false;
+  failed["verdict_level"] = "failed";
+  failed["status"] = "contradicted";
+  std::ofstream(dir / "jobs/links/1.json") << failed.dump();
+  const auto split = test::plumbCli(dir, "network sim/indoor.e57 --links-from jobs --report split.json" + chain);
+  EXPECT_EQ(split.exit_code, 2) << split.out << split.err;
+  EXPECT_NE(split.err.find("more link jobs written to"), std::string::npos) << split.err;
+  ASSERT_TRUE(std::filesystem::exists(dir / "jobs/jobs-2.txt"));
+  ASSERT_TRUE(runJobs(dir / "jobs/jobs-2.txt"));
+  const auto whole = test::plumbCli(dir, "network sim/indoor.e57 --links-from jobs --report whole.json" + chain);
+  ASSERT_EQ(whole.exit_code, 0) << whole.out << whole.err;
+  const auto report = test::readJsonFile(dir / "whole.json");
+  expectEveryStationWithinTarget(test::reportErrors(test::readJsonFile(dir / "sim/truth.json"), report));
+  EXPECT_GT(report["network"]["pairs_registered"].get<int>(), 4);
 }
 
 }  // namespace
