@@ -119,6 +119,7 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, c
     out.competing = findCompetingPlacements(stations.size(), links, out.reference, reference_pose, params.graph,
                                             out.adjustment);
   out.copies_unchecked = copiesUnchecked(stations, out);
+  out.one_loop = decidedByOneLoop(stations.size(), links, out.adjustment, out.reference);
   if (control)
     out.georeference = georeferenceNetwork(*control, stationNames(stations), links, params.graph, out.adjustment);
   for (std::size_t i = 0; i < stations.size(); ++i)
@@ -135,13 +136,15 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, c
 
 bool NetworkResult::isAmbiguous(std::size_t i) const {
   return std::binary_search(competing.ambiguous.begin(), competing.ambiguous.end(), i) ||
-         std::binary_search(copies_unchecked.begin(), copies_unchecked.end(), i);
+         std::binary_search(copies_unchecked.begin(), copies_unchecked.end(), i) ||
+         std::binary_search(one_loop.begin(), one_loop.end(), i);
 }
 
 std::vector<std::size_t> NetworkResult::ambiguous() const {
-  std::vector<std::size_t> out;
+  std::vector<std::size_t> two, out;
   std::set_union(competing.ambiguous.begin(), competing.ambiguous.end(), copies_unchecked.begin(),
-                 copies_unchecked.end(), std::back_inserter(out));
+                 copies_unchecked.end(), std::back_inserter(two));
+  std::set_union(two.begin(), two.end(), one_loop.begin(), one_loop.end(), std::back_inserter(out));
   return out;
 }
 

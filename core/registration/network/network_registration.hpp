@@ -12,6 +12,7 @@
 #include "registration/network/competing_placements.hpp"
 #include "registration/network/georeference.hpp"
 #include "registration/network/link.hpp"
+#include "registration/network/one_loop_drops.hpp"
 #include "registration/network/robust_adjustment.hpp"
 #include "registration/network/station.hpp"
 
@@ -33,17 +34,20 @@ struct NetworkResult {
   /// Stations the BIM places in several copies (their registration onto it was ambiguous)
   /// that only links no loop checks (bridges) place: one unchecked link chose the copy.
   std::vector<std::size_t> copies_unchecked;
+  /// Stations placed through a bridge that a dropped link contradicted in a single loop: which
+  /// link of that loop was wrong, nothing tells (one_loop_drops.hpp).
+  std::vector<std::size_t> one_loop;
   /// With control points: the network moved into the survey's grid, and each control and check
   /// point's residual (georeference.hpp).
   std::optional<Georeference> georeference;
   /// In competing.ambiguous or copies_unchecked: adjusted, but not placed.
   bool isAmbiguous(std::size_t i) const;
-  /// The ambiguous stations, sorted (the union of both lists).
+  /// The ambiguous stations, sorted (the union of the three lists).
   std::vector<std::size_t> ambiguous() const;
   bool placed(std::size_t i) const;  ///< adjusted and not ambiguous
   /// Every station placed, none ambiguous, and georeferenced when control points were given.
   bool complete() const {
-    return unplaced.empty() && competing.ambiguous.empty() && copies_unchecked.empty() &&
+    return unplaced.empty() && competing.ambiguous.empty() && copies_unchecked.empty() && one_loop.empty() &&
            (!georeference || georeference->done);
   }
 };

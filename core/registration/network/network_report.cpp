@@ -57,9 +57,13 @@ nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& s
                       {"placed", r.placed(i)}, {"ambiguous", ambiguous}, {"model", st[i].is_model},
                       {"links", links}};
   if (ambiguous)
-    j["ambiguous_why"] = std::binary_search(r.competing.ambiguous.begin(), r.competing.ambiguous.end(), i)
-                             ? "competing: loop-checked links place it in two ways"
-                             : "copies: the BIM fits it in several places and only links no loop checks chose one";
+    j["ambiguous_why"] =
+        std::binary_search(r.competing.ambiguous.begin(), r.competing.ambiguous.end(), i)
+            ? "competing: loop-checked links place it in two ways"
+        : std::binary_search(r.one_loop.begin(), r.one_loop.end(), i)
+            ? "one loop: a dropped link contradicted the only path placing it, and one loop cannot tell which "
+              "link was wrong"
+            : "copies: the BIM fits it in several places and only links no loop checks chose one";
   if (const auto& p = r.adjustment.poses[i]) {  // an ambiguous station keeps the adopted pose, for inspection
     j["pose"] = matrixJson(*p);
     j["transform"] = matrixJson(*stationTransform(r, st, i));
@@ -123,7 +127,7 @@ nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& s
           {"loop_rotation_mean_deg", lr.mean()}, {"loop_rotation_max_deg", lr.max},
           {"residual_translation_mean_m", res.mean()}, {"residual_translation_max_m", res.max},
           {"unplaced", names(st, r.unplaced)}, {"ambiguous", names(st, r.ambiguous())},
-          {"copies_unchecked", names(st, r.copies_unchecked)},
+          {"copies_unchecked", names(st, r.copies_unchecked)}, {"one_loop", names(st, r.one_loop)},
           {"competing", competingJson(r, st)}, {"parts", parts}, {"solves", r.adjustment.solves},
           {"converged", r.adjustment.converged}, {"covariance", r.adjustment.covariance_ok},
           {"solver", r.adjustment.message}, {"seconds_features", r.seconds_features},

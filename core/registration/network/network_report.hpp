@@ -20,7 +20,7 @@
 //              "translation_m", "rotation_deg"}], "loop_translation_mean_m",
 //              "loop_translation_max_m", "loop_rotation_mean_deg", "loop_rotation_max_deg",
 //              "residual_translation_mean_m", "residual_translation_max_m", "unplaced": [names],
-//              "ambiguous": [names], "copies_unchecked": [names], "competing": [{"link",
+//              "ambiguous": [names], "copies_unchecked": [names], "one_loop": [names], "competing": [{"link",
 //              "corroborated", "competes", "links_dropped", "sequence_links_dropped",
 //              "model_links_dropped", "stations_moved": [names],
 //              "max_translation_m", "max_rotation_deg"}] (one per dropped link taken as true),

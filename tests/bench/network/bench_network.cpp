@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <random>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -49,6 +50,7 @@ struct Options {
   bool bim = false;  ///< also register every station onto the building's model (the reference)
   std::string report_dir;  ///< when set: each seed's network report, with every station's true error
   double robust_scale = PoseGraphParams{}.robust_scale;  ///< --synthetic: the adjustment's Cauchy scale
+  bool loop = false;  ///< --loop: 40 stations around a ring of rooms, shuffled, a planted wrong link
 };
 
 struct Campaign {
@@ -65,7 +67,12 @@ Campaign simulate(const GeneratedBuilding& b, const Options& o, std::uint64_t se
     r.tls_stations.emplace_back(1.2, 1.2, 1.75);
     r.tls_stations.emplace_back(7.2, 3.9, 1.75);
   }
-  r.tls_stations = walkOrder(r.tls_stations);
+  if (o.loop) {  // shot order unknown: shuffled
+    std::mt19937_64 rng(seed);
+    std::shuffle(r.tls_stations.begin(), r.tls_stations.end(), rng);
+  } else {
+    r.tls_stations = walkOrder(r.tls_stations);
+  }
   r.perturb_station_yaw_deg = 180.0;
   r.perturb_station_shift_m = 20.0;
   r.seed = seed;
@@ -144,6 +151,113 @@ bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
   return net.unplaced == 0 && net.rotation_deg <= 0.02 && net.translation_m <= 0.005;
 }
 
+/// 20 rooms of different sizes around a courtyard (a 6 x 6 grid without its 4 x 4 centre), a
+/// door between each pair of neighbours, one piece of furniture each: with a station in every
+/// room and doorway, 40 stations around a loop of rooms.
+BuildingSpec ringBuilding() {
+  BuildingSpec s;
+  s.name = "ring-40";
+  s.column_widths = {4.0, 4.6, 3.8, 4.4, 4.2, 4.8};
+  s.row_depths = {4.2, 4.8, 4.0, 4.6, 3.9, 4.5};
+  s.mask = {"######", "#....#", "#....#", "#....#", "#....#", "######"};
+  s.furniture_per_room = 1;
+  return s;
+}
+
+/// A strong wrong link (issue 15's acceptance): station b stacked onto station a (identity, as
+/// identical rooms registered one onto the other), usable, weighted like the median real link.
+Link plantedLink(std::size_t a, std::size_t b, const std::vector<Link>& links) {
+  std::vector<double> sigma;
+  for (const auto& l : links)
+    if (l.accepted) sigma.push_back(l.sigma_translation);
+  std::nth_element(sigma.begin(), sigma.begin() + long(sigma.size() / 2), sigma.end());
+  Link w;
+  w.a = std::min(a, b), w.b = std::max(a, b);
+  w.reason = "planted";
+  w.registered = w.accepted = true;
+  w.level = VerdictLevel::Usable;
+  w.overlap = 0.95, w.point_rms = 0.003, w.weakest_resistance = 0.5, w.length_scale = 2.0;
+  w.sigma_translation = sigma[sigma.size() / 2];
+  w.sigma_rotation_deg = w.sigma_translation / 2.0 * 180.0 / M_PI;
+  return w;
+}
+
+/// Open3D's multiway registration on the links the adjustment was given: the smallest-sigma
+/// spanning tree as its certain odometry, the rest as loop closures.
+bench::MultiwayResult open3dOn(const NetworkResult& r, std::size_t stations, const RigidTransform& reference_pose) {
+  std::vector<AdjustmentLink> links;
+  std::vector<GraphEdge> edges;
+  for (std::size_t k : r.adjusted) {
+    const Link& l = r.links[k];
+    links.push_back({l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg});
+    edges.push_back({l.a, l.b, l.transform});
+  }
+  std::vector<std::size_t> order(links.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t x, std::size_t y) { return links[x].sigma_translation < links[y].sigma_translation; });
+  std::vector<bool> certain(links.size(), false);
+  for (std::size_t k : spanningTree(stations, edges, order)) certain[k] = true;
+  return bench::open3dMultiway(stations, links, certain, r.reference, reference_pose);
+}
+
+/// Share of the placed stations' coordinate errors within 3 reported sigmas.
+double coveredShare(const NetworkResult& r, const SimulatedDataset& d) {
+  const RigidTransform to_registered = d.scan_truths[r.reference].inverse();
+  int in = 0, all = 0;
+  for (std::size_t i = 0; i < d.true_poses.size(); ++i) {
+    if (!r.adjustment.poses[i] || i == r.reference) continue;
+    const Eigen::Vector3d e = r.adjustment.poses[i]->translation() - (to_registered * d.true_poses[i]).translation();
+    for (int c = 0; c < 3; ++c) in += std::abs(e[c]) <= 3 * r.adjustment.sigma_position[i][c], ++all;
+  }
+  return all ? double(in) / all : 0.0;
+}
+
+/// --loop: the 40-station loop, shot order shuffled, a strong wrong link planted between two rooms
+/// across the courtyard; returns false when an acceptance line of issue 15 is missed.
+bool runLoop(const Options& o, std::uint64_t seed) {
+  const GeneratedBuilding b = generateBuilding(ringBuilding());
+  const Campaign c = simulate(b, o, seed);
+  NetworkParams params;
+  std::vector<Station> stations = stationsOf(c.indoor.data, "indoor.e57");
+  for (auto& s : stations) detectStationFeatures(s, params.link);
+  const NetworkResult first = registerNetwork(stations, 0, params);
+  // Plant the wrong link between the two stations farthest apart (rooms across the courtyard).
+  std::size_t pa = 0, pb = 1;
+  for (std::size_t i = 0; i < stations.size(); ++i)
+    for (std::size_t j = i + 1; j < stations.size(); ++j)
+      if ((c.indoor.true_poses[i].translation() - c.indoor.true_poses[j].translation()).norm() >
+          (c.indoor.true_poses[pa].translation() - c.indoor.true_poses[pb].translation()).norm())
+        pa = i, pb = j;
+  std::vector<Link> links = first.links;
+  links.push_back(plantedLink(pa, pb, first.links));
+  const NetworkResult r = adjustRegisteredLinks(stations, links, 0, params);
+  std::size_t planted_k = r.adjusted.size();
+  for (std::size_t k = 0; k < r.adjusted.size(); ++k)
+    if (r.adjusted[k] == links.size() - 1) planted_k = k;
+  const bool planted_dropped = planted_k < r.adjusted.size() && r.adjustment.links[planted_k].dropped;
+  const Worst net = worstError(r.adjustment.poses, c.indoor, 0, r.ambiguous());
+  const Worst chain = worstError(r.adjustment.chain_poses, c.indoor, 0);
+  const auto o3d = open3dOn(r, stations.size(), stations[0].file_pose);
+  const Worst peer = worstError(o3d.poses, c.indoor, 0);
+  std::size_t other_dropped = r.adjustment.dropped_order.size() - (planted_dropped ? 1 : 0);
+  const double share = double(first.links.size()) / double(first.all_pairs);
+  const double covered = coveredShare(r, c.indoor);
+  std::printf("%-8s %4llu %4zu %5zu/%-5zu %5.1f%% %4zu %-7s %5zu %8.4f %8.2f %8.4f %8.2f %8.4f %8.2f %6.1f%% %5d %5zu %4d %7.1f %7.1f\n",
+              "ring-40", static_cast<unsigned long long>(seed), stations.size(), first.links.size(), first.all_pairs,
+              100 * share, r.adjusted.size() - 1, planted_dropped ? "dropped" : "KEPT", other_dropped,
+              net.rotation_deg, 1000 * net.translation_m, chain.rotation_deg, 1000 * chain.translation_m,
+              peer.rotation_deg, 1000 * peer.translation_m, 100 * covered, net.unplaced, r.ambiguous().size(),
+              networkExitCode(r), first.seconds_features, first.seconds_links);
+  std::printf("         planted: %s - %s (%.1f m apart, stacked); %s\n", stations[pa].name.c_str(),
+              stations[pb].name.c_str(),
+              (c.indoor.true_poses[pa].translation() - c.indoor.true_poses[pb].translation()).norm(),
+              planted_dropped ? "flagged and dropped by name" : "NOT DROPPED");
+  std::fflush(stdout);
+  return planted_dropped && share < 0.25 && net.unplaced == 0 && net.translation_m <= 0.5 * chain.translation_m &&
+         net.translation_m <= peer.translation_m + 0.0005;
+}
+
 /// The adjustment alone on synthetic graphs; returns false when a wrong link is kept.
 bool runSynthetic(const Options& o) {
   std::printf("%-10s %4s %4s %5s %7s %9s %9s %7s %8s %5s | %9s %10s %8s\n", "graph", "seed", "stn", "links", "dropped",
@@ -165,7 +279,8 @@ bool runSynthetic(const Options& o) {
       for (int c = 0; c < 3; ++c) covered += std::abs(e[c]) <= 3 * adj.sigma_position[i][c];
     }
     // The peer on the same links: Open3D's multiway registration (open3d_multiway.hpp).
-    const auto o3d = bench::open3dMultiway(net.truth.size(), net.links, 0, net.truth[0]);
+    const auto o3d = bench::open3dMultiway(net.truth.size(), net.links, bench::consecutiveLinks(net.truth.size(), net.links),
+                                           0, net.truth[0]);
     std::string pruned;
     for (std::size_t k = 0; k < o3d.pruned.size(); ++k)
       if (o3d.pruned[k]) pruned += pruned.empty() ? (k == net.wrong_link ? "wrong" : "OTHER") : "+";
@@ -201,13 +316,14 @@ Options parse(int argc, char** argv) {
     if (a == "--smoke") o.smoke = true, o.seeds = 1;
     else if (a == "--synthetic") o.synthetic = true;
     else if (a == "--bim") o.bim = true;
+    else if (a == "--loop") o.loop = true;
     else if (a == "--robust-scale" && i + 1 < argc) o.robust_scale = std::stod(argv[++i]);
     else if (a == "--preset" && i + 1 < argc) o.preset = argv[++i];
     else if (a == "--seeds" && i + 1 < argc) o.seeds = std::stoi(argv[++i]);
     else if (a == "--first-seed" && i + 1 < argc) o.first_seed = std::stoull(argv[++i]);
     else if (a == "--report-dir" && i + 1 < argc) o.report_dir = argv[++i];
     else throw std::runtime_error("usage: bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic "
-                                     "[--robust-scale S]] [--bim] [--report-dir DIR]");
+                                     "[--robust-scale S]] [--loop] [--bim] [--report-dir DIR]");
   }
   return o;
 }
@@ -218,6 +334,20 @@ int main(int argc, char** argv) {
   try {
     const Options o = parse(argc, argv);
     if (o.synthetic) return runSynthetic(o) ? 0 : 1;
+    if (o.loop) {
+      std::printf("# 40 stations (20 rooms, 20 doorways) around a courtyard, shot order shuffled, each perturbed\n"
+                  "# by yaw +-180 deg and 20 m; a strong wrong link planted between the two farthest stations.\n"
+                  "# net / chain / open3d: largest error of the adjustment, the best spanning-tree chain of the\n"
+                  "# same kept links, Open3D's multiway registration on the same links; in_3sig: coordinate errors\n"
+                  "# within 3 reported sigmas\n");
+      std::printf("%-8s %4s %4s %11s %6s %4s %-7s %5s %8s %8s %8s %8s %8s %8s %7s %5s %5s %4s %7s %7s\n", "graph",
+                  "seed", "stn", "pairs/all", "share", "acc", "planted", "drop", "net_deg", "net_mm", "chn_deg",
+                  "chn_mm", "o3d_deg", "o3d_mm", "in_3sig", "unpl", "ambig", "exit", "feat_s", "link_s");
+      bool ok = true;
+      for (int k = 0; k < o.seeds; ++k) ok = runLoop(o, o.first_seed + static_cast<std::uint64_t>(k)) && ok;
+      std::printf("%s\n", ok ? "loop targets met" : "TARGET MISSED");
+      return ok ? 0 : 1;
+    }
     const GeneratedBuilding b = generateBuilding(o.smoke ? smokeBuilding() : buildingPreset(o.preset));
     std::printf("# stations in every room and doorway, each perturbed by yaw +-180 deg, shift <= 20 m; errors vs truth\n");
     std::printf("# targets: rotation <= 0.02 deg, position <= 5 mm; chain = best spanning tree of the same links\n");
