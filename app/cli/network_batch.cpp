@@ -20,13 +20,7 @@ std::string quoted(const std::string& s) {
   return out + "'";
 }
 
-/// A file name for a station (no separators; names are unique, so are these).
-std::string stationFile(const std::string& name) {
-  std::string s = name;
-  for (char& c : s)
-    if (c == '/' || c == '\\' || c == ':' || c == '#' || c == ' ') c = '_';
-  return s + ".e57";
-}
+std::string stationFile(const std::string& name) { return stationFileStem(name) + ".e57"; }
 
 /// Each scan station alone, its points in its own frame (pose identity): what the link
 /// registration sees in a network run.
@@ -65,32 +59,35 @@ std::string jobLine(const LinkPlan& plan, const std::filesystem::path& exe, cons
 
 }  // namespace
 
-std::filesystem::path writeLinkPlan(const LinkPlan& plan, const std::vector<Station>& stations,
-                                    std::vector<Dataset>& datasets, const std::vector<CandidatePair>& pairs) {
-  writeStations(plan.dir, stations, datasets);
-  std::filesystem::create_directories(plan.dir / "links");
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe");
-  nlohmann::json j = {{"format", "plumb-network-plan"}, {"version", 1}, {"seed", plan.seed},
-                      {"settings", plan.settings}, {"model", plan.model}, {"rounds", 1}};
-  j["stations"] = stationNames(stations);
-  j["links"] = nlohmann::json::array();
-  std::vector<std::string> lines;
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const auto& p = pairs[k];
-    const std::string report = "links/" + std::to_string(k) + ".json";
-    j["links"].push_back({{"a", stations[p.a].name}, {"b", stations[p.b].name}, {"reason", p.reason},
-                          {"similarity", p.similarity}, {"onto_model", stations[p.b].is_model}, {"report", report},
-                          {"round", 1}});
-    lines.push_back(jobLine(plan, exe, stations, p, report));
-  }
-  writeFileAtomically(plan.dir / "plan.json", [&](std::ostream& o) { o << j.dump(2) << "\n"; });
-  writeFileAtomically(plan.dir / "jobs.txt", [&](std::ostream& o) {
-    for (const auto& l : lines) o << l << "\n";
-  });
-  return plan.dir / "jobs.txt";
+std::string stationFileStem(const std::string& name) {
+  std::string s = name;
+  for (char& c : s)
+    if (c == '/' || c == '\\' || c == ':' || c == '#') c = '_';
+  return s;
 }
 
 namespace {
+
+/// Appends `pairs` to `plan` as its next round (reports links/K.json numbered on), writes their
+/// jobs to `jobs`, then the plan (it lists the reports the jobs write).
+void writeRound(const LinkPlan& lp, nlohmann::json& plan, const std::vector<Station>& stations,
+                const std::vector<CandidatePair>& pairs, const std::filesystem::path& jobs) {
+  const int round = plan["rounds"].get<int>() + 1;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe");
+  std::vector<std::string> lines;
+  for (const auto& p : pairs) {
+    const std::string report = "links/" + std::to_string(plan["links"].size()) + ".json";
+    plan["links"].push_back({{"a", stations[p.a].name}, {"b", stations[p.b].name}, {"reason", p.reason},
+                             {"similarity", p.similarity}, {"onto_model", stations[p.b].is_model},
+                             {"report", report}, {"round", round}});
+    lines.push_back(jobLine(lp, exe, stations, p, report));
+  }
+  plan["rounds"] = round;
+  writeFileAtomically(jobs, [&](std::ostream& o) {
+    for (const auto& l : lines) o << l << "\n";
+  });
+  writeFileAtomically(lp.dir / "plan.json", [&](std::ostream& o) { o << plan.dump(2) << "\n"; });
+}
 
 nlohmann::json readPlan(const std::filesystem::path& dir) {
   std::ifstream in(dir / "plan.json");
@@ -108,27 +105,25 @@ nlohmann::json readPlan(const std::filesystem::path& dir) {
 
 }  // namespace
 
+std::filesystem::path writeLinkPlan(const LinkPlan& plan, const std::vector<Station>& stations,
+                                    std::vector<Dataset>& datasets, const std::vector<CandidatePair>& pairs) {
+  writeStations(plan.dir, stations, datasets);
+  std::filesystem::create_directories(plan.dir / "links");
+  nlohmann::json j = {{"format", "plumb-network-plan"}, {"version", 1}, {"seed", plan.seed},
+                      {"settings", plan.settings}, {"model", plan.model}, {"rounds", 0}};
+  j["stations"] = stationNames(stations);
+  j["links"] = nlohmann::json::array();
+  writeRound(plan, j, stations, pairs, plan.dir / "jobs.txt");
+  return plan.dir / "jobs.txt";
+}
+
 std::filesystem::path appendLinkRound(const std::filesystem::path& dir, const std::vector<Station>& stations,
                                       const std::vector<CandidatePair>& pairs) {
   nlohmann::json plan = readPlan(dir);
-  const int round = plan.value("rounds", 1) + 1;
   const LinkPlan lp{dir, plan["settings"].get<std::vector<std::string>>(), plan["seed"].get<std::uint64_t>(),
                     plan["model"].get<std::string>()};
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe");
-  std::vector<std::string> lines;
-  for (const auto& p : pairs) {
-    const std::string report = "links/" + std::to_string(plan["links"].size()) + ".json";
-    plan["links"].push_back({{"a", stations[p.a].name}, {"b", stations[p.b].name}, {"reason", p.reason},
-                             {"similarity", p.similarity}, {"onto_model", stations[p.b].is_model},
-                             {"report", report}, {"round", round}});
-    lines.push_back(jobLine(lp, exe, stations, p, report));
-  }
-  plan["rounds"] = round;
-  const auto jobs = dir / ("jobs-" + std::to_string(round) + ".txt");
-  writeFileAtomically(jobs, [&](std::ostream& o) {
-    for (const auto& l : lines) o << l << "\n";
-  });
-  writeFileAtomically(dir / "plan.json", [&](std::ostream& o) { o << plan.dump(2) << "\n"; });
+  const auto jobs = dir / ("jobs-" + std::to_string(plan["rounds"].get<int>() + 1) + ".txt");
+  writeRound(lp, plan, stations, pairs, jobs);
   return jobs;
 }
 

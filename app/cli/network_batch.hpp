@@ -15,6 +15,10 @@
 
 namespace plumb::cli {
 
+/// A station's name as a file name stem: path separators, ':' and '#' become '_' (names are
+/// unique in a network, so are these stems).
+std::string stationFileStem(const std::string& name);
+
 struct LinkPlan {
   std::filesystem::path dir;
   std::vector<std::string> settings;  ///< --set GROUP.KEY=VALUE of the link pipeline, passed on

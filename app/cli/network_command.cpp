@@ -71,9 +71,9 @@ std::optional<ControlSurvey> loadControl(const NetworkOptions& o) {
   c.observations = readTargetObservations(o.targets);
   c.targets_file = o.targets;
   c.sigma = o.target_sigma;
-  c.grid = makeGridFrame(c.points, 1.0);
-  const double k = !o.crs.empty() ? gridScaleFactor(o.crs, c.grid.origin) : o.grid_scale != 0.0 ? o.grid_scale : 1.0;
-  c.grid = makeGridFrame(c.points, k, o.crs);
+  c.grid = makeGridFrame(c.points, 1.0, o.crs);
+  if (!o.crs.empty()) c.grid.scale_factor = gridScaleFactor(o.crs, c.grid.origin);  // at the origin
+  else if (o.grid_scale != 0.0) c.grid.scale_factor = o.grid_scale;
   return c;
 }
 
@@ -119,12 +119,7 @@ std::vector<Station> loadStations(const NetworkOptions& o, std::vector<Dataset>&
   return stations;
 }
 
-std::string fileNameOf(const std::string& station) {
-  std::string s = station;
-  for (char& c : s)
-    if (c == '/' || c == '\\' || c == ':' || c == '#') c = '_';
-  return s + ".json";
-}
+
 
 void writeResults(const NetworkOptions& o, const NetworkResult& r, const std::vector<Station>& stations,
                   const std::vector<Dataset>& datasets) {
@@ -149,7 +144,7 @@ void writeResults(const NetworkOptions& o, const NetworkResult& r, const std::ve
   if (!o.transforms.empty()) {
     std::filesystem::create_directories(o.transforms);
     for (std::size_t i = 0; i < stations.size(); ++i)
-      if (!stations[i].is_model) writeTransformFile(std::filesystem::path(o.transforms) / fileNameOf(stations[i].name),
+      if (!stations[i].is_model) writeTransformFile(std::filesystem::path(o.transforms) / (stationFileStem(stations[i].name) + ".json"),
                          *stationTransform(r, stations, i));
     std::cout << "wrote " << stations.size() - (o.model.empty() ? 0 : 1) << " transforms to " << o.transforms << "\n";
   }
@@ -203,10 +198,8 @@ int writePlan(const NetworkOptions& o, const NetworkParams& p, std::vector<Stati
               std::vector<Dataset>& datasets, Progress& progress) {
   detectFeatures(stations, p, progress);
   LinkPlan plan{o.plan, {}, p.link.seed, o.model};
-  for (const auto& s : o.settings) {
-    const std::string group = s.substr(0, s.find('.'));
-    if (group != "pair-selection" && group != "link-weights" && group != "pose-graph") plan.settings.push_back(s);
-  }
+  for (const auto& s : o.settings)  // the links' own settings: what register needs
+    if (!isNetworkParamPath(s.substr(0, s.find('=')))) plan.settings.push_back(s);
   const auto pairs = plannedPairs(stations, p);
   const auto jobs = writeLinkPlan(plan, stations, datasets, pairs);
   if (isatty(2)) std::cerr << "\r\033[K";
@@ -220,12 +213,8 @@ int writePlan(const NetworkOptions& o, const NetworkParams& p, std::vector<Stati
 /// jobs, as a network run would register next (the adjustment still reports the parts).
 void planNextRound(const NetworkOptions& o, const NetworkParams& p, std::vector<Station>& stations,
                    const std::vector<Link>& links, Progress& progress) {
-  std::vector<GraphEdge> accepted;
-  for (const auto& l : links)
-    if (l.accepted) accepted.push_back({l.a, l.b, l.transform});
-  const auto parts = connectedComponents(stations.size(), accepted);
-  if (*std::max_element(parts.begin(), parts.end()) == 0) return;
-  detectFeatures(stations, p, progress);
+  if (!acceptedLinksSplit(stations.size(), links)) return;
+  detectFeatures(stations, p, progress);  // the pairs between the parts are chosen by layout
   const auto pairs = expansionRound(stations, links, p);
   if (pairs.empty()) return;
   const auto jobs = appendLinkRound(o.links_from, stations, pairs);

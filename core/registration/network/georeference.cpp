@@ -78,7 +78,7 @@ PoseGraphProblem controlProblem(const ControlSurvey& survey, const std::vector<S
   for (std::size_t k = 0; k < links.size(); ++k) {
     const auto& l = links[k];
     if (!a.links[k].dropped && a.poses[l.a] && a.poses[l.b])
-      pg.edges.push_back({l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg * M_PI / 180.0});
+      pg.edges.push_back(poseGraphEdge(l));
   }
   for (const auto& s : seen)
     if (!survey.points[s.point].check)
@@ -118,9 +118,8 @@ void writeBack(const PoseGraphSolution& s, const RigidTransform& fit, const Grid
     const auto& l = links[k];
     LinkOutcome& o = a.links[k];
     if (o.dropped || !a.poses[l.a] || !a.poses[l.b]) continue;
-    o.residual = edgeResidual({l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg * M_PI / 180.0},
-                              s.poses[l.a], s.poses[l.b]);
-    o.flagged = o.residual.translation > params.flag_translation || o.residual.rotation_deg > params.flag_rotation;
+    o.residual = edgeResidual(poseGraphEdge(l), s.poses[l.a], s.poses[l.b]);
+    o.flagged = beyondFlag(o.residual, params);
   }
   a.covariance_ok = s.covariance_ok;
   a.converged = s.converged;

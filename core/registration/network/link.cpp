@@ -35,12 +35,8 @@ std::vector<LinkAlternative> alternativesOf(const PipelineResult& r) {
 
 namespace {
 
-RigidTransform matrixFrom(const nlohmann::json& m) {
-  Eigen::Matrix4d t;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) t(r, c) = m.at(r).at(c).get<double>();
-  return RigidTransform(t.topLeftCorner<3, 3>(), t.topRightCorner<3, 1>());
-}
+/// A report's 4x4 array, read and checked as a transform file's "matrix".
+RigidTransform matrixFrom(const nlohmann::json& m) { return transformFromJson(nlohmann::json{{"matrix", m}}.dump()); }
 
 VerdictLevel levelFrom(const std::string& s) {
   for (const VerdictLevel l : {VerdictLevel::Usable, VerdictLevel::CheckVisually, VerdictLevel::Failed})

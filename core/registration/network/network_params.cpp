@@ -71,19 +71,27 @@ nlohmann::json networkParamsToJson(const NetworkParams& p) {
   return j;
 }
 
-void setNetworkParam(NetworkParams& p, const std::string& path, const std::string& text) {
+bool isNetworkParamPath(const std::string& path) {
   const auto dot = path.find('.');
-  bool found_group = false, set = false;
-  if (dot != std::string::npos) {
-    const std::string group = path.substr(0, dot), key = path.substr(dot + 1);
-    forEachNetworkParamGroup(p, [&](const char* name, const char*, const auto& schema, auto& params) {
-      if (group != name) return;
-      found_group = true;
-      set = setParam(schema, params, key, text);
-    });
-    if (found_group && !set) throw InputError("group '" + group + "' has no parameter '" + key + "'");
-  }
-  if (!found_group) setPipelineParam(p.link, path, text);
+  if (dot == std::string::npos) return false;
+  const std::string group = path.substr(0, dot);
+  bool found = false;
+  const NetworkParams defaults;
+  forEachNetworkParamGroup(defaults, [&](const char* name, const char*, const auto&, const auto&) {
+    found = found || group == name;
+  });
+  return found;
+}
+
+void setNetworkParam(NetworkParams& p, const std::string& path, const std::string& text) {
+  if (!isNetworkParamPath(path)) return setPipelineParam(p.link, path, text);
+  const auto dot = path.find('.');
+  const std::string group = path.substr(0, dot), key = path.substr(dot + 1);
+  bool set = false;
+  forEachNetworkParamGroup(p, [&](const char* name, const char*, const auto& schema, auto& params) {
+    if (group == name) set = setParam(schema, params, key, text);
+  });
+  if (!set) throw InputError("group '" + group + "' has no parameter '" + key + "'");
 }
 
 void validateNetworkParams(const NetworkParams& p) {

@@ -88,6 +88,9 @@ void forEachNetworkParamGroup(P& p, F&& f) {
 
 /// {"pair-selection": {...}, "link-weights": {...}, "pose-graph": {...}, "link": {pipeline}}.
 nlohmann::json networkParamsToJson(const NetworkParams& p);
+/// "GROUP.KEY" names a parameter of a network group (pair-selection, link-weights, pose-graph),
+/// not of the link pipeline.
+bool isNetworkParamPath(const std::string& path);
 /// Sets "GROUP.KEY" of a network group, or of the link pipeline (any other path, as
 /// setPipelineParam). Throws InputError naming the group or key.
 void setNetworkParam(NetworkParams& p, const std::string& path, const std::string& text);

@@ -74,9 +74,9 @@ void registerLinks(const std::vector<Station>& stations, const NetworkParams& pa
   while (!pairs.empty()) {
     ++out.rounds;
     registerPairs(stations, pairs, params, out, tried, progress);
-    const auto component = connectedComponents(stations.size(), acceptedEdges(out.links));
-    if (*std::max_element(component.begin(), component.end()) == 0) break;
-    pairs = expansionPairs(similarity, component, tried, params.pairs);
+    if (!acceptedLinksSplit(stations.size(), out.links)) break;
+    pairs = expansionPairs(similarity, connectedComponents(stations.size(), acceptedEdges(out.links)), tried,
+                           params.pairs);
   }
 }
 
@@ -180,19 +180,23 @@ std::vector<CandidatePair> plannedPairs(const std::vector<Station>& stations, co
   return firstPairs(stations, nodeSimilarity(stations), params.pairs);
 }
 
+bool acceptedLinksSplit(std::size_t stations, const std::vector<Link>& links) {
+  const auto component = connectedComponents(stations, acceptedEdges(links));
+  return *std::max_element(component.begin(), component.end()) > 0;
+}
+
 std::vector<CandidatePair> expansionRound(const std::vector<Station>& stations, const std::vector<Link>& links,
                                           const NetworkParams& params) {
-  const auto component = connectedComponents(stations.size(), acceptedEdges(links));
-  if (*std::max_element(component.begin(), component.end()) == 0) return {};
+  if (!acceptedLinksSplit(stations.size(), links)) return {};
   std::set<std::pair<std::size_t, std::size_t>> tried;
   for (const auto& l : links) tried.insert({std::min(l.a, l.b), std::max(l.a, l.b)});
-  return expansionPairs(nodeSimilarity(stations), component, tried, params.pairs);
+  return expansionPairs(nodeSimilarity(stations), connectedComponents(stations.size(), acceptedEdges(links)), tried,
+                        params.pairs);
 }
 
 NetworkResult adjustRegisteredLinks(const std::vector<Station>& stations, std::vector<Link> links,
                                     std::size_t reference, const NetworkParams& params, const ControlSurvey* control) {
   checkNetwork(stations, reference, params);
-  if (control) checkObservations(*control, stationNames(stations));
   NetworkResult out;
   out.reference = reference;
   out.all_pairs = stations.size() * (stations.size() - 1) / 2;

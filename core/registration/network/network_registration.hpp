@@ -72,6 +72,9 @@ NetworkResult registerNetwork(const std::vector<Station>& stations, std::size_t 
 /// `stations` carry their features. Throws InputError as registerNetwork.
 std::vector<CandidatePair> plannedPairs(const std::vector<Station>& stations, const NetworkParams& params);
 
+/// The accepted `links` leave the network of `stations` nodes in several parts.
+bool acceptedLinksSplit(std::size_t stations, const std::vector<Link>& links);
+
 /// While the accepted `links` leave the network split: the next round of pairs between its parts
 /// (not yet tried, most similar first), as registerNetwork would register next; empty when the
 /// network is connected or every pair between the parts was tried. `stations` carry features.

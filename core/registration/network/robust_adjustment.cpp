@@ -50,7 +50,7 @@ PoseGraphProblem problemFor(const std::vector<AdjustmentLink>& links, const std:
   for (std::size_t k : kept) {
     const auto& l = links[k];
     if (initial[l.a] && initial[l.b])
-      pg.edges.push_back({l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg * M_PI / 180.0});
+      pg.edges.push_back(poseGraphEdge(l));
   }
   return pg;
 }
@@ -82,9 +82,7 @@ std::vector<std::size_t> solveOnce(std::size_t stations, const std::vector<Adjus
   for (std::size_t k = 0; k < links.size(); ++k) {
     const auto& l = links[k];
     if (out.poses[l.a] && out.poses[l.b])
-      out.links[k].residual = edgeResidual({l.a, l.b, l.transform, l.sigma_translation,
-                                            l.sigma_rotation_deg * M_PI / 180.0},
-                                           *out.poses[l.a], *out.poses[l.b]);
+      out.links[k].residual = edgeResidual(poseGraphEdge(l), *out.poses[l.a], *out.poses[l.b]);
   }
   return tree;
 }
@@ -108,8 +106,7 @@ void summarise(std::size_t stations, const std::vector<AdjustmentLink>& links, c
                const std::vector<std::size_t>& tree, std::size_t reference, const RigidTransform& reference_pose,
                const PoseGraphParams& params, NetworkAdjustment& out) {
   for (auto& o : out.links)
-    o.flagged = o.dropped || o.residual.translation > params.flag_translation ||
-                o.residual.rotation_deg > params.flag_rotation;
+    o.flagged = o.dropped || beyondFlag(o.residual, params);
   const auto edges = graphEdges(links, kept);
   const auto bridge = bridgeEdges(stations, edges);
   for (std::size_t i = 0; i < kept.size(); ++i) out.links[kept[i]].bridge = bridge[i];
@@ -120,6 +117,14 @@ void summarise(std::size_t stations, const std::vector<AdjustmentLink>& links, c
 }
 
 }  // namespace
+
+PoseGraphEdge poseGraphEdge(const AdjustmentLink& l) {
+  return {l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg * M_PI / 180.0};
+}
+
+bool beyondFlag(const EdgeResidual& r, const PoseGraphParams& p) {
+  return r.translation > p.flag_translation || r.rotation_deg > p.flag_rotation;
+}
 
 NetworkAdjustment adjustNetwork(std::size_t stations, const std::vector<AdjustmentLink>& links,
                                 std::size_t reference, const RigidTransform& reference_pose,

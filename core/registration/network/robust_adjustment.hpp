@@ -50,6 +50,12 @@ struct NetworkAdjustment {
   std::string message;  ///< the last solver summary
 };
 
+/// The pose-graph edge of a link (its rotation sigma in radians).
+PoseGraphEdge poseGraphEdge(const AdjustmentLink& link);
+
+/// A link's residual beyond the flag thresholds: the link disagrees with the network.
+bool beyondFlag(const EdgeResidual& residual, const PoseGraphParams& params);
+
 /// `forced`: links (indices into `links`) taken as true: first in the initial tree and never
 /// dropped (competing_placements.hpp asks what the network says if a dropped link was right).
 NetworkAdjustment adjustNetwork(std::size_t stations, const std::vector<AdjustmentLink>& links,

@@ -84,8 +84,6 @@ struct RefineTarget::Data {
   Cloud::Ptr cloud;        ///< thinned target, local frame (a point target)
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
   std::vector<Eigen::Vector3d> normals;
-  /// A point target's normals face the stations that saw each point (visibility rule on).
-  bool oriented = false;
   std::unique_ptr<refine_detail::PointSurface> points;
   std::unique_ptr<refine_detail::TriangleTarget> triangles;  ///< a model target
 };
@@ -123,11 +121,9 @@ RefineTarget::RefineTarget(const PointCloud& target, const RefineParams& p,
                                    stations_known ? &first : nullptr);
   d_->tree.setInputCloud(d_->cloud);
   d_->normals = refine_detail::targetNormals(*d_->cloud, d_->tree, p.voxel_size);
-  if (stations_known) {
+  if (stations_known)
     refine_detail::orientTowards(*d_->cloud, targetStations(target, first, viewpoint, d_->origin), d_->normals);
-    d_->oriented = true;
-  }
-  d_->points = std::make_unique<refine_detail::PointSurface>(*d_->cloud, d_->tree, d_->normals, d_->oriented);
+  d_->points = std::make_unique<refine_detail::PointSurface>(*d_->cloud, d_->tree, d_->normals, stations_known);
 }
 
 RefineTarget::RefineTarget(const TriangleMesh& mesh, const RefineParams& p) : d_(std::make_unique<Data>()) {
@@ -272,7 +268,7 @@ RefineResult refineRegistration(const PointCloud& source, const RefineTarget& pr
   RefineResult res;
   // Both sides' stations known: correspondences on surfaces both stations saw.
   refine_detail::SourceRays rays;
-  const bool seen = d.oriented && p.both_stations && p.method == RefineParams::Method::PointToPlane;
+  const bool seen = d.points->oriented() && p.both_stations && p.method == RefineParams::Method::PointToPlane;
   const Cloud::Ptr src = usedSourcePoints(source, initial, d.origin, p, seen ? &rays : nullptr, source_viewpoint);
   const refine_detail::SourceViewers viewers = rays.origins.empty() ? nullptr : &rays.origins;
   res.source_points = src->size();

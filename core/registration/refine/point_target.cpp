@@ -139,23 +139,14 @@ bool PointSurface::nearestSeenFrom(const Eigen::Vector3d& x, const Eigen::Vector
                                    double max_d, Eigen::Vector3d& q, Eigen::Vector3d& n) const {
   if (!oriented_) return nearest(x, max_d, q, n);
   // The nearest point first (most are seen from both sides' stations); further ones only when
-  // its front faces away (a wall's other face, the far side of a thin partition), in two
-  // widening rounds: the other face of a wall can hold dozens of points nearer than this one.
+  // its front faces away (a wall's other face, the far side of a thin partition), in widening
+  // rounds: the other face of a wall can hold dozens of points nearer than this one.
   thread_local std::vector<int> idx;
   thread_local std::vector<float> d2;
   const pcl::PointXYZ p(float(x.x()), float(x.y()), float(x.z()));
   const float max_d2 = float(max_d * max_d);
-  if (tree_.nearestKSearch(p, 1, idx, d2) < 1 || d2[0] > max_d2) return false;
-  if (const Eigen::Vector3d& n0 = normals_[idx[0]]; n0.allFinite()) {
-    const Eigen::Vector3d q0 = cloud_[idx[0]].getVector3fMap().cast<double>();
-    if (n0.dot(viewer - q0) > 0) {
-      q = q0;
-      n = n0;
-      return true;
-    }
-  }
-  int searched = 1;
-  for (const int k : {kSeenCandidates, 8 * kSeenCandidates}) {
+  int searched = 0;
+  for (const int k : {1, kSeenCandidates, 8 * kSeenCandidates}) {
     const int found = tree_.nearestKSearch(p, k, idx, d2);
     for (int i = searched; i < found; ++i) {
       if (d2[i] > max_d2) return false;

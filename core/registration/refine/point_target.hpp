@@ -45,11 +45,13 @@ class PointSurface final : public TargetSurface {
       : cloud_(cloud), tree_(tree), normals_(normals), oriented_(oriented) {}
   bool nearest(const Eigen::Vector3d& x, double max_d, Eigen::Vector3d& q,
                Eigen::Vector3d& n) const override;
-  /// The nearest point within max_d whose front faces `viewer`, among the kSeenCandidates
-  /// nearest, then the 8 kSeenCandidates nearest (false beyond).
+  /// The nearest point within max_d whose front faces `viewer`: the nearest, else among the
+  /// kSeenCandidates nearest, then the 8 kSeenCandidates nearest (false beyond).
   bool nearestSeenFrom(const Eigen::Vector3d& x, const Eigen::Vector3d& viewer, double max_d,
                        Eigen::Vector3d& q, Eigen::Vector3d& n) const override;
   static constexpr int kSeenCandidates = 8;
+  /// The normals face the target's own stations: nearestSeenFrom applies its rule.
+  bool oriented() const { return oriented_; }
 
  private:
   const Cloud& cloud_;
