@@ -13,6 +13,7 @@ class LogPanel;
 class PropertiesPanel;
 class RegistrationPanel;
 class ManualAlignPanel;
+class NetworkPanel;
 class MeasureTool;
 class RecentFiles;
 class Scene;
@@ -31,6 +32,7 @@ struct AppContext {
   QUndoStack& undo;  ///< every applied transform (Edit > Undo/Redo)
   RegistrationPanel* registration = nullptr;  ///< the Registration dock (set once built)
   ManualAlignPanel* manual = nullptr;         ///< the Manual alignment dock
+  NetworkPanel* network = nullptr;            ///< the Network dock (stations as one network)
   MeasureTool* measure = nullptr;             ///< View > Measure (view clicks measure while on)
   /// Memory budget promised to point files still loading (load_budget.hpp, loadShare), bytes.
   std::uint64_t loads_reserved = 0;

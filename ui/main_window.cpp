@@ -19,6 +19,7 @@
 #include "ui/actions/open_file_reaction.hpp"
 #include "ui/actions/help_reactions.hpp"
 #include "ui/actions/inspection_reactions.hpp"
+#include "ui/actions/network_reaction.hpp"
 #include "ui/actions/project_reactions.hpp"
 #include "ui/actions/registration_step_reaction.hpp"
 #include "ui/actions/recent_files.hpp"
@@ -31,6 +32,7 @@
 #include "ui/actions/zoom_to_layer_reaction.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/lod/detail_controller.hpp"
+#include "ui/network/network_panel.hpp"
 #include "ui/inspection/clip_panel.hpp"
 #include "ui/inspection/measure_tool.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
@@ -70,6 +72,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
       new AppContext{*this, *view, *scene, *tasks, *log, *tree, *properties, *recent, *undo});
   context_->registration = new RegistrationPanel(*context_, this);
   context_->manual = new ManualAlignPanel(*context_, this);
+  context_->network = new NetworkPanel(*context_, this);
   context_->measure = new MeasureTool(*context_, this);
   lod_ = new LodController(*view, *scene, this);
   new DetailController(*context_, *lod_, this);  // full-resolution detail of subsampled files
@@ -135,6 +138,7 @@ void MainWindow::createDocks() {
       dock(tr("Manual alignment"), "manualDock", context_->manual, Qt::RightDockWidgetArea);
   manual->hide();
   dock(tr("Clipping"), "clipDock", new ClipPanel(*context_, this), Qt::RightDockWidgetArea)->hide();
+  dock(tr("Network"), "networkDock", context_->network, Qt::BottomDockWidgetArea)->hide();
 }
 
 void MainWindow::createMenus() {
@@ -172,6 +176,8 @@ void MainWindow::createMenus() {
       {tr("Re&vert result"), Step::Revert, "Ctrl+Backspace"}};
   for (const auto& [label, step, key] : steps)
     new RegistrationStepReaction(reg->addAction(label, QKeySequence(key)), app, step);
+  reg->addSeparator();
+  new NetworkReaction(reg->addAction(tr("Register stations as a &network...")), app);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   // Ctrl+1..5: the standard views in menu order.

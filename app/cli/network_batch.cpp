@@ -25,11 +25,11 @@ std::string stationFile(const std::string& name) { return stationFileStem(name) 
 /// Each scan station alone, its points in its own frame (pose identity): what the link
 /// registration sees in a network run.
 void writeStations(const std::filesystem::path& dir, const std::vector<Station>& stations,
-                   std::vector<Dataset>& datasets) {
+                   std::vector<BoundedDataset>& datasets) {
   std::filesystem::create_directories(dir / "stations");
   std::size_t i = 0;
   for (auto& d : datasets)
-    for (auto& scan : d.scans) {
+    for (auto& scan : d.data.scans) {
       Dataset one;
       one.format = "e57";
       Scan s = std::move(scan);
@@ -106,7 +106,7 @@ nlohmann::json readPlan(const std::filesystem::path& dir) {
 }  // namespace
 
 std::filesystem::path writeLinkPlan(const LinkPlan& plan, const std::vector<Station>& stations,
-                                    std::vector<Dataset>& datasets, const std::vector<CandidatePair>& pairs) {
+                                    std::vector<BoundedDataset>& datasets, const std::vector<CandidatePair>& pairs) {
   writeStations(plan.dir, stations, datasets);
   std::filesystem::create_directories(plan.dir / "links");
   nlohmann::json j = {{"format", "plumb-network-plan"}, {"version", 1}, {"seed", plan.seed},

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "model/dataset.hpp"
+#include "registration/bounded/bounded_datasets.hpp"
 #include "registration/network/link.hpp"
 
 namespace plumb::cli {
@@ -26,10 +27,11 @@ struct LinkPlan {
   std::string model;  ///< the BIM's file (the last station), empty without one
 };
 
-/// Writes DIR/stations/*.e57 (moving the scans out of `datasets`, in station order), DIR/links/,
+/// Writes DIR/stations/*.e57 (moving the scans out of `datasets`, in station order: a file above
+/// the memory budget gives its stations' subsamples, what the network's links register), DIR/links/,
 /// DIR/jobs.txt and DIR/plan.json for `pairs`; returns the jobs file. Written atomically.
 std::filesystem::path writeLinkPlan(const LinkPlan& plan, const std::vector<Station>& stations,
-                                    std::vector<Dataset>& datasets, const std::vector<CandidatePair>& pairs);
+                                    std::vector<BoundedDataset>& datasets, const std::vector<CandidatePair>& pairs);
 
 /// Appends `pairs` (an expansion round: the planned links left the network split) to
 /// DIR/plan.json as round R and writes their jobs to DIR/jobs-R.txt, which it returns; the

@@ -24,6 +24,7 @@
 // parameter (GROUP.KEY / KEY as in plumb-cli register) for the links.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -35,7 +36,10 @@
 #include "cli/written_output.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "io/e57/e57_writer.hpp"
 #include "io/io.hpp"
+#include "io/stream/e57_convert.hpp"
+#include "registration/bounded/bounded_datasets.hpp"
 #include "registration/network/network_report.hpp"
 #include "report/network_html.hpp"
 #include "report/report_builder.hpp"
@@ -48,6 +52,7 @@ struct NetworkOptions {
   std::string reference, model, output, transforms, seed;
   std::string control, targets, crs;  ///< control points, target observations, grid CRS
   std::string plan, links_from;       ///< batch link jobs: write them / read their reports
+  std::vector<std::string> accept, reject, lock;  ///< the surveyor's decisions (NetworkDecisions)
   double grid_scale = 0.0;            ///< 0: from --crs, else 1
   double target_sigma = 0.002;
   bool print_params = false;
@@ -104,43 +109,57 @@ void checkOutputs(const NetworkOptions& o) {
     throw InputError("network: --transforms '" + o.transforms + "' exists and is not a directory");
 }
 
-/// Reads every input; the datasets are kept to write the registered E57.
-std::vector<Station> loadStations(const NetworkOptions& o, std::vector<Dataset>& datasets) {
+/// Reads every input within the memory budget (whole, or each file's voxel subsample when
+/// together they exceed it); the datasets are kept to write the registered E57.
+std::vector<Station> loadStations(const NetworkOptions& o, const NetworkParams& p, std::vector<BoundedDataset>& datasets) {
+  datasets = readDatasetsWithin({o.inputs.begin(), o.inputs.end()}, p.link);
   std::vector<Station> stations;
-  for (const auto& path : o.inputs) {
-    LoadedData data = readFile(path);
-    if (!std::holds_alternative<Dataset>(data))
-      throw FileError(path, "is a model: give it with --model (every station is then registered onto it)");
-    datasets.push_back(std::move(std::get<Dataset>(data)));
-    for (auto& s : stationsOf(datasets.back(), path)) stations.push_back(std::move(s));
+  for (const auto& d : datasets) {
+    if (d.subsampled)
+      std::cerr << "plumb-cli: " << d.path.string() << ": " << d.estimated_points
+                << " points: the inputs exceed the memory budget together; registering a " << d.voxel * 100
+                << " cm voxel subsample of " << d.points_kept << " of " << d.points_read
+                << " points (-o streams every point again)\n";
+    for (auto& s : stationsOf(d.data, d.path.string())) {
+      s.subsample_voxel = d.voxel;
+      stations.push_back(std::move(s));
+    }
   }
   makeStationNamesUnique(stations);
   if (!o.model.empty()) stations.push_back(modelStation(readModel(o.model), o.model));  // last: the reference
   return stations;
 }
 
-
+/// -o: every station with its adjusted pose, one scan each, written as it comes (a subsampled
+/// file is streamed again at full resolution; one scan held at a time).
+void writeRegisteredStations(const std::string& path, const NetworkResult& r, const std::vector<Station>& stations,
+                             const std::vector<BoundedDataset>& datasets) {
+  E57StreamWriter writer(path);
+  std::size_t i = 0;
+  std::string crs;
+  for (const auto& d : datasets) {
+    if (crs.empty()) crs = d.data.coordinate_system;
+    std::vector<ScanHeader> headers;
+    for (std::size_t k = 0; k < d.data.scans.size(); ++k, ++i) headers.push_back({stations[i].name, *r.adjustment.poses[i]});
+    if (d.subsampled) {
+      appendRePosedScans(d.path, writer, headers);
+      continue;
+    }
+    for (std::size_t k = 0; k < d.data.scans.size(); ++k) {
+      Scan s = d.data.scans[k];
+      s.name = headers[k].name;
+      s.pose = headers[k].pose;
+      s.has_pose = true;
+      writer.writeScan(s);
+    }
+  }
+  writer.finish(crs);
+  printWritten(path, writer.points(), writer.scans(), WriteReport{});
+}
 
 void writeResults(const NetworkOptions& o, const NetworkResult& r, const std::vector<Station>& stations,
-                  const std::vector<Dataset>& datasets) {
-  if (!o.output.empty()) {
-    Dataset out;
-    out.format = "e57";
-    std::size_t i = 0;
-    for (const auto& d : datasets)
-      for (const auto& scan : d.scans) {
-        Scan s = scan;
-        s.name = stations[i].name;
-        s.pose = *r.adjustment.poses[i++];
-        s.has_pose = true;
-        out.scans.push_back(std::move(s));
-      }
-    WriteReport written;
-    WriteOptions options;
-    options.report = &written;
-    writeDataset(o.output, out, options);
-    printWritten(o.output, out, written);
-  }
+                  const std::vector<BoundedDataset>& datasets) {
+  if (!o.output.empty()) writeRegisteredStations(o.output, r, stations, datasets);
   if (!o.transforms.empty()) {
     std::filesystem::create_directories(o.transforms);
     for (std::size_t i = 0; i < stations.size(); ++i)
@@ -152,7 +171,7 @@ void writeResults(const NetworkOptions& o, const NetworkResult& r, const std::ve
 
 /// Reports, exit code, the reasons of an incomplete network on stderr, and the outputs.
 int finish(const NetworkOptions& o, const NetworkResult& r, const std::vector<Station>& stations,
-           const std::vector<Dataset>& datasets) {
+           const std::vector<BoundedDataset>& datasets) {
   const nlohmann::json json_report = networkReportToJson(r, stations);
   for (const auto& path : o.reports)
     writeFileAtomically(path, [&](std::ostream& out) {
@@ -195,7 +214,7 @@ void detectFeatures(std::vector<Station>& stations, const NetworkParams& p, Prog
 
 /// --plan DIR: the first round's link jobs (network_batch.hpp).
 int writePlan(const NetworkOptions& o, const NetworkParams& p, std::vector<Station>& stations,
-              std::vector<Dataset>& datasets, Progress& progress) {
+              std::vector<BoundedDataset>& datasets, Progress& progress) {
   detectFeatures(stations, p, progress);
   LinkPlan plan{o.plan, {}, p.link.seed, o.model};
   for (const auto& s : o.settings)  // the links' own settings: what register needs
@@ -224,6 +243,43 @@ void planNextRound(const NetworkOptions& o, const NetworkParams& p, std::vector<
             << o.links_from << " again\n";
 }
 
+/// "A,B": the two stations of a link, split at the comma that leaves two station names.
+std::pair<std::size_t, std::size_t> stationPair(const std::vector<Station>& stations, const std::string& spec,
+                                                const char* option) {
+  for (std::size_t comma = spec.find(','); comma != std::string::npos; comma = spec.find(',', comma + 1)) {
+    const auto names = stationNames(stations);
+    const std::string a = spec.substr(0, comma), b = spec.substr(comma + 1);
+    if (std::count(names.begin(), names.end(), a) && std::count(names.begin(), names.end(), b))
+      return {findStation(stations, a), findStation(stations, b)};
+  }
+  throw InputError(std::string("network: ") + option + " '" + spec +
+                   "': give the link as STATION,STATION (two station names, as in the report)");
+}
+
+/// --accept, --reject, --lock. A locked station keeps its pose in its file, as the reference
+/// does (the file frame must then be the registered frame).
+NetworkDecisions decisionsOf(const NetworkOptions& o, const std::vector<Station>& stations) {
+  NetworkDecisions d;
+  for (const auto& s : o.accept) d.accepted.push_back(stationPair(stations, s, "--accept"));
+  for (const auto& s : o.reject) d.rejected.push_back(stationPair(stations, s, "--reject"));
+  for (const auto& name : o.lock) {
+    const std::size_t i = findStation(stations, name);
+    if (stations[i].is_model) throw InputError("network: --lock " + name + ": the model is the reference already");
+    d.locked[i] = stations[i].file_pose;
+  }
+  return d;
+}
+
+/// The registered network adjusted again with the surveyor's decisions (its rounds and times kept).
+NetworkResult readjusted(NetworkResult first, const std::vector<Station>& stations, const NetworkParams& p,
+                         const ControlSurvey* c, const NetworkDecisions& decisions) {
+  NetworkResult r = adjustRegisteredLinks(stations, std::move(first.links), first.reference, p, c, decisions);
+  r.rounds = first.rounds;
+  r.seconds_features = first.seconds_features;
+  r.seconds_links = first.seconds_links;
+  return r;
+}
+
 int run(const NetworkOptions& o) {
   const NetworkParams p = loadParams(o);
   if (o.print_params) {
@@ -232,8 +288,8 @@ int run(const NetworkOptions& o) {
   }
   if (o.inputs.empty()) throw InputError("network: give the station files (or --print-params)");
   checkOutputs(o);
-  std::vector<Dataset> datasets;
-  std::vector<Station> stations = loadStations(o, datasets);
+  std::vector<BoundedDataset> datasets;
+  std::vector<Station> stations = loadStations(o, p, datasets);
   if (!o.model.empty() && !o.reference.empty())
     throw InputError("network: --model and --reference exclude each other (with a model, the model is the reference)");
   const std::size_t reference = !o.model.empty()     ? stations.size() - 1
@@ -249,14 +305,16 @@ int run(const NetworkOptions& o) {
   });
   if (!o.plan.empty()) return writePlan(o, p, stations, datasets, progress);
   const ControlSurvey* c = control ? &*control : nullptr;
+  const NetworkDecisions decisions = decisionsOf(o, stations);
   NetworkResult r;
   if (!o.links_from.empty()) {
     std::vector<Link> links = readLinkReports(o.links_from, stations, p);
     planNextRound(o, p, stations, links, progress);
-    r = adjustRegisteredLinks(stations, std::move(links), reference, p, c);
+    r = adjustRegisteredLinks(stations, std::move(links), reference, p, c, decisions);
   } else {
     detectFeatures(stations, p, progress);
     r = registerNetwork(stations, reference, p, &progress, c);
+    if (!decisions.empty()) r = readjusted(std::move(r), stations, p, c, decisions);
   }
   if (tty) std::cerr << "\r\033[K";
   return finish(o, r, stations, datasets);
@@ -302,6 +360,15 @@ void addNetworkCommand(CLI::App& app, Action& action) {
                   "register command per link, plan.json) for a batch engine (GNU parallel, Slurm, Kubernetes)");
   cmd->add_option("--links-from", o->links_from,
                   "Adjust the network from the reports of the link jobs of --plan DIR (same inputs)");
+  cmd->add_option("--accept", o->accept,
+                  "Take the link STATION,STATION as true whatever its verdict (you checked it): first in the "
+                  "initial tree, never dropped; repeatable")
+      ->type_name("A,B");
+  cmd->add_option("--reject", o->reject, "Leave the link STATION,STATION out of the adjustment; repeatable")
+      ->type_name("A,B");
+  cmd->add_option("--lock", o->lock,
+                  "Hold this station at its pose in its file, as the reference is (placed before, or by a total "
+                  "station; its file frame must be the registered frame); repeatable");
   cmd->add_option("--seed", o->seed, "Random seed of every link registration, 0 .. 9e15 (default 1)");
   cmd->add_flag("--print-params", o->print_params, "Write the parameters as JSON to stdout and exit");
   cmd->callback([o, &action] { action = [o] { return run(*o); }; });

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "model/robust_bounds.hpp"
 #include "ui/layers/color_ramp.hpp"
 #include "ui/layers/feature_layer.hpp"
 #include "ui/layers/point_coloring.hpp"
@@ -151,6 +152,26 @@ void DatasetLayer::attachTrajectory(std::shared_ptr<const Dataset> with_origins,
   for (ScanLayer* s : scans()) s->replaceData(with_origins);
   data_ = std::move(with_origins);
   trajectory_ = path;
+}
+
+void DatasetLayer::setScanPoses(const std::vector<RigidTransform>& poses) {
+  if (poses.size() != data_->scans.size()) throw std::invalid_argument("one pose per scan expected");
+  auto reposed = std::make_shared<Dataset>(*data_);
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    reposed->scans[i].pose = poses[i];
+    reposed->scans[i].has_pose = true;
+  }
+  for (ScanLayer* s : scans()) s->replaceData(reposed);
+  data_ = std::move(reposed);
+  exact_bounds_ = data_->bounds();
+  framing_ = robustBounds(datasetSamples(*data_));
+  applyTransform();  // the scans' actors read the new poses
+}
+
+std::vector<RigidTransform> DatasetLayer::scanPoses() const {
+  std::vector<RigidTransform> out;
+  for (const auto& scan : data_->scans) out.push_back(scan.pose);
+  return out;
 }
 
 bool DatasetLayer::takeStaleColours() { return std::exchange(colours_stale_, false); }

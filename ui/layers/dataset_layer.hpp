@@ -100,6 +100,13 @@ class DatasetLayer : public Layer {
   /// the trajectory file `path` (startAttachTrajectory): feature detection, registration and
   /// export use them from now on. Throws std::invalid_argument if the points differ.
   void attachTrajectory(std::shared_ptr<const Dataset> with_origins, const QString& path);
+  /// Gives scan i the pose poses[i] (scan frame -> dataset frame; has_pose set), e.g. a network
+  /// adjustment's: the points stay in their scan frames, a copy of the dataset with the new poses
+  /// replaces the shown one, and the bounds follow. Throws std::invalid_argument when the count
+  /// differs from the scans'.
+  void setScanPoses(const std::vector<RigidTransform>& poses);
+  /// Each scan's pose (scan frame -> dataset frame).
+  std::vector<RigidTransform> scanPoses() const;
   /// The trajectory file attached (empty: none).
   const QString& trajectoryPath() const { return trajectory_; }
 

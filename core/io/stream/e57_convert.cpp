@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "common/error.hpp"
 #include "io/e57/e57_writer.hpp"
 #include "io/stream/point_stream.hpp"
 
@@ -29,23 +30,15 @@ void settleColumns(PointCloud& c, const StreamScanEnd& end) {
   c.dropNegligibleResiduals();
 }
 
-class E57ConvertSink final : public ChunkSink {
+/// Gathers each scan from its chunks and hands it, whole and settled, to scanDone (one scan
+/// held at a time: the E57 prototype needs its bounds before the first value).
+class ScanGatherSink : public ChunkSink {
  public:
-  E57ConvertSink(const std::filesystem::path& out, const ConvertParams& params, Progress* progress)
-      : out_(out), params_(params), progress_(progress) {}
-
-  void begin(const StreamOutline& outline) override {
-    source_ = outline.dataset.source;
-    crs_ = outline.dataset.coordinate_system;
-    if (!params_.split) open(out_);
-  }
   void beginScan(const StreamScan& s) override {
     scan_ = s.scan;
-    scan_.pose = params_.transform * s.scan.pose;
-    scan_.has_pose = s.scan.has_pose || !params_.transform.isIdentity();
     scan_.cloud = PointCloud();
     records_ = s.record_count.value_or(0);
-    if (params_.split) open(splitPath(out_, s.index, s.scan.name));
+    startScan(s, scan_);
   }
   void chunk(const PointCloud& points) override {
     if (scan_.cloud.empty()) {
@@ -57,9 +50,29 @@ class E57ConvertSink final : public ChunkSink {
   }
   void endScan(const StreamScanEnd& end) override {
     settleColumns(scan_.cloud, end);
-    writer_->writeScan(scan_, progress_);
+    scanDone(scan_);
     scan_.cloud = PointCloud();  // released before the next scan
-    if (params_.split) close();  // each station's file keeps the coordinate system
+  }
+
+ protected:
+  /// The scan's header before its points: set its name and pose here.
+  virtual void startScan(const StreamScan& s, Scan& scan) = 0;
+  virtual void scanDone(const Scan& scan) = 0;
+
+ private:
+  Scan scan_;
+  std::uint64_t records_ = 0;  ///< the current scan's record count, when the file says
+};
+
+class E57ConvertSink final : public ScanGatherSink {
+ public:
+  E57ConvertSink(const std::filesystem::path& out, const ConvertParams& params, Progress* progress)
+      : out_(out), params_(params), progress_(progress) {}
+
+  void begin(const StreamOutline& outline) override {
+    source_ = outline.dataset.source;
+    crs_ = outline.dataset.coordinate_system;
+    if (!params_.split) open(out_);
   }
   void end(const StreamOutline&) override {
     if (!params_.split) close();
@@ -67,6 +80,15 @@ class E57ConvertSink final : public ChunkSink {
   ConvertResult result() { return std::move(result_); }
 
  private:
+  void startScan(const StreamScan& s, Scan& scan) override {
+    scan.pose = params_.transform * s.scan.pose;
+    scan.has_pose = s.scan.has_pose || !params_.transform.isIdentity();
+    if (params_.split) open(splitPath(out_, s.index, s.scan.name));
+  }
+  void scanDone(const Scan& scan) override {
+    writer_->writeScan(scan, progress_);
+    if (params_.split) close();  // each station's file keeps the coordinate system
+  }
   void open(const std::filesystem::path& path) {
     refuseSameFile(source_, path);
     E57WriteOptions o;
@@ -88,11 +110,36 @@ class E57ConvertSink final : public ChunkSink {
   std::string crs_;  ///< the source's coordinate system, written into every output file
   const ConvertParams& params_;
   Progress* progress_;
-  Scan scan_;
-  std::uint64_t records_ = 0;  ///< the current scan's record count, when the file says
   std::unique_ptr<E57StreamWriter> writer_;
   ConvertedFile file_;
   ConvertResult result_;
+};
+
+/// Writes each scan of a file into an open writer under a new name and pose.
+class RePoseSink final : public ScanGatherSink {
+ public:
+  RePoseSink(const std::filesystem::path& in, E57StreamWriter& writer, const std::vector<ScanHeader>& headers,
+             Progress* progress)
+      : in_(in), writer_(writer), headers_(headers), progress_(progress) {}
+
+  void begin(const StreamOutline& outline) override {
+    if (outline.scans.size() != headers_.size())
+      throw FileError(in_, "holds " + std::to_string(outline.scans.size()) + " scan(s), not the " +
+                               std::to_string(headers_.size()) + " it held when it was registered (changed since?)");
+  }
+
+ private:
+  void startScan(const StreamScan& s, Scan& scan) override {
+    scan.name = headers_[s.index].name;
+    scan.pose = headers_[s.index].pose;
+    scan.has_pose = true;
+  }
+  void scanDone(const Scan& scan) override { writer_.writeScan(scan, progress_); }
+
+  std::filesystem::path in_;
+  E57StreamWriter& writer_;
+  const std::vector<ScanHeader>& headers_;
+  Progress* progress_;
 };
 
 }  // namespace
@@ -104,6 +151,12 @@ ConvertResult convertToE57Streamed(const std::filesystem::path& in, const std::f
   ConvertResult r = sink.result();
   r.streamed = true;
   return r;
+}
+
+void appendRePosedScans(const std::filesystem::path& in, E57StreamWriter& writer,
+                        const std::vector<ScanHeader>& headers, const StreamOptions& options, Progress* progress) {
+  RePoseSink sink(in, writer, headers, progress);
+  streamDataset(in, options, sink, progress);
 }
 
 }  // namespace plumb

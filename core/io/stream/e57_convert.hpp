@@ -9,11 +9,29 @@
 #include "io/stream/point_convert.hpp"
 
 namespace plumb {
+class E57StreamWriter;
+}
+
+namespace plumb {
 
 /// Converts `in` (any point file streamDataset reads) to the E57 file `out`, or one E57 file
 /// per scan (params.split). Errors as convertPointFile; an error leaves no output of the
 /// failing file (earlier scans of a split stay).
 ConvertResult convertToE57Streamed(const std::filesystem::path& in, const std::filesystem::path& out,
                                    const ConvertParams& params, Progress* progress = nullptr);
+
+/// A scan's new name and pose (scan frame -> output frame) for appendRePosedScans.
+struct ScanHeader {
+  std::string name;
+  RigidTransform pose;
+};
+
+/// Streams every scan k of `in` into `writer` under headers[k]'s name and pose: the points
+/// stay in the scan's frame, only the pose changes (the network's registered stations at full
+/// resolution, one scan held at a time). Throws FileError as streamDataset, and naming `in`
+/// when it no longer holds headers.size() scans.
+void appendRePosedScans(const std::filesystem::path& in, E57StreamWriter& writer,
+                        const std::vector<ScanHeader>& headers, const StreamOptions& options = {},
+                        Progress* progress = nullptr);
 
 }  // namespace plumb

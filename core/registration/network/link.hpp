@@ -42,6 +42,9 @@ struct Link {
   double sigma_rotation_deg = 0.0;  ///< deg
   double seconds = 0.0;
   std::vector<LinkAlternative> alternatives;  ///< empty for links to the BIM (the model report lists those)
+  /// The surveyor's decision (NetworkDecisions): "" none, "accepted" (taken as true, never
+  /// dropped) or "rejected" (left out of the adjustment).
+  std::string decision;
 };
 
 /// Registers station b onto station a with params.link and weighs the result (when b is the

@@ -104,17 +104,20 @@ std::vector<std::size_t> copiesUnchecked(const std::vector<Station>& stations, c
 namespace {
 
 void adjust(const std::vector<Station>& stations, const NetworkParams& params, const ControlSurvey* control,
-            NetworkResult& out) {
+            NetworkResult& out, const LockedStations& locked = {}) {
   std::vector<AdjustmentLink> links;
+  std::vector<std::size_t> forced;  // the surveyor's accepted links, local indices
   for (std::size_t k = 0; k < out.links.size(); ++k) {
     const Link& l = out.links[k];
     if (!l.accepted) continue;
+    if (l.decision == "accepted") forced.push_back(links.size());
     out.adjusted.push_back(k);
     links.push_back({l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg, l.reason == "sequence",
                      stations[l.a].is_model || stations[l.b].is_model});
   }
   const RigidTransform& reference_pose = stations[out.reference].file_pose;
-  out.adjustment = adjustNetwork(stations.size(), links, out.reference, reference_pose, params.graph);
+  out.adjustment = adjustNetwork(stations.size(), links, out.reference, reference_pose, params.graph, forced, locked);
+  for (const auto& [i, pose] : locked) out.locked.push_back(i);
   if (params.graph.check_competing)
     out.competing = findCompetingPlacements(stations.size(), links, out.reference, reference_pose, params.graph,
                                             out.adjustment);
@@ -194,9 +197,33 @@ std::vector<CandidatePair> expansionRound(const std::vector<Station>& stations, 
                         params.pairs);
 }
 
+void applyDecisions(std::vector<Link>& links, const NetworkDecisions& d, const std::vector<Station>& stations) {
+  const auto linkOf = [&](std::pair<std::size_t, std::size_t> p) -> Link& {
+    for (auto& l : links)
+      if ((l.a == p.first && l.b == p.second) || (l.a == p.second && l.b == p.first)) return l;
+    throw InputError("network: no link joins " + stations.at(p.first).name + " and " + stations.at(p.second).name +
+                     " (only registered pairs can be accepted or rejected)");
+  };
+  for (const auto& p : d.rejected) {
+    Link& l = linkOf(p);
+    l.decision = "rejected";
+    l.accepted = false;
+  }
+  for (const auto& p : d.accepted) {
+    Link& l = linkOf(p);
+    const std::string pair = stations[p.first].name + " - " + stations[p.second].name;
+    if (l.decision == "rejected") throw InputError("network: the link " + pair + " is both accepted and rejected");
+    if (!l.registered) throw InputError("network: the link " + pair + " failed (" + l.status + "): there is no transform to accept");
+    l.decision = "accepted";
+    l.accepted = true;
+  }
+}
+
 NetworkResult adjustRegisteredLinks(const std::vector<Station>& stations, std::vector<Link> links,
-                                    std::size_t reference, const NetworkParams& params, const ControlSurvey* control) {
+                                    std::size_t reference, const NetworkParams& params, const ControlSurvey* control,
+                                    const NetworkDecisions& decisions) {
   checkNetwork(stations, reference, params);
+  applyDecisions(links, decisions, stations);
   NetworkResult out;
   out.reference = reference;
   out.all_pairs = stations.size() * (stations.size() - 1) / 2;
@@ -204,7 +231,7 @@ NetworkResult adjustRegisteredLinks(const std::vector<Station>& stations, std::v
   out.rounds = 1;
   for (const auto& l : out.links) out.seconds_links += l.seconds;
   const auto t0 = std::chrono::steady_clock::now();
-  adjust(stations, params, control, out);
+  adjust(stations, params, control, out, decisions.locked);
   out.seconds_adjustment = secondsSince(t0);
   return out;
 }

@@ -18,6 +18,26 @@
 
 namespace plumb {
 
+/// The surveyor's decisions on a registered network (the project view's accept, reject and
+/// lock; `network --accept/--reject/--lock`, docs/NETWORK.md "Decisions"): applied to the
+/// links, then the network is adjusted again.
+struct NetworkDecisions {
+  /// Station pairs whose registered link is taken as true whatever its verdict: first in the
+  /// initial tree, never dropped (the surveyor checked it visually).
+  std::vector<std::pair<std::size_t, std::size_t>> accepted;
+  /// Station pairs whose link is left out of the adjustment.
+  std::vector<std::pair<std::size_t, std::size_t>> rejected;
+  /// Stations held at these poses (station -> registered frame) once the links place them.
+  LockedStations locked;
+  bool empty() const { return accepted.empty() && rejected.empty() && locked.empty(); }
+};
+
+/// Applies the accepted and rejected pairs to `links` (Link::decision, Link::accepted). Throws
+/// InputError naming the stations for a pair no link joins, a pair both accepted and rejected,
+/// or an accepted link the pipeline gave no transform.
+void applyDecisions(std::vector<Link>& links, const NetworkDecisions& decisions,
+                    const std::vector<Station>& stations);
+
 struct NetworkResult {
   std::vector<Link> links;             ///< every pair registered, in the order tried
   std::vector<std::size_t> adjusted;   ///< indices into links of the accepted ones
@@ -40,6 +60,8 @@ struct NetworkResult {
   /// With control points: the network moved into the survey's grid, and each control and check
   /// point's residual (georeference.hpp).
   std::optional<Georeference> georeference;
+  /// Stations the surveyor locked (NetworkDecisions::locked), sorted.
+  std::vector<std::size_t> locked;
   /// In competing.ambiguous or copies_unchecked: adjusted, but not placed.
   bool isAmbiguous(std::size_t i) const;
   /// The ambiguous stations, sorted (the union of the three lists).
@@ -83,9 +105,10 @@ std::vector<CandidatePair> expansionRound(const std::vector<Station>& stations, 
 
 /// The adjustment of links registered elsewhere (`network --links-from`, linkFromReport), as
 /// registerNetwork adjusts its own; no pair is added while the network is split (the parts are
-/// reported). Stations need no features.
+/// reported). Stations need no features. `decisions` are applied first (applyDecisions); the
+/// same call re-runs the adjustment of a registered network with the surveyor's decisions.
 NetworkResult adjustRegisteredLinks(const std::vector<Station>& stations, std::vector<Link> links,
                                     std::size_t reference, const NetworkParams& params,
-                                    const ControlSurvey* control = nullptr);
+                                    const ControlSurvey* control = nullptr, const NetworkDecisions& decisions = {});
 
 }  // namespace plumb

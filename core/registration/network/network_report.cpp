@@ -29,6 +29,7 @@ nlohmann::json linkJson(const NetworkResult& r, const std::vector<Station>& st, 
                       {"sigma_rotation_deg", l.sigma_rotation_deg}, {"accepted", l.accepted},
                       {"seconds", l.seconds}};
   if (l.registered) j["transform"] = matrixJson(l.transform);
+  if (!l.decision.empty()) j["decision"] = l.decision;  // "accepted" / "rejected" (by the surveyor)
   j["alternatives"] = nlohmann::json::array();
   for (const auto& alt : l.alternatives)
     j["alternatives"].push_back({{"role", alt.role}, {"overlap", alt.overlap}, {"point_rms_m", alt.point_rms},
@@ -56,6 +57,8 @@ nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& s
   nlohmann::json j = {{"name", st[i].name}, {"file", st[i].file}, {"scan", st[i].scan_index},
                       {"placed", r.placed(i)}, {"ambiguous", ambiguous}, {"model", st[i].is_model},
                       {"links", links}};
+  if (st[i].subsample_voxel > 0) j["subsample_voxel_m"] = st[i].subsample_voxel;
+  if (std::binary_search(r.locked.begin(), r.locked.end(), i)) j["locked"] = true;
   if (ambiguous)
     j["ambiguous_why"] =
         std::binary_search(r.competing.ambiguous.begin(), r.competing.ambiguous.end(), i)
@@ -214,6 +217,7 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
     if (l["dropped"].get<bool>()) o << "  DROPPED (disagrees with the network)";
     else if (l["flagged"].get<bool>()) o << "  FLAGGED (disagrees with the network)";
     else if (l["bridge"].get<bool>()) o << "  (no loop checks it)";
+    if (l.contains("decision")) o << "  [" << l["decision"].get<std::string>() << " by the surveyor]";
     o << "\n";
   }
   for (const auto& s : j["stations"]) {
@@ -227,6 +231,7 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
       continue;
     }
     const auto& sp = s["sigma_position_m"];
+    if (s.value("locked", false)) o << "locked, ";
     o << std::setprecision(2) << "sigma " << 1000 * sp[0].get<double>() << ", " << 1000 * sp[1].get<double>() << ", "
       << 1000 * sp[2].get<double>() << " mm\n";
   }

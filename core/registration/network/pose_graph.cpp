@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <algorithm>
 #include <memory>
 
 namespace plumb {
@@ -60,6 +61,11 @@ PoseBlocks blocksFrom(const std::vector<RigidTransform>& poses) {
   return b;
 }
 
+/// Station i keeps its initial pose: the fixed reference, or a locked station.
+bool isHeld(const PoseGraphProblem& in, std::size_t i) {
+  return (in.fix_reference && i == in.reference) || std::find(in.fixed.begin(), in.fixed.end(), i) != in.fixed.end();
+}
+
 void addEdges(ceres::Problem& problem, PoseBlocks& b, const PoseGraphProblem& in) {
   for (const auto& e : in.edges) {
     auto* cost = new ceres::AutoDiffCostFunction<RelativePoseCost, 6, 4, 3, 4, 3>(new RelativePoseCost{
@@ -77,7 +83,7 @@ void addEdges(ceres::Problem& problem, PoseBlocks& b, const PoseGraphProblem& in
   for (std::size_t i = 0; i < b.q.size(); ++i) {
     if (!problem.HasParameterBlock(b.q[i].coeffs().data())) continue;
     problem.SetManifold(b.q[i].coeffs().data(), new ceres::EigenQuaternionManifold);
-    if (in.fix_reference && i == in.reference) {
+    if (isHeld(in, i)) {
       problem.SetParameterBlockConstant(b.q[i].coeffs().data());
       problem.SetParameterBlockConstant(b.t[i].data());
     }
@@ -93,14 +99,14 @@ void stationCovariances(ceres::Problem& problem, PoseBlocks& b, const PoseGraphP
   ceres::Covariance covariance(options);
   std::vector<std::pair<const double*, const double*>> blocks;
   for (std::size_t i = 0; i < b.q.size(); ++i)
-    if (!(in.fix_reference && i == in.reference) && problem.HasParameterBlock(b.t[i].data())) {
+    if (!isHeld(in, i) && problem.HasParameterBlock(b.t[i].data())) {
       blocks.emplace_back(b.q[i].coeffs().data(), b.q[i].coeffs().data());
       blocks.emplace_back(b.t[i].data(), b.t[i].data());
     }
   if (blocks.empty() || !covariance.Compute(blocks, &problem)) return;
   out.covariance_ok = true;
   for (std::size_t i = 0; i < b.q.size(); ++i) {
-    if ((in.fix_reference && i == in.reference) || !problem.HasParameterBlock(b.t[i].data())) continue;
+    if (isHeld(in, i) || !problem.HasParameterBlock(b.t[i].data())) continue;
     Eigen::Matrix3d ct, cr;
     covariance.GetCovarianceBlock(b.t[i].data(), b.t[i].data(), ct.data());
     covariance.GetCovarianceBlockInTangentSpace(b.q[i].coeffs().data(), b.q[i].coeffs().data(), cr.data());

@@ -37,6 +37,8 @@ struct PoseGraphProblem {
   std::size_t reference = 0;            ///< held fixed at its initial pose (fix_reference)
   /// Off when point constraints fix the frame (control points): no station is held.
   bool fix_reference = true;
+  /// More stations held at their initial pose (stations the surveyor locked).
+  std::vector<std::size_t> fixed;
   std::vector<PointConstraint> points;  ///< least squares, no robust loss
   std::vector<PoseGraphEdge> edges;     ///< stations in no edge keep their initial pose
   double robust_scale = 3.0;            ///< Cauchy scale on the normalised residual; <= 0: none

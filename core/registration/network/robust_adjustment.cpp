@@ -41,10 +41,12 @@ std::vector<std::size_t> sigmaOrder(const std::vector<AdjustmentLink>& links, co
 
 PoseGraphProblem problemFor(const std::vector<AdjustmentLink>& links, const std::vector<std::size_t>& kept,
                             const std::vector<std::optional<RigidTransform>>& initial, std::size_t reference,
-                            const PoseGraphParams& params) {
+                            const PoseGraphParams& params, const LockedStations& locked) {
   PoseGraphProblem pg;
   for (const auto& p : initial) pg.initial.push_back(p.value_or(RigidTransform()));
   pg.reference = reference;
+  for (const auto& [i, pose] : locked)
+    if (initial.at(i)) pg.fixed.push_back(i);
   pg.robust_scale = params.robust_scale;
   pg.max_iterations = params.max_iterations;
   for (std::size_t k : kept) {
@@ -65,15 +67,18 @@ double dropRatio(const EdgeResidual& r, const PoseGraphParams& p) {
 std::vector<std::size_t> solveOnce(std::size_t stations, const std::vector<AdjustmentLink>& links,
                                    const std::vector<std::size_t>& kept, std::size_t reference,
                                    const RigidTransform& reference_pose, const PoseGraphParams& params,
-                                   const std::vector<bool>& forced, NetworkAdjustment& out) {
+                                   const std::vector<bool>& forced, const LockedStations& locked,
+                                   NetworkAdjustment& out) {
   const auto edges = graphEdges(links, kept);
   const auto support = triangleSupport(stations, edges, params.triangle_tolerance, params.drop_rotation);
   const auto tree = spanningTree(stations, edges, treeOrder(links, kept, support, forced));
   out.poses = chainPoses(stations, edges, tree, reference, reference_pose);
-  const PoseGraphSolution s = solvePoseGraph(problemFor(links, kept, out.poses, reference, params));
+  for (const auto& [i, pose] : locked)
+    if (out.poses.at(i)) out.poses[i] = pose;  // placed by the links, held where the surveyor locked it
+  const PoseGraphSolution s = solvePoseGraph(problemFor(links, kept, out.poses, reference, params, locked));
   ++out.solves;
   for (std::size_t i = 0; i < stations; ++i)
-    if (out.poses[i]) out.poses[i] = s.poses[i];
+    if (out.poses[i] && !locked.count(i)) out.poses[i] = s.poses[i];  // a locked pose stays bit for bit
   out.sigma_position = s.sigma_position;
   out.sigma_rotation_deg = s.sigma_rotation_deg;
   out.converged = s.converged || s.residuals.empty();
@@ -128,7 +133,8 @@ bool beyondFlag(const EdgeResidual& r, const PoseGraphParams& p) {
 
 NetworkAdjustment adjustNetwork(std::size_t stations, const std::vector<AdjustmentLink>& links,
                                 std::size_t reference, const RigidTransform& reference_pose,
-                                const PoseGraphParams& params, const std::vector<std::size_t>& forced_links) {
+                                const PoseGraphParams& params, const std::vector<std::size_t>& forced_links,
+                                const LockedStations& locked) {
   NetworkAdjustment out;
   out.links.resize(links.size());
   std::vector<bool> forced(links.size(), false);
@@ -139,7 +145,7 @@ NetworkAdjustment adjustNetwork(std::size_t stations, const std::vector<Adjustme
                                            params.drop_rotation);
   for (std::size_t k = 0; k < links.size(); ++k) out.links[k].triangles = all_support[k];
   while (true) {
-    const auto tree = solveOnce(stations, links, kept, reference, reference_pose, params, forced, out);
+    const auto tree = solveOnce(stations, links, kept, reference, reference_pose, params, forced, locked, out);
     const std::size_t worst = params.auto_drop ? worstBeyondDrop(kept, out, params, forced) : kept.size();
     if (worst == kept.size()) {
       summarise(stations, links, kept, tree, reference, reference_pose, params, out);

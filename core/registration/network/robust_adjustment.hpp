@@ -4,6 +4,7 @@
 // loss (pose_graph.hpp), then the link whose residual disagrees most with the network beyond
 // the drop thresholds is dropped and the network solved again, until no link is beyond them.
 // Stations the kept links do not connect to the reference are not placed (reported, not forced).
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -56,10 +57,16 @@ PoseGraphEdge poseGraphEdge(const AdjustmentLink& link);
 /// A link's residual beyond the flag thresholds: the link disagrees with the network.
 bool beyondFlag(const EdgeResidual& residual, const PoseGraphParams& params);
 
+/// Stations held at a given pose (station -> reference frame): the surveyor locked them.
+using LockedStations = std::map<std::size_t, RigidTransform>;
+
 /// `forced`: links (indices into `links`) taken as true: first in the initial tree and never
-/// dropped (competing_placements.hpp asks what the network says if a dropped link was right).
+/// dropped (competing_placements.hpp asks what the network says if a dropped link was right;
+/// the surveyor accepts a link). `locked`: stations the links place are held at these poses
+/// (the others still come from the links); the robust loop then drops links that disagree.
 NetworkAdjustment adjustNetwork(std::size_t stations, const std::vector<AdjustmentLink>& links,
                                 std::size_t reference, const RigidTransform& reference_pose,
-                                const PoseGraphParams& params, const std::vector<std::size_t>& forced = {});
+                                const PoseGraphParams& params, const std::vector<std::size_t>& forced = {},
+                                const LockedStations& locked = {});
 
 }  // namespace plumb

@@ -21,6 +21,9 @@ struct Station {
   RegistrationInput input;      ///< points (station frame) and, once detected, features
   LayoutDescriptor layout;
   double seconds_features = 0.0;
+  /// Voxel edge of the subsample the station is registered on when its file exceeded the
+  /// memory budget (registration/bounded/bounded_datasets.hpp), metres; 0: every point.
+  double subsample_voxel = 0.0;
   /// The BIM (modelStation): a fixed node whose frame is the output frame; every scan station
   /// is registered onto it. At most one, last in the station list.
   bool is_model = false;

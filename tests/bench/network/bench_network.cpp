@@ -232,6 +232,7 @@ bool runLoop(const Options& o, std::uint64_t seed) {
   std::vector<Link> links = first.links;
   links.push_back(plantedLink(pa, pb, first.links));
   const NetworkResult r = adjustRegisteredLinks(stations, links, 0, params);
+  if (!o.report_dir.empty()) writeReport(o.report_dir, seed, r, stations, c.indoor, 0);
   std::size_t planted_k = r.adjusted.size();
   for (std::size_t k = 0; k < r.adjusted.size(); ++k)
     if (r.adjusted[k] == links.size() - 1) planted_k = k;

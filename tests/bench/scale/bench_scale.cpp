@@ -12,6 +12,9 @@
 //   register      plumb-cli register FILE model.ply --memory-budget MB (--budget, default
 //                 4096): the streamed voxel subsample route (issue 16)
 //   convert e57   plumb-cli convert FILE OUT.e57 (E57StreamWriter, one station at a time)
+//   network       plumb-cli network FILE --memory-budget MB -o OUT.e57 --report R.json: the 12
+//                 stations registered to each other (issue 15) on their subsamples, every point
+//                 streamed again to OUT.e57; then each station's error against truth.json
 //   to ply        plumb-cli convert FILE BIG.ply, then info BIG.ply and convert BIG.ply OUT.las:
 //                 the streaming PLY reader
 //   to pcd        plumb-cli convert FILE BIG.pcd (binary_compressed, written whole), then info
@@ -29,6 +32,9 @@
 // more than 12 MB (also the LoD cache build, at a 16 MB budget), or that of register with a 1 MB budget (subsample capped at 250 000
 // points) by more than 60 MB (reading the 1.5 million more points whole would add ~300 MB).
 //
+// bench_scale --network FILE [--dir DIR] [--budget MB]: only the network rows, on an existing
+// simulation (FILE's directory holds truth.json and model.ply).
+//
 // Full runs: bench_scale (default --step 0.125, ~41 million points, ~0.6 GB E57);
 // bench_scale --step 0.05 is the 256-million-point, 3.7 GB survey-resolution case (needs
 // ~25 GB of disk in --dir for the E57 and the outputs; files are deleted unless --keep).
@@ -45,6 +51,7 @@
 #include <string>
 #include <vector>
 
+#include "../../support/network_truth.hpp"
 #include "io/io.hpp"
 #include "io/lod/lod_builder.hpp"
 #include "io/lod/lod_cache.hpp"
@@ -220,12 +227,13 @@ fs::path simulate(const fs::path& dir, double step, bool one_station) {
   return r.exit_code == 0 ? dir / "indoor.e57" : fs::path();
 }
 
-/// One table row; exits when the step failed (register: any verdict, exit 0, 2 or 3, is a run).
+/// One table row; exits when the step failed (register, network: any verdict, exit 0, 2 or 3, is a run).
 Run measure(const char* name, const std::vector<std::string>& args, const fs::path& log) {
   const Run r = runChild(args, log);
   std::printf("%-14s %9.2f s %9.2f s cpu %9.1f MB\n", name, r.seconds, r.cpu, r.peak_mb);
   std::fflush(stdout);
-  const bool verdict = args.size() > 1 && args[1] == "register" && (r.exit_code == 2 || r.exit_code == 3);
+  const bool verdict = args.size() > 1 && (args[1] == "register" || args[1] == "network") &&
+                       (r.exit_code == 2 || r.exit_code == 3);
   if (r.exit_code != 0 && !verdict) {
     std::fprintf(stderr, "bench_scale: '%s' failed (exit %d), see %s\n", name, r.exit_code, log.c_str());
     std::exit(2);
@@ -235,7 +243,7 @@ Run measure(const char* name, const std::vector<std::string>& args, const fs::pa
 
 struct Table {
   Run read, info, convert, write_floor, split_las, split_ply;
-  Run reg, convert_e57, info_ply, convert_ply, info_pcd, convert_pcd;
+  Run reg, convert_e57, network, network_bim, info_ply, convert_ply, info_pcd, convert_pcd;
   Run lod_build, lod_view;
 };
 
@@ -256,8 +264,39 @@ void removeOutputs(const fs::path& dir, const std::string& prefix) {
     if (e.path().filename().string().rfind(prefix, 0) == 0) fs::remove(e.path());
 }
 
+/// The network row (issue 15's memory and time line): the stations registered to each other
+/// within the budget, the registered E57 written at full resolution, each station's error.
+Run networkRow(const fs::path& e57, const fs::path& dir, double budget_mb, bool model) {
+  const std::string cli = PLUMB_CLI_PATH;
+  const fs::path report = dir / "network.json";
+  std::vector<std::string> args = {cli, "network", e57.string(), "--set", "memory.budget=" + std::to_string(budget_mb),
+                                   "-o", (dir / "o_net.e57").string(), "--report", report.string()};
+  if (model) args.insert(args.end(), {"--model", (e57.parent_path() / "model.ply").string()});
+  const Run r = measure(model ? "network+bim" : "network", args, dir / "network.log");
+  const auto errors = plumb::test::reportErrors(plumb::test::readJsonFile(e57.parent_path() / "truth.json"),
+                                                plumb::test::readJsonFile(report));
+  double rot = 0, shift = 0;
+  std::size_t placed = 0;
+  for (const auto& e : errors) {
+    placed += e.placed;
+    rot = std::max(rot, e.rotation_deg);
+    shift = std::max(shift, e.translation_m);
+  }
+  std::printf("%-14s exit %d; %zu of %zu stations placed, largest error of the placed %.4f deg, %.2f mm; output %s\n",
+              "", r.exit_code, placed, errors.size(), rot, shift * 1e3,
+              fs::exists(dir / "o_net.e57") ? (std::to_string(fs::file_size(dir / "o_net.e57") / 1000000) + " MB").c_str()
+                                            : "not written (incomplete)");
+  removeOutputs(dir, "o_net");
+  return r;
+}
+
+void measureNetwork(const fs::path& e57, const fs::path& dir, double budget_mb, Table& t) {
+  t.network = networkRow(e57, dir, budget_mb, false);
+  t.network_bim = networkRow(e57, dir, budget_mb, true);
+}
+
 /// The rows of issue 16's second part: registration above the budget, E57 output, PLY and PCD input.
-void measureBounded(const fs::path& e57, const fs::path& dir, double budget_mb, Table& t) {
+void measureBounded(const fs::path& e57, const fs::path& dir, double budget_mb, bool one_station, Table& t) {
   const std::string cli = PLUMB_CLI_PATH;
   t.reg = measure("register", {cli, "register", e57.string(), (e57.parent_path() / "model.ply").string(),
                                "--memory-budget", std::to_string(budget_mb), "--transform",
@@ -265,6 +304,7 @@ void measureBounded(const fs::path& e57, const fs::path& dir, double budget_mb, 
                   dir / "register.log");
   t.convert_e57 = measure("convert e57", {cli, "convert", e57.string(), (dir / "o_all.e57").string()}, dir / "e57.log");
   removeOutputs(dir, "o_all");
+  if (!one_station) measureNetwork(e57, dir, budget_mb, t);
   measure("to ply", {cli, "convert", e57.string(), (dir / "o_big.ply").string()}, dir / "to_ply.log");
   std::printf("%-14s %.0f MB\n", "  ply size", fs::file_size(dir / "o_big.ply") / 1e6);
   t.info_ply = measure("info ply", {cli, "info", (dir / "o_big.ply").string()}, dir / "info_ply.log");
@@ -280,7 +320,7 @@ void measureBounded(const fs::path& e57, const fs::path& dir, double budget_mb, 
 }
 
 Table measureAll(const fs::path& e57, const fs::path& dir, bool whole, const std::string& self, double budget_mb,
-                 double lod_budget_mb) {
+                 double lod_budget_mb, bool one_station) {
   const std::string cli = PLUMB_CLI_PATH;
   Table t;
   measure("baseline", {cli, "--help"}, dir / "baseline.log");
@@ -303,7 +343,7 @@ Table measureAll(const fs::path& e57, const fs::path& dir, bool whole, const std
   std::printf("convert las / read: %.2fx wall, %.2fx cpu; convert las / (read + write floor): %.2fx wall\n",
               t.convert.seconds / t.read.seconds, t.convert.cpu / t.read.cpu,
               t.convert.seconds / (t.read.seconds + t.write_floor.seconds));
-  measureBounded(e57, dir, budget_mb, t);
+  measureBounded(e57, dir, budget_mb, one_station, t);
   return t;
 }
 
@@ -312,11 +352,11 @@ int smoke(const Options& o, const std::string& self) {
   std::printf("-- one station at 0.3 degrees\n");
   const fs::path a = simulate(small, 0.3, true);
   if (a.empty()) return 2;
-  const Table ta = measureAll(a, small, false, self, 1, 16);
+  const Table ta = measureAll(a, small, false, self, 1, 16, true);
   std::printf("-- one station at 0.15 degrees (4x the points)\n");
   const fs::path b = simulate(large, 0.15, true);
   if (b.empty()) return 2;
-  const Table tb = measureAll(b, large, false, self, 1, 16);
+  const Table tb = measureAll(b, large, false, self, 1, 16, true);
   bool ok = true;
   auto check = [&](const char* name, const Run& x, const Run& y, double margin = 12) {
     const bool within = y.peak_mb <= x.peak_mb + margin;
@@ -344,13 +384,20 @@ int main(int argc, char** argv) {
   if (argc == 4 && std::string(argv[1]) == "--write-floor") return writeFloor(argv[2], argv[3]);
   if (argc == 5 && std::string(argv[1]) == "--lod-build") return lodBuild(argv[2], argv[3], argv[4]);
   if (argc == 4 && std::string(argv[1]) == "--lod-view") return lodView(argv[2], argv[3]);
+  if (argc >= 3 && std::string(argv[1]) == "--network") {  // the network rows on an existing simulation
+    const Options o = parse(argc - 1, argv + 1);
+    fs::create_directories(o.dir);
+    Table t;
+    measureNetwork(argv[2], o.dir, o.budget_mb, t);
+    return 0;
+  }
   const Options o = parse(argc, argv);
   const std::string self = fs::canonical("/proc/self/exe").string();
   if (o.smoke) return smoke(o, self);
   std::printf("-- office floor, %s, step %.3f degrees\n", o.one_station ? "one station" : "12 stations", o.step);
   const fs::path e57 = simulate(o.dir, o.step, o.one_station);
   if (e57.empty()) return 2;
-  measureAll(e57, o.dir, o.whole, self, o.budget_mb, o.lod_budget_mb);
+  measureAll(e57, o.dir, o.whole, self, o.budget_mb, o.lod_budget_mb, o.one_station);
   if (!o.keep) fs::remove_all(o.dir);
   return 0;
 }

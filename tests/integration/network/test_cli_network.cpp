@@ -308,5 +308,81 @@ TEST(CliNetwork, ASplitBatchNetworkGetsAnExpansionRoundOfJobs) {
   EXPECT_GT(report["network"]["pairs_registered"].get<int>(), 4);
 }
 
+/// The kept link of `report` between stations that another path also joins (not a bridge).
+nlohmann::json keptLoopLink(const nlohmann::json& report) {
+  for (const auto& l : report["links"])
+    if (l["accepted"].get<bool>() && !l["dropped"].get<bool>() && !l["bridge"].get<bool>()) return l;
+  return {};
+}
+
+TEST(CliNetwork, StationsAboveTheMemoryBudgetAreRegisteredOnSubsamplesAndWrittenWhole) {
+  const auto dir = simulateCampaign(5);
+  // 200 MB holds a million points of registration: the 2 million points are subsampled.
+  const auto r = test::plumbCli(dir, "network sim/indoor.e57 --set memory.budget=200 -o registered.e57 "
+                                     "--report net.json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.err.find("exceed the memory budget together; registering a 2 cm voxel subsample"), std::string::npos)
+      << r.err;
+  const auto report = test::readJsonFile(dir / "net.json");
+  expectEveryStationWithinTarget(test::reportErrors(test::readJsonFile(dir / "sim/truth.json"), report));
+  for (const auto& s : report["stations"]) EXPECT_EQ(s.value("subsample_voxel_m", 0.0), 0.02) << s["name"];
+  // Written at full resolution from the file, each station under its adjusted pose, every
+  // coordinate as read (only the pose changes).
+  const Dataset in = readDataset(dir / "sim/indoor.e57");
+  const Dataset out = readDataset(dir / "registered.e57");
+  ASSERT_EQ(out.scans.size(), in.scans.size());
+  for (std::size_t i = 0; i < in.scans.size(); ++i) {
+    const PointCloud &a = in.scans[i].cloud, &b = out.scans[i].cloud;
+    ASSERT_EQ(b.size(), a.size()) << i;
+    for (std::size_t k = 0; k < a.size(); k += 997) ASSERT_EQ(b.world(k), a.world(k)) << i << " " << k;
+    // E57 stores a pose as a quaternion: equal to rounding.
+    EXPECT_LT((out.scans[i].pose.matrix() - test::matrixOf(report["stations"][i]["pose"]).matrix()).norm(), 1e-12);
+  }
+}
+
+TEST(CliNetwork, TheSurveyorRejectsALinkAndLocksAStation) {
+  const auto dir = simulateCampaign(5);
+  auto r = test::plumbCli(dir, "network sim/indoor.e57 -o registered.e57 --report net.json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto first = test::readJsonFile(dir / "net.json");
+  const auto truth = test::readJsonFile(dir / "sim/truth.json");
+  const auto loop_link = keptLoopLink(first);
+  ASSERT_FALSE(loop_link.is_null()) << "the campaign closes a loop";
+  const std::string pair = loop_link["a"].get<std::string>() + "," + loop_link["b"].get<std::string>();
+  {
+    SCOPED_TRACE("a rejected link is left out; the loop's other links still place every station");
+    r = test::plumbCli(dir, "network sim/indoor.e57 --reject " + pair + " --report rejected.json");
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    const auto report = test::readJsonFile(dir / "rejected.json");
+    std::size_t rejected = 0;
+    for (const auto& l : report["links"])
+      if (l.value("decision", "") == "rejected") {
+        ++rejected;
+        EXPECT_FALSE(l["accepted"].get<bool>());
+        EXPECT_EQ(l["a"], loop_link["a"]);
+      }
+    EXPECT_EQ(rejected, 1u);
+    EXPECT_EQ(report["network"]["links_accepted"].get<int>(), first["network"]["links_accepted"].get<int>() - 1);
+    expectEveryStationWithinTarget(test::reportErrors(truth, report));
+    EXPECT_NE(r.out.find("[rejected by the surveyor]"), std::string::npos) << r.out;
+  }
+  {
+    SCOPED_TRACE("a station locked at its registered pose keeps it exactly");
+    r = test::plumbCli(dir, "network registered.e57 --lock tls-3 --report locked.json");
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    const auto report = test::readJsonFile(dir / "locked.json");
+    EXPECT_TRUE(report["stations"][3].value("locked", false));
+    EXPECT_LT((test::matrixOf(report["stations"][3]["pose"]).matrix() -
+               readDataset(dir / "registered.e57").scans[3].pose.matrix()).norm(), 1e-15);
+    expectEveryStationWithinTarget(test::reportErrors(truth, report));
+  }
+  {
+    SCOPED_TRACE("decisions that name no link are errors naming the stations");
+    r = test::plumbCli(dir, "network sim/indoor.e57 --reject tls-0,nowhere");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("--reject 'tls-0,nowhere'"), std::string::npos) << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace plumb

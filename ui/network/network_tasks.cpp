@@ -1,0 +1,125 @@
+#include "ui/network/network_tasks.hpp"
+
+#include "common/error.hpp"
+#include "ui/app_context.hpp"
+#include "ui/layers/dataset_layer.hpp"
+#include "ui/layers/layer_transform.hpp"
+#include "ui/layers/model_layer.hpp"
+#include "ui/layers/scan_layer.hpp"
+#include "ui/layers/scene.hpp"
+#include "ui/tasks/task_manager.hpp"
+
+namespace plumb::ui {
+
+namespace {
+
+std::string fileOf(const Layer& layer) {
+  const QString source = layerSource(layer);
+  return (source.isEmpty() ? layer.name() : source).toStdString();
+}
+
+NetworkInputs::Source datasetSource(DatasetLayer& layer) {
+  NetworkInputs::Source s{layer.sharedDataset(), fileOf(layer), LayerRef(layer), {}, 0.0};
+  for (const ScanLayer* scan : layer.scans()) s.colour_indices.push_back(scan->colourIndex());
+  if (layer.subsampledFrom()) s.subsample_voxel = layer.subsampledFrom()->voxel;
+  return s;
+}
+
+/// The stations as plumb-cli network builds them, each with its features.
+std::vector<Station> buildStations(const NetworkInputs& in) {
+  std::vector<Station> stations;
+  for (const auto& d : in.datasets)
+    for (auto& s : stationsOf(*d.data, d.file)) {
+      s.subsample_voxel = d.subsample_voxel;  // the report says the station was registered on a subsample
+      stations.push_back(std::move(s));
+    }
+  makeStationNamesUnique(stations);
+  if (in.model) stations.push_back(modelStation(*in.model, in.model_file));  // last: the reference
+  return stations;
+}
+
+void detectFeatures(std::vector<Station>& stations, const NetworkParams& params, Progress& progress) {
+  for (std::size_t i = 0; i < stations.size(); ++i) {
+    progress.report(double(i) / double(stations.size()), "features of " + stations[i].name);
+    progress.check();
+    detectStationFeatures(stations[i], params.link);
+  }
+}
+
+}  // namespace
+
+std::size_t NetworkInputs::stationCount() const {
+  std::size_t n = model ? 1 : 0;
+  for (const auto& d : datasets) n += d.data->scans.size();
+  return n;
+}
+
+std::vector<LayerRef> NetworkInputs::layers() const {
+  std::vector<LayerRef> out;
+  for (const auto& d : datasets) out.push_back(d.layer);
+  if (model) out.push_back(model_layer);
+  return out;
+}
+
+std::vector<StationSource> NetworkInputs::sources() const {
+  std::vector<StationSource> out;
+  for (const auto& d : datasets)
+    for (std::size_t k = 0; k < d.data->scans.size(); ++k)
+      out.push_back({d.layer, k, false, k < d.colour_indices.size() ? d.colour_indices[k] : k});
+  if (model) out.push_back({model_layer, 0, true, 0});
+  return out;
+}
+
+NetworkInputs networkInputs(const Scene& scene, const Layer* model) {
+  NetworkInputs in;
+  for (const auto& layer : scene.layers()) {
+    if (layer->kind() == LayerKind::Dataset) in.datasets.push_back(datasetSource(static_cast<DatasetLayer&>(*layer)));
+    if (layer.get() == model && model->kind() == LayerKind::Model) {
+      auto& m = static_cast<ModelLayer&>(*layer);
+      in.model = m.sharedModel();
+      in.model_file = fileOf(m);
+      in.model_layer = LayerRef(m);
+    }
+  }
+  if (in.stationCount() < 2)
+    throw InputError("a network needs at least two stations: open the scans (every scan of every point dataset is "
+                     "a station), or one scan and a model as the reference");
+  return in;
+}
+
+Task* startNetworkRegistration(AppContext& app, NetworkInputs inputs, const NetworkParams& params,
+                               NetworkDone done) {
+  const std::vector<LayerRef> holds = inputs.layers();
+  return app.tasks.run(QObject::tr("Registering the network"), [inputs = std::move(inputs), params,
+                                                                  done](Progress& progress) {
+    auto stations = std::make_shared<std::vector<Station>>(buildStations(inputs));
+    Progress features = progress.sub(0.0, 0.3);
+    detectFeatures(*stations, params, features);
+    Progress linking = progress.sub(0.3, 1.0);
+    const std::size_t reference = inputs.model ? stations->size() - 1 : 0;
+    auto result = std::make_shared<const NetworkResult>(registerNetwork(*stations, reference, params, &linking));
+    auto session = std::make_shared<NetworkSession>();
+    session->stations = std::move(stations);
+    session->sources = inputs.sources();
+    session->params = params;
+    session->links = std::make_shared<const std::vector<Link>>(result->links);
+    session->setResult(std::move(result));  // the report is built here, off the UI thread
+    return [session, done] { done(session); };
+  }, holds);
+}
+
+Task* startNetworkAdjustment(AppContext& app, const NetworkSession& session, const NetworkDecisions& decisions,
+                             AdjustmentDone done) {
+  std::vector<LayerRef> holds;
+  for (const auto& s : session.sources) holds.push_back(s.layer);
+  return app.tasks.run(QObject::tr("Adjusting the network"), [stations = session.stations, links = session.links,
+                                                                reference = session.result->reference, params = session.params, decisions,
+                                                                done](Progress& progress) {
+    progress.report(0.0, "adjustment");
+    auto adjusted = std::make_shared<const NetworkResult>(
+        adjustRegisteredLinks(*stations, *links, reference, params, nullptr, decisions));
+    return [adjusted, done] { done(adjusted); };
+  }, holds);
+}
+
+}  // namespace plumb::ui
