@@ -62,6 +62,22 @@ const ParamSchema<PoseGraphParams>& PoseGraphParams::schema() {
   return s;
 }
 
+const ParamSchema<FinalRefinementParams>& FinalRefinementParams::schema() {
+  using P = FinalRefinementParams;
+  static const auto s =
+      ParamSchema<P>("final-refinement")
+          .boolean(&P::enabled, "enabled", "Refine on points",
+                   "After the adjustment, refine every overlapping pair of placed stations on their points and "
+                   "adjust once more")
+          .real(&P::start_distance, "start-distance", "Start distance", "m", 0.005, 1.0,
+                "Largest correspondence distance of the first stage", true)
+          .real(&P::final_distance, "final-distance", "Final distance", "m", 0.002, 0.5,
+                "Correspondence distance of the last stage", true)
+          .real(&P::min_overlap, "min-overlap", "Min overlap", "", 0.01, 1.0,
+                "Fewest share of a station's points matched for a pair to count", true);
+  return s;
+}
+
 nlohmann::json networkParamsToJson(const NetworkParams& p) {
   nlohmann::json j;
   forEachNetworkParamGroup(p, [&](const char* key, const char*, const auto& schema, const auto& group) {

@@ -71,10 +71,26 @@ struct PoseGraphParams {
   static const ParamSchema<PoseGraphParams>& schema();
 };
 
+struct FinalRefinementParams {
+  /// After the adjustment, refine every pair of placed scan stations whose points overlap at
+  /// their adjusted poses (registered as a link or not) on their points, then adjust once more
+  /// with those refined pairs beside the links (final_refinement.hpp). Off by default.
+  bool enabled = false;
+  /// Largest correspondence distance of the first refinement stage, m, [0.005, 1]: the
+  /// adjusted poses are already within millimetres.
+  double start_distance = 0.05;
+  /// Last-stage correspondence distance, m, [0.002, 0.5].
+  double final_distance = 0.01;
+  /// Fewest share of a station's points matched for a pair to count, [0.01, 1].
+  double min_overlap = 0.1;
+  static const ParamSchema<FinalRefinementParams>& schema();
+};
+
 struct NetworkParams {
   PairSelectionParams pairs;
   LinkWeightParams weights;
   PoseGraphParams graph;
+  FinalRefinementParams final_refinement;
   PipelineParams link;  ///< the pipeline of each link
 };
 
@@ -84,6 +100,7 @@ void forEachNetworkParamGroup(P& p, F&& f) {
   f("pair-selection", "Candidate pairs", PairSelectionParams::schema(), p.pairs);
   f("link-weights", "Link weights", LinkWeightParams::schema(), p.weights);
   f("pose-graph", "Global adjustment", PoseGraphParams::schema(), p.graph);
+  f("final-refinement", "Final refinement on points", FinalRefinementParams::schema(), p.final_refinement);
 }
 
 /// {"pair-selection": {...}, "link-weights": {...}, "pose-graph": {...}, "link": {pipeline}}.

@@ -135,6 +135,27 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, c
   for (std::size_t i = 0; i < stations.size(); ++i) out.parts[component[i]].push_back(i);
 }
 
+/// The final refinement on points (final_refinement.hpp), when enabled: `out` adjusted again
+/// with every overlapping pair refined at its poses.
+void refineOnPoints(const std::vector<Station>& stations, const NetworkParams& params, const ControlSurvey* control,
+                    NetworkResult& out, const LockedStations& locked) {
+  if (!params.final_refinement.enabled) return;
+  FinalRefinementSummary summary;
+  const auto refined = refinedPairLinks(stations, out.adjustment.poses, out.ambiguous(), out.links, params, summary);
+  if (!refined.empty()) {
+    NetworkResult again;
+    again.reference = out.reference;
+    again.all_pairs = out.all_pairs;
+    again.rounds = out.rounds;
+    again.seconds_features = out.seconds_features;
+    again.seconds_links = out.seconds_links;
+    again.links = withRefinedPairs(out.links, refined);
+    adjust(stations, params, control, again, locked);
+    out = std::move(again);
+  }
+  out.final_refinement = summary;
+}
+
 }  // namespace
 
 bool NetworkResult::isAmbiguous(std::size_t i) const {
@@ -232,6 +253,7 @@ NetworkResult adjustRegisteredLinks(const std::vector<Station>& stations, std::v
   for (const auto& l : out.links) out.seconds_links += l.seconds;
   const auto t0 = std::chrono::steady_clock::now();
   adjust(stations, params, control, out, decisions.locked);
+  refineOnPoints(stations, params, control, out, decisions.locked);
   out.seconds_adjustment = secondsSince(t0);
   return out;
 }
@@ -249,6 +271,7 @@ NetworkResult registerNetwork(const std::vector<Station>& stations, std::size_t 
   out.seconds_links = secondsSince(t0);
   t0 = std::chrono::steady_clock::now();
   adjust(stations, params, control, out);
+  refineOnPoints(stations, params, control, out, {});
   out.seconds_adjustment = secondsSince(t0);
   return out;
 }

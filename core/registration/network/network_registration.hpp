@@ -10,6 +10,7 @@
 
 #include "common/progress.hpp"
 #include "registration/network/competing_placements.hpp"
+#include "registration/network/final_refinement.hpp"
 #include "registration/network/georeference.hpp"
 #include "registration/network/link.hpp"
 #include "registration/network/one_loop_drops.hpp"
@@ -62,6 +63,9 @@ struct NetworkResult {
   std::optional<Georeference> georeference;
   /// Stations the surveyor locked (NetworkDecisions::locked), sorted.
   std::vector<std::size_t> locked;
+  /// The final refinement on points (final-refinement.enabled): its refined pairs are links
+  /// (reason "final refinement") of the last adjustment.
+  FinalRefinementSummary final_refinement;
   /// In competing.ambiguous or copies_unchecked: adjusted, but not placed.
   bool isAmbiguous(std::size_t i) const;
   /// The ambiguous stations, sorted (the union of the three lists).

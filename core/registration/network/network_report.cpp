@@ -113,8 +113,9 @@ nlohmann::json competingJson(const NetworkResult& r, const std::vector<Station>&
 nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& st) {
   MeanMax lt, lr, res;
   nlohmann::json loops = loopsJson(r, st, lt, lr);
-  std::size_t registered = 0, flagged = 0, bridges = 0;
-  for (const auto& l : r.links) registered += l.registered;
+  std::size_t tried = 0, registered = 0, flagged = 0, bridges = 0;
+  for (const auto& l : r.links)
+    if (l.reason != "final refinement") ++tried, registered += l.registered;  // pairs the pipeline registered
   std::vector<std::size_t> dropped;
   for (std::size_t i = 0; i < r.adjusted.size(); ++i) {
     const auto& o = r.adjustment.links[i];
@@ -123,7 +124,7 @@ nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& s
   }
   nlohmann::json parts = nlohmann::json::array();
   for (const auto& p : r.parts) parts.push_back(names(st, p));
-  return {{"stations", st.size()}, {"pairs_all", r.all_pairs}, {"pairs_registered", r.links.size()},
+  return {{"stations", st.size()}, {"pairs_all", r.all_pairs}, {"pairs_registered", tried},
           {"links_registered", registered}, {"links_accepted", r.adjusted.size()}, {"links_dropped", dropped},
           {"links_flagged", flagged}, {"links_unchecked", bridges}, {"rounds", r.rounds}, {"loop_closures", loops},
           {"loop_translation_mean_m", lt.mean()}, {"loop_translation_max_m", lt.max},
@@ -199,6 +200,10 @@ nlohmann::json networkReportToJson(const NetworkResult& r, const std::vector<Sta
   for (std::size_t k = 0; k < r.links.size(); ++k) j["links"].push_back(linkJson(r, st, k));
   j["network"] = networkJson(r, st);
   if (r.georeference) j["georeference"] = georeferenceJson(*r.georeference);
+  if (r.final_refinement.done)
+    j["final_refinement"] = {{"pairs_tried", r.final_refinement.pairs_tried},
+                             {"pairs_used", r.final_refinement.pairs_used},
+                             {"seconds", r.final_refinement.seconds}};
   return j;
 }
 

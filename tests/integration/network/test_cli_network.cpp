@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <set>
 
 #include <sys/wait.h>
 
@@ -382,6 +383,28 @@ TEST(CliNetwork, TheSurveyorRejectsALinkAndLocksAStation) {
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("--reject 'tls-0,nowhere'"), std::string::npos) << r.err;
   }
+}
+
+TEST(CliNetwork, TheFinalRefinementOnPointsAdjustsOnEveryOverlappingPair) {
+  const auto dir = simulateCampaign(5);
+  const auto r = test::plumbCli(dir, "network sim/indoor.e57 --set final-refinement.enabled=true --report net.json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto report = test::readJsonFile(dir / "net.json");
+  ASSERT_TRUE(report.contains("final_refinement"));
+  // Five stations in two rooms and a doorway: every pair overlaps, registered as a link or not.
+  EXPECT_EQ(report["final_refinement"]["pairs_tried"].get<int>(), 10);
+  const int used = report["final_refinement"]["pairs_used"].get<int>();
+  EXPECT_GE(used, 8);
+  std::set<std::pair<std::string, std::string>> refined;
+  for (const auto& l : report["links"])
+    if (l["reason"] == "final refinement") {
+      refined.insert({l["a"].get<std::string>(), l["b"].get<std::string>()});
+      EXPECT_TRUE(l["accepted"].get<bool>());
+      EXPECT_FALSE(l["dropped"].get<bool>()) << l["a"] << " - " << l["b"];
+    }
+  EXPECT_EQ(int(refined.size()), used);
+  EXPECT_LE(report["network"]["pairs_registered"].get<int>(), 10) << "refined pairs are not registered pairs";
+  expectEveryStationWithinTarget(test::reportErrors(test::readJsonFile(dir / "sim/truth.json"), report));
 }
 
 }  // namespace
