@@ -1,6 +1,5 @@
 #include "ui/network/network_panel.hpp"
 
-#include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -12,10 +11,13 @@
 #include "ui/actions/file_dialogs.hpp"
 #include "ui/app_context.hpp"
 #include "ui/layers/scene.hpp"
+#include "ui/network/control_box.hpp"
+#include "ui/network/georeference_view.hpp"
 #include "ui/network/link_table.hpp"
 #include "ui/network/network_params_box.hpp"
 #include "ui/network/network_plan_view.hpp"
 #include "ui/network/network_runner.hpp"
+#include "ui/network/reference_combo.hpp"
 #include "ui/network/station_table.hpp"
 
 namespace plumb::ui {
@@ -33,15 +35,16 @@ NetworkPanel::NetworkPanel(AppContext& app, QWidget* parent)
     : QWidget(parent),
       app_(app),
       runner_(new NetworkRunner(app, this)),
-      reference_(new QComboBox(this)),
+      reference_(new ReferenceCombo(this)),
       params_(new NetworkParamsBox(runner_->params(), this)),
+      control_(new ControlBox(runner_->control(), this)),
+      georeference_(new GeoreferenceView(this)),
       plan_(new NetworkPlanView(this)),
       stations_(new StationTable(this)),
       links_(new LinkTable(this)),
       tabs_(new QTabWidget(this)),
       summary_(new QLabel(tr("Every scan of every open point dataset is a station."), this)) {
   setObjectName("networkPanel");
-  reference_->setObjectName("networkReference");
   summary_->setObjectName("networkSummary");
   summary_->setWordWrap(true);
   auto* links_page = new QWidget(this);
@@ -50,6 +53,7 @@ NetworkPanel::NetworkPanel(AppContext& app, QWidget* parent)
   links_layout->addWidget(buildLinkActions());
   tabs_->addTab(stations_, tr("Stations"));
   tabs_->addTab(links_page, tr("Links"));
+  tabs_->addTab(buildControlPage(), tr("Control"));
   tabs_->addTab(params_, tr("Parameters"));
   auto* split = new QSplitter(Qt::Horizontal, this);
   split->addWidget(plan_);
@@ -60,7 +64,7 @@ NetworkPanel::NetworkPanel(AppContext& app, QWidget* parent)
   layout->addWidget(summary_);
   layout->addWidget(split, 1);
   connectSignals();
-  refreshReferences();
+  reference_->refresh(app_.scene);
   updateEnabled();
 }
 
@@ -100,6 +104,15 @@ QWidget* NetworkPanel::buildLinkActions() {
   return bar;
 }
 
+QWidget* NetworkPanel::buildControlPage() {
+  auto* page = new QWidget(this);
+  page->setObjectName("networkControlPage");
+  auto* layout = new QVBoxLayout(page);
+  layout->addWidget(control_);
+  layout->addWidget(georeference_, 1);
+  return page;
+}
+
 void NetworkPanel::connectSignals() {
   connect(run_, &QPushButton::clicked, this, &NetworkPanel::run);
   connect(rerun_, &QPushButton::clicked, this, &NetworkPanel::rerun);
@@ -129,28 +142,10 @@ void NetworkPanel::connectSignals() {
     plan_->selectLink(k);
     updateEnabled();
   });
-  connect(&app_.scene, &Scene::layersChanged, this, &NetworkPanel::refreshReferences);
+  connect(&app_.scene, &Scene::layersChanged, this, [this] { reference_->refresh(app_.scene); });
 }
 
-void NetworkPanel::refreshReferences() {
-  const QVariant chosen = reference_->currentData();
-  reference_->clear();
-  reference_->addItem(tr("first station"), QVariant::fromValue<quintptr>(0));
-  for (const auto& layer : app_.scene.layers())
-    if (layer->kind() == LayerKind::Model)
-      reference_->addItem(tr("model: %1").arg(layer->name()), QVariant::fromValue(quintptr(layer.get())));
-  reference_->setCurrentIndex(std::max(0, reference_->findData(chosen)));
-  reference_->setToolTip(tr("The station that keeps its pose; with a model, every station is also registered onto "
-                            "it and the network comes out in the model's frame"));
-}
-
-bool NetworkPanel::run() {
-  const quintptr chosen = reference_->currentData().value<quintptr>();
-  const Layer* model = nullptr;  // looked up, never dereferenced from the combo's number
-  for (const auto& layer : app_.scene.layers())
-    if (quintptr(layer.get()) == chosen) model = layer.get();
-  return runner_->run(model);
-}
+bool NetworkPanel::run() { return runner_->run(reference_->model(app_.scene), reference_->station()); }
 
 bool NetworkPanel::rerun() { return runner_->rerunAdjustment(); }
 
@@ -170,6 +165,8 @@ void NetworkPanel::showSession() {
   plan_->setSession(session);
   stations_->setSession(session, runner_->decisions());
   links_->setSession(session, runner_->decisions());
+  if (session) georeference_->setReport(session->report);
+  else georeference_->clear();
   if (session)
     summary_->setText(tr("%1 (exit code %2 as plumb-cli)")
                           .arg(networkSummary(session->report))
@@ -182,6 +179,7 @@ void NetworkPanel::updateEnabled() {
   run_->setEnabled(!busy);
   reference_->setEnabled(!busy);
   params_->setEnabled(!busy);
+  control_->setEnabled(!busy);
   for (QPushButton* b : {rerun_, apply_, colour_, save_}) b->setEnabled(!busy && done);
   const bool link = !busy && links_->selectedLink() >= 0;
   for (QPushButton* b : {accept_, reject_, clear_}) b->setEnabled(link);

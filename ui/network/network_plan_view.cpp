@@ -130,6 +130,15 @@ std::optional<QPointF> NetworkPlanView::linkPoint(std::size_t link) const {
   return (*stationPoint(l.a) + *stationPoint(l.b)) / 2;
 }
 
+QString NetworkPlanView::frameLabel() const {
+  if (!session_) return {};
+  const auto& report = session_->report;
+  if (report.contains("georeference") && report["georeference"]["done"].get<bool>()) return tr("grid (control points)");
+  const auto& reference = report["stations"][session_->result->reference];
+  const QString name = QString::fromStdString(reference["name"].get<std::string>());
+  return reference.value("model", false) ? tr("model frame (%1)").arg(name) : tr("frame of station %1").arg(name);
+}
+
 void NetworkPlanView::paintEvent(QPaintEvent*) {
   QPainter painter(this);
   painter.setRenderHint(QPainter::Antialiasing);
@@ -143,6 +152,8 @@ void NetworkPlanView::paintEvent(QPaintEvent*) {
   drawLinks(painter, f);
   drawStations(painter, f);
   drawScaleBar(painter, f);
+  painter.setPen(Qt::darkGray);
+  painter.drawText(QRectF(rect()).adjusted(8, 6, -8, 0), Qt::AlignLeft | Qt::AlignTop, frameLabel());
   painter.setPen(Qt::darkRed);
   const QString list = listText();
   painter.drawText(QRectF(rect()).adjusted(8, 0, -8, -6), Qt::AlignLeft | Qt::AlignBottom, list);

@@ -36,6 +36,9 @@ class NetworkPlanView : public QWidget {
   std::optional<QPointF> stationPoint(std::size_t station) const;
   /// The middle of link k's line (nullopt: not drawn).
   std::optional<QPointF> linkPoint(std::size_t link) const;
+  /// The frame the plan is drawn in, written in its corner: "grid (control points)" when the
+  /// run was georeferenced, else the reference's frame (empty before a run).
+  QString frameLabel() const;
 
   QSize sizeHint() const override { return {420, 320}; }
   QSize minimumSizeHint() const override { return {200, 160}; }

@@ -7,7 +7,6 @@
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/scene.hpp"
 #include "ui/network/network_report_file.hpp"
-#include "ui/network/network_tasks.hpp"
 #include "ui/network/station_poses_command.hpp"
 #include "ui/panels/layer_tree_panel.hpp"
 #include "ui/panels/log_panel.hpp"
@@ -34,18 +33,37 @@ bool NetworkRunner::ready() {
   return true;
 }
 
-bool NetworkRunner::run(const Layer* model) {
-  if (busy_) return refuse(tr("a network task is already running"));
+std::optional<NetworkInputs> NetworkRunner::prepare(const Layer* model, const std::string& reference) {
   NetworkInputs inputs;
   try {
     validateNetworkParams(params_);
     inputs = networkInputs(app_.scene, model);
+    inputs.reference_station = reference;
+    inputs.referenceIndex();  // an unknown name is refused now, not after minutes of features
   } catch (const std::exception& e) {
-    return refuse(QString::fromUtf8(e.what()));
+    refuse(QString::fromUtf8(e.what()));
+    return std::nullopt;
   }
-  app_.log.info(tr("Network: registering %1 stations").arg(inputs.stationCount()));
+  try {
+    inputs.control = loadControlSurvey(control_, inputs.stationNames());
+  } catch (const std::exception& e) {  // the core's message names the file and the line
+    app_.log.error(tr("Network: %1").arg(QString::fromUtf8(e.what())));
+    return std::nullopt;
+  }
+  return inputs;
+}
+
+bool NetworkRunner::run(const Layer* model, const std::string& reference) {
+  if (busy_) return refuse(tr("a network task is already running"));
+  std::optional<NetworkInputs> inputs = prepare(model, reference);
+  if (!inputs) return false;
+  app_.log.info(tr("Network: registering %1 stations%2")
+                    .arg(inputs->stationCount())
+                    .arg(inputs->control ? tr(", with %1 control and check points")
+                                               .arg(inputs->control->points.size())
+                                         : QString()));
   QPointer<NetworkRunner> self(this);
-  Task* task = startNetworkRegistration(app_, std::move(inputs), params_, [self](auto session) {
+  Task* task = startNetworkRegistration(app_, std::move(*inputs), params_, [self](auto session) {
     if (!self) return;
     self->session_ = std::move(session);
     self->decisions_ = {};  // decisions name the stations of the run they were made on

@@ -7,9 +7,13 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
+#include <string>
 
+#include "ui/network/control_settings.hpp"
 #include "ui/network/link_decisions.hpp"
 #include "ui/network/network_session.hpp"
+#include "ui/network/network_tasks.hpp"
 
 namespace plumb::ui {
 
@@ -22,14 +26,18 @@ class NetworkRunner : public QObject {
   explicit NetworkRunner(AppContext& app, QObject* parent = nullptr);
 
   NetworkParams& params() { return params_; }
+  /// The control survey the next run reads (the dock's ControlBox edits it).
+  ControlSettings& control() { return control_; }
   /// The last run (null before one finished); its result follows the re-runs.
   std::shared_ptr<const NetworkSession> session() const { return session_; }
   const NetworkDecisions& decisions() const { return decisions_; }
   bool busy() const { return busy_; }
 
   /// Registers every scan of every point dataset layer as one network; `model` (a model layer,
-  /// or nullptr) is then the reference. False (and a log message) when it cannot start.
-  bool run(const Layer* model);
+  /// or nullptr) is then the reference, else the station named `reference` (empty: the first).
+  /// With control points, the network is georeferenced on them. False (and a log message) when
+  /// it cannot start: bad parameters, an unknown reference, a control file the core refuses.
+  bool run(const Layer* model, const std::string& reference = {});
   /// Re-runs the adjustment of the last run's links with the decisions.
   bool rerunAdjustment();
 
@@ -59,10 +67,12 @@ class NetworkRunner : public QObject {
 
  private:
   bool refuse(const QString& why);
+  std::optional<NetworkInputs> prepare(const Layer* model, const std::string& reference);
   void setBusy(bool busy);
   bool ready();
   AppContext& app_;
   NetworkParams params_;
+  ControlSettings control_;
   std::shared_ptr<NetworkSession> session_;
   NetworkDecisions decisions_;
   bool busy_ = false;

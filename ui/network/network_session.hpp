@@ -31,6 +31,7 @@ struct NetworkSession {
   std::shared_ptr<const NetworkResult> result;
   nlohmann::json report;  ///< networkReportToJson(*result, *stations)
   NetworkParams params;   ///< what the links were registered and adjusted with
+  std::shared_ptr<const ControlSurvey> control;  ///< the run's control points (null: none)
 
   /// Replaces the result (a re-run adjustment) and its report.
   void setResult(std::shared_ptr<const NetworkResult> r);

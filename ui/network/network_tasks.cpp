@@ -1,5 +1,7 @@
 #include "ui/network/network_tasks.hpp"
 
+#include <algorithm>
+
 #include "common/error.hpp"
 #include "ui/app_context.hpp"
 #include "ui/layers/dataset_layer.hpp"
@@ -54,6 +56,34 @@ std::size_t NetworkInputs::stationCount() const {
   return n;
 }
 
+std::vector<std::string> NetworkInputs::stationNames() const {
+  std::vector<Station> named;  // names and files only: what makeStationNamesUnique reads
+  for (const auto& d : datasets)
+    for (std::size_t i = 0; i < d.data->scans.size(); ++i) {
+      Station s;
+      s.name = stationName(d.data->scans[i], i);  // as stationsOf
+      s.file = d.file;
+      named.push_back(std::move(s));
+    }
+  makeStationNamesUnique(named);
+  return plumb::stationNames(named);
+}
+
+std::size_t NetworkInputs::referenceIndex() const {
+  if (model && !reference_station.empty())
+    throw InputError("a model and a reference station exclude each other (with a model, the model is the reference)");
+  if (model) return stationCount() - 1;
+  if (reference_station.empty()) return 0;
+  const auto names = stationNames();
+  const auto it = std::find(names.begin(), names.end(), reference_station);
+  if (it == names.end()) {
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    throw InputError("no station is named '" + reference_station + "'; the stations are: " + list);
+  }
+  return std::size_t(it - names.begin());
+}
+
 std::vector<LayerRef> NetworkInputs::layers() const {
   std::vector<LayerRef> out;
   for (const auto& d : datasets) out.push_back(d.layer);
@@ -70,7 +100,7 @@ std::vector<StationSource> NetworkInputs::sources() const {
   return out;
 }
 
-NetworkInputs networkInputs(const Scene& scene, const Layer* model) {
+NetworkInputs sceneInputs(const Scene& scene, const Layer* model) {
   NetworkInputs in;
   for (const auto& layer : scene.layers()) {
     if (layer->kind() == LayerKind::Dataset) in.datasets.push_back(datasetSource(static_cast<DatasetLayer&>(*layer)));
@@ -81,6 +111,11 @@ NetworkInputs networkInputs(const Scene& scene, const Layer* model) {
       in.model_layer = LayerRef(m);
     }
   }
+  return in;
+}
+
+NetworkInputs networkInputs(const Scene& scene, const Layer* model) {
+  NetworkInputs in = sceneInputs(scene, model);
   if (in.stationCount() < 2)
     throw InputError("a network needs at least two stations: open the scans (every scan of every point dataset is "
                      "a station), or one scan and a model as the reference");
@@ -96,9 +131,10 @@ Task* startNetworkRegistration(AppContext& app, NetworkInputs inputs, const Netw
     Progress features = progress.sub(0.0, 0.3);
     detectFeatures(*stations, params, features);
     Progress linking = progress.sub(0.3, 1.0);
-    const std::size_t reference = inputs.model ? stations->size() - 1 : 0;
-    auto result = std::make_shared<const NetworkResult>(registerNetwork(*stations, reference, params, &linking));
+    auto result = std::make_shared<const NetworkResult>(
+        registerNetwork(*stations, inputs.referenceIndex(), params, &linking, inputs.control.get()));
     auto session = std::make_shared<NetworkSession>();
+    session->control = inputs.control;  // the re-runs georeference on the same survey
     session->stations = std::move(stations);
     session->sources = inputs.sources();
     session->params = params;
@@ -112,12 +148,12 @@ Task* startNetworkAdjustment(AppContext& app, const NetworkSession& session, con
                              AdjustmentDone done) {
   std::vector<LayerRef> holds;
   for (const auto& s : session.sources) holds.push_back(s.layer);
-  return app.tasks.run(QObject::tr("Adjusting the network"), [stations = session.stations, links = session.links,
-                                                                reference = session.result->reference, params = session.params, decisions,
-                                                                done](Progress& progress) {
+  return app.tasks.run(QObject::tr("Adjusting the network"),
+                       [stations = session.stations, links = session.links, reference = session.result->reference,
+                        params = session.params, control = session.control, decisions, done](Progress& progress) {
     progress.report(0.0, "adjustment");
     auto adjusted = std::make_shared<const NetworkResult>(
-        adjustRegisteredLinks(*stations, *links, reference, params, nullptr, decisions));
+        adjustRegisteredLinks(*stations, *links, reference, params, control.get(), decisions));
     return [adjusted, done] { done(adjusted); };
   }, holds);
 }

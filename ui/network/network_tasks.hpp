@@ -31,15 +31,25 @@ struct NetworkInputs {
   std::shared_ptr<const BimModel> model;  ///< the reference, when chosen
   std::string model_file;
   LayerRef model_layer;
+  std::string reference_station;  ///< the reference by name (--reference); empty: the first, or the model
+  std::shared_ptr<const ControlSurvey> control;  ///< null: not georeferenced
 
   std::size_t stationCount() const;
+  /// The scan stations' names as the run gives them (stationsOf, makeStationNamesUnique), without
+  /// reading a point: for the reference combo and the targets file's check before the run.
+  std::vector<std::string> stationNames() const;
+  /// The reference's index in the run's stations: the model (last), the named station, or 0.
+  /// Throws InputError for a name no station has (naming the stations) or a name with a model.
+  std::size_t referenceIndex() const;
   std::vector<LayerRef> layers() const;
   /// Where each station comes from, in station order.
   std::vector<StationSource> sources() const;
 };
 
 /// Every point dataset layer of `scene`, in its order, and `model` (a model layer, or nullptr)
-/// as the reference. Throws InputError when that makes fewer than two stations.
+/// as the reference.
+NetworkInputs sceneInputs(const Scene& scene, const Layer* model);
+/// sceneInputs, refused (InputError) when that makes fewer than two stations.
 NetworkInputs networkInputs(const Scene& scene, const Layer* model);
 
 using NetworkDone = std::function<void(std::shared_ptr<NetworkSession> session)>;
@@ -47,7 +57,7 @@ Task* startNetworkRegistration(AppContext& app, NetworkInputs inputs, const Netw
                                NetworkDone done);
 
 using AdjustmentDone = std::function<void(std::shared_ptr<const NetworkResult> result)>;
-/// adjustRegisteredLinks of the session's links with `decisions` (milliseconds, still off the
+/// adjustRegisteredLinks of the session's links with `decisions` and its control survey (milliseconds, still off the
 /// UI thread: a large network's covariance is not free).
 Task* startNetworkAdjustment(AppContext& app, const NetworkSession& session, const NetworkDecisions& decisions,
                              AdjustmentDone done);

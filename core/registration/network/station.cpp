@@ -8,12 +8,16 @@
 
 namespace plumb {
 
+std::string stationName(const Scan& scan, std::size_t index) {
+  return scan.name.empty() ? "scan-" + std::to_string(index) : scan.name;
+}
+
 std::vector<Station> stationsOf(const Dataset& data, const std::string& file) {
   std::vector<Station> out;
   for (std::size_t i = 0; i < data.scans.size(); ++i) {
     const Scan& scan = data.scans[i];
     Station s;
-    s.name = scan.name.empty() ? "scan-" + std::to_string(i) : scan.name;
+    s.name = stationName(scan, i);
     s.file = file;
     s.scan_index = i;
     s.file_pose = scan.pose;

@@ -33,6 +33,10 @@ struct Station {
 /// Throws FileError when the model has no triangles.
 Station modelStation(const BimModel& model, const std::string& file);
 
+/// The station name of scan `index`: its own name, or "scan-INDEX" when it has none (before
+/// makeStationNamesUnique).
+std::string stationName(const Scan& scan, std::size_t index);
+
 /// One station per scan of `data` (read from `file`): points in the scan's own frame; a scan
 /// with a pose is a static station whose scanner sits at its frame's origin. Throws FileError
 /// naming the file and scan when a scan holds no points.

@@ -18,6 +18,7 @@
 #include "gui/open_window.hpp"
 #include "support/cli_runner.hpp"
 #include "support/network_truth.hpp"
+#include "support/two_room_campaign.hpp"
 #include "ui/actions/file_dialogs.hpp"
 #include "ui/layers/dataset_layer.hpp"
 #include "ui/layers/scene.hpp"
@@ -45,10 +46,7 @@ class GuiNetworkTest : public QObject {
  private slots:
   void initTestCase() {
     dir_ = test::scratchDir("gui_network");
-    std::ofstream(dir_ / "rooms.json") << R"({"name": "two-furnished-rooms", "column_widths": [4.0, 4.5],
-                                            "row_depths": [5.0], "furniture_per_room": 1})";
-    const auto r = test::plumbCli(dir_, "simulate --building rooms.json --tls-rooms --tls-doors --tls 1.2,1.2,1.75 "
-                                        "--tls 7.2,3.9,1.75 --tls-walk --perturb-stations 180,20 --seed 5 -o sim");
+    const auto r = test::simulateTwoRoomCampaign(dir_, 5);
     QVERIFY2(r.exit_code == 0, r.err.c_str());
     test::openWindowWithFiles(window_, {QString::fromStdString((dir_ / "sim/indoor.e57").string())});
     QVERIFY(window_);

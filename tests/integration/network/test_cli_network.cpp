@@ -19,6 +19,7 @@
 #include "support/cli_runner.hpp"
 #include "support/html_figures.hpp"
 #include "support/network_truth.hpp"
+#include "support/two_room_campaign.hpp"
 
 namespace plumb {
 namespace {
@@ -28,11 +29,7 @@ namespace {
 std::filesystem::path simulateCampaign(std::uint64_t seed, const std::string& more = {}) {
   // scratchDir keeps each test case apart (they run in parallel, several with the same seed).
   const auto dir = test::scratchDir("cli_network_" + std::to_string(seed) + (more.empty() ? "" : "_control"));
-  std::ofstream(dir / "rooms.json") << R"({"name": "two-furnished-rooms", "column_widths": [4.0, 4.5],
-                                          "row_depths": [5.0], "furniture_per_room": 1})";
-  const auto r = test::plumbCli(dir, "simulate --building rooms.json --tls-rooms --tls-doors --tls 1.2,1.2,1.75 "
-                                     "--tls 7.2,3.9,1.75 --tls-walk --perturb-stations 180,20 --seed " +
-                                     std::to_string(seed) + " " + more + " -o sim");
+  const auto r = test::simulateTwoRoomCampaign(dir, seed, more);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   return dir;
 }
