@@ -17,6 +17,9 @@
 // beside it, Open3D's multiway registration on the same links (open3d_multiway.hpp): its
 // largest error, the links its line process pruned, its time. --robust-scale S sets the
 // adjustment's Cauchy scale (in sigmas; default 3, large: least squares).
+// --loop: 20 rooms around a courtyard, a station in every room centre and every doorway (40
+// stations; --corners: and a corner of every room, 60), shot order shuffled; a strong wrong
+// link planted between the two farthest stations; Open3D on the same links.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -51,6 +54,7 @@ struct Options {
   std::string report_dir;  ///< when set: each seed's network report, with every station's true error
   double robust_scale = PoseGraphParams{}.robust_scale;  ///< --synthetic: the adjustment's Cauchy scale
   bool loop = false;  ///< --loop: 40 stations around a ring of rooms, shuffled, a planted wrong link
+  bool corners = false;  ///< --corners: the loop with a second station in a corner of each room (60 stations)
 };
 
 struct Campaign {
@@ -67,6 +71,8 @@ Campaign simulate(const GeneratedBuilding& b, const Options& o, std::uint64_t se
     r.tls_stations.emplace_back(1.2, 1.2, 1.75);
     r.tls_stations.emplace_back(7.2, 3.9, 1.75);
   }
+  if (o.loop && o.corners)  // a second station in each room, as surveyors set them (docs/NETWORK.md)
+    for (const auto& c : roomCentres(b.spec, 0)) r.tls_stations.push_back(c + Eigen::Vector3d(-0.9, -0.9, 0.0));
   if (o.loop) {  // shot order unknown: shuffled
     std::mt19937_64 rng(seed);
     std::shuffle(r.tls_stations.begin(), r.tls_stations.end(), rng);
@@ -318,13 +324,14 @@ Options parse(int argc, char** argv) {
     else if (a == "--synthetic") o.synthetic = true;
     else if (a == "--bim") o.bim = true;
     else if (a == "--loop") o.loop = true;
+    else if (a == "--corners") o.corners = true;
     else if (a == "--robust-scale" && i + 1 < argc) o.robust_scale = std::stod(argv[++i]);
     else if (a == "--preset" && i + 1 < argc) o.preset = argv[++i];
     else if (a == "--seeds" && i + 1 < argc) o.seeds = std::stoi(argv[++i]);
     else if (a == "--first-seed" && i + 1 < argc) o.first_seed = std::stoull(argv[++i]);
     else if (a == "--report-dir" && i + 1 < argc) o.report_dir = argv[++i];
     else throw std::runtime_error("usage: bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic "
-                                     "[--robust-scale S]] [--loop] [--bim] [--report-dir DIR]");
+                                     "[--robust-scale S]] [--loop [--corners]] [--bim] [--report-dir DIR]");
   }
   return o;
 }
