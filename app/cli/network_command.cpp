@@ -113,19 +113,16 @@ void checkOutputs(const NetworkOptions& o) {
 /// together they exceed it); the datasets are kept to write the registered E57.
 std::vector<Station> loadStations(const NetworkOptions& o, const NetworkParams& p, std::vector<BoundedDataset>& datasets) {
   datasets = readDatasetsWithin({o.inputs.begin(), o.inputs.end()}, p.link);
-  std::vector<Station> stations;
+  std::vector<StationFile> files;
   for (const auto& d : datasets) {
     if (d.subsampled)
       std::cerr << "plumb-cli: " << d.path.string() << ": " << d.estimated_points
                 << " points: the inputs exceed the memory budget together; registering a " << d.voxel * 100
                 << " cm voxel subsample of " << d.points_kept << " of " << d.points_read
                 << " points (-o streams every point again)\n";
-    for (auto& s : stationsOf(d.data, d.path.string())) {
-      s.subsample_voxel = d.voxel;
-      stations.push_back(std::move(s));
-    }
+    files.push_back({&d.data, d.path.string(), d.voxel});
   }
-  makeStationNamesUnique(stations);
+  std::vector<Station> stations = stationsOfFiles(files);
   if (!o.model.empty()) stations.push_back(modelStation(readModel(o.model), o.model));  // last: the reference
   return stations;
 }
@@ -205,17 +202,10 @@ int finish(const NetworkOptions& o, const NetworkResult& r, const std::vector<St
   return code;
 }
 
-void detectFeatures(std::vector<Station>& stations, const NetworkParams& p, Progress& progress) {
-  for (std::size_t i = 0; i < stations.size(); ++i) {
-    progress.report(double(i) / double(stations.size()), "features of " + stations[i].name);
-    detectStationFeatures(stations[i], p.link);
-  }
-}
-
 /// --plan DIR: the first round's link jobs (network_batch.hpp).
 int writePlan(const NetworkOptions& o, const NetworkParams& p, std::vector<Station>& stations,
               std::vector<BoundedDataset>& datasets, Progress& progress) {
-  detectFeatures(stations, p, progress);
+  detectStationsFeatures(stations, p.link, progress);
   LinkPlan plan{o.plan, {}, p.link.seed, o.model};
   for (const auto& s : o.settings)  // the links' own settings: what register needs
     if (!isNetworkParamPath(s.substr(0, s.find('=')))) plan.settings.push_back(s);
@@ -233,7 +223,7 @@ int writePlan(const NetworkOptions& o, const NetworkParams& p, std::vector<Stati
 void planNextRound(const NetworkOptions& o, const NetworkParams& p, std::vector<Station>& stations,
                    const std::vector<Link>& links, Progress& progress) {
   if (!acceptedLinksSplit(stations.size(), links)) return;
-  detectFeatures(stations, p, progress);  // the pairs between the parts are chosen by layout
+  detectStationsFeatures(stations, p.link, progress);  // the pairs between the parts are chosen by layout
   const auto pairs = expansionRound(stations, links, p);
   if (pairs.empty()) return;
   const auto jobs = appendLinkRound(o.links_from, stations, pairs);
@@ -270,16 +260,6 @@ NetworkDecisions decisionsOf(const NetworkOptions& o, const std::vector<Station>
   return d;
 }
 
-/// The registered network adjusted again with the surveyor's decisions (its rounds and times kept).
-NetworkResult readjusted(NetworkResult first, const std::vector<Station>& stations, const NetworkParams& p,
-                         const ControlSurvey* c, const NetworkDecisions& decisions) {
-  NetworkResult r = adjustRegisteredLinks(stations, std::move(first.links), first.reference, p, c, decisions);
-  r.rounds = first.rounds;
-  r.seconds_features = first.seconds_features;
-  r.seconds_links = first.seconds_links;
-  return r;
-}
-
 int run(const NetworkOptions& o) {
   const NetworkParams p = loadParams(o);
   if (o.print_params) {
@@ -312,9 +292,9 @@ int run(const NetworkOptions& o) {
     planNextRound(o, p, stations, links, progress);
     r = adjustRegisteredLinks(stations, std::move(links), reference, p, c, decisions);
   } else {
-    detectFeatures(stations, p, progress);
+    detectStationsFeatures(stations, p.link, progress);
     r = registerNetwork(stations, reference, p, &progress, c);
-    if (!decisions.empty()) r = readjusted(std::move(r), stations, p, c, decisions);
+    if (!decisions.empty()) r = readjustNetwork(stations, r, p, c, decisions);
   }
   if (tty) std::cerr << "\r\033[K";
   return finish(o, r, stations, datasets);

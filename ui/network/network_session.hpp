@@ -25,9 +25,10 @@ struct StationSource {
 struct NetworkSession {
   std::shared_ptr<const std::vector<Station>> stations;
   std::vector<StationSource> sources;  ///< per station
-  /// The links as registered, before any decision: every re-run starts from them (a link the
-  /// surveyor rejected, then cleared, is accepted again as its verdict says).
-  std::shared_ptr<const std::vector<Link>> links;
+  /// The network as registered, before any decision: every re-run starts from its links
+  /// (readjustNetwork: a link the surveyor rejected, then cleared, is accepted again as its
+  /// verdict says).
+  std::shared_ptr<const NetworkResult> registered;
   std::shared_ptr<const NetworkResult> result;
   nlohmann::json report;  ///< networkReportToJson(*result, *stations)
   NetworkParams params;   ///< what the links were registered and adjusted with

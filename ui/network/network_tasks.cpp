@@ -27,25 +27,13 @@ NetworkInputs::Source datasetSource(DatasetLayer& layer) {
   return s;
 }
 
-/// The stations as plumb-cli network builds them, each with its features.
+/// The stations as plumb-cli network builds them.
 std::vector<Station> buildStations(const NetworkInputs& in) {
-  std::vector<Station> stations;
-  for (const auto& d : in.datasets)
-    for (auto& s : stationsOf(*d.data, d.file)) {
-      s.subsample_voxel = d.subsample_voxel;  // the report says the station was registered on a subsample
-      stations.push_back(std::move(s));
-    }
-  makeStationNamesUnique(stations);
+  std::vector<StationFile> files;
+  for (const auto& d : in.datasets) files.push_back({d.data.get(), d.file, d.subsample_voxel});
+  std::vector<Station> stations = stationsOfFiles(files);
   if (in.model) stations.push_back(modelStation(*in.model, in.model_file));  // last: the reference
   return stations;
-}
-
-void detectFeatures(std::vector<Station>& stations, const NetworkParams& params, Progress& progress) {
-  for (std::size_t i = 0; i < stations.size(); ++i) {
-    progress.report(double(i) / double(stations.size()), "features of " + stations[i].name);
-    progress.check();
-    detectStationFeatures(stations[i], params.link);
-  }
 }
 
 }  // namespace
@@ -129,7 +117,7 @@ Task* startNetworkRegistration(AppContext& app, NetworkInputs inputs, const Netw
                                                                   done](Progress& progress) {
     auto stations = std::make_shared<std::vector<Station>>(buildStations(inputs));
     Progress features = progress.sub(0.0, 0.3);
-    detectFeatures(*stations, params, features);
+    detectStationsFeatures(*stations, params.link, features);
     Progress linking = progress.sub(0.3, 1.0);
     auto result = std::make_shared<const NetworkResult>(
         registerNetwork(*stations, inputs.referenceIndex(), params, &linking, inputs.control.get()));
@@ -138,7 +126,7 @@ Task* startNetworkRegistration(AppContext& app, NetworkInputs inputs, const Netw
     session->stations = std::move(stations);
     session->sources = inputs.sources();
     session->params = params;
-    session->links = std::make_shared<const std::vector<Link>>(result->links);
+    session->registered = result;
     session->setResult(std::move(result));  // the report is built here, off the UI thread
     return [session, done] { done(session); };
   }, holds);
@@ -149,11 +137,11 @@ Task* startNetworkAdjustment(AppContext& app, const NetworkSession& session, con
   std::vector<LayerRef> holds;
   for (const auto& s : session.sources) holds.push_back(s.layer);
   return app.tasks.run(QObject::tr("Adjusting the network"),
-                       [stations = session.stations, links = session.links, reference = session.result->reference,
-                        params = session.params, control = session.control, decisions, done](Progress& progress) {
+                       [stations = session.stations, registered = session.registered, params = session.params,
+                        control = session.control, decisions, done](Progress& progress) {
     progress.report(0.0, "adjustment");
     auto adjusted = std::make_shared<const NetworkResult>(
-        adjustRegisteredLinks(*stations, *links, reference, params, control.get(), decisions));
+        readjustNetwork(*stations, *registered, params, control.get(), decisions));
     return [adjusted, done] { done(adjusted); };
   }, holds);
 }

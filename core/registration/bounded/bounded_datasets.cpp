@@ -9,10 +9,13 @@
 namespace plumb {
 namespace {
 
+[[noreturn]] void refuseModel(const std::filesystem::path& path) {
+  throw FileError(path, "is a model, not a point file (a BIM goes in with --model)");
+}
+
 BoundedDataset readWhole(const std::filesystem::path& path, std::uint64_t estimate) {
   LoadedData data = readFile(path);
-  if (!std::holds_alternative<Dataset>(data))
-    throw FileError(path, "is a model, not a point file (a BIM goes in with --model)");
+  if (!std::holds_alternative<Dataset>(data)) refuseModel(path);
   BoundedDataset b{path, std::move(std::get<Dataset>(data)), false, 0.0, estimate, 0, 0};
   b.points_kept = b.data.pointCount();
   return b;
@@ -32,7 +35,7 @@ std::vector<BoundedDataset> readDatasetsWithin(const std::vector<std::filesystem
   std::uint64_t total = 0;
   for (const auto& path : paths) {
     estimates.push_back(estimatePointCount(path));
-    if (estimates.back().model) throw FileError(path, "is a model, not a point file (a BIM goes in with --model)");
+    if (estimates.back().model) refuseModel(path);
     total += estimates.back().points;
   }
   const std::uint64_t budget = memoryBudgetBytes(params.memory);

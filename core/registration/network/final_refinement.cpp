@@ -40,13 +40,13 @@ RefineParams refineParams(const NetworkParams& p) {
 Link refinedLink(std::size_t a, std::size_t b, const RefineResult& r, const NetworkParams& p) {
   Link l;
   l.a = a, l.b = b;
-  l.reason = "final refinement";
+  l.reason = kFinalRefinementReason;
   l.transform = r.transform;
   l.registered = l.accepted = true;
   l.level = VerdictLevel::Usable;
   l.verdict = "refined on points at the adjusted poses";
   l.status = "success";
-  l.method = "final refinement";
+  l.method = kFinalRefinementReason;
   l.overlap = r.overlap;
   l.point_rms = r.rms;
   l.length_scale = r.length_scale;
@@ -93,7 +93,7 @@ std::vector<Link> refinedPairLinks(const std::vector<Station>& stations,
 std::vector<Link> withRefinedPairs(const std::vector<Link>& links, const std::vector<Link>& refined) {
   std::vector<Link> out;
   for (const auto& l : links)
-    if (l.reason != "final refinement") out.push_back(l);
+    if (l.reason != kFinalRefinementReason) out.push_back(l);
   out.insert(out.end(), refined.begin(), refined.end());
   return out;
 }

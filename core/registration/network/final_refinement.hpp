@@ -13,6 +13,9 @@
 
 namespace plumb {
 
+/// Link::reason (and method) of a refined pair: the report tells them from registered pairs.
+inline constexpr const char* kFinalRefinementReason = "final refinement";
+
 struct FinalRefinementSummary {
   bool done = false;
   std::size_t pairs_tried = 0;  ///< placed scan-station pairs whose boxes overlap

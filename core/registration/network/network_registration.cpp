@@ -135,6 +135,18 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, c
   for (std::size_t i = 0; i < stations.size(); ++i) out.parts[component[i]].push_back(i);
 }
 
+/// A result with what the registration of `r` measured (reference, pairs, rounds, times) and
+/// no links or adjustment yet: what an adjustment of other links starts from.
+NetworkResult registrationFacts(const NetworkResult& r) {
+  NetworkResult out;
+  out.reference = r.reference;
+  out.all_pairs = r.all_pairs;
+  out.rounds = r.rounds;
+  out.seconds_features = r.seconds_features;
+  out.seconds_links = r.seconds_links;
+  return out;
+}
+
 /// The final refinement on points (final_refinement.hpp), when enabled: `out` adjusted again
 /// with every overlapping pair refined at its poses.
 void refineOnPoints(const std::vector<Station>& stations, const NetworkParams& params, const ControlSurvey* control,
@@ -143,17 +155,21 @@ void refineOnPoints(const std::vector<Station>& stations, const NetworkParams& p
   FinalRefinementSummary summary;
   const auto refined = refinedPairLinks(stations, out.adjustment.poses, out.ambiguous(), out.links, params, summary);
   if (!refined.empty()) {
-    NetworkResult again;
-    again.reference = out.reference;
-    again.all_pairs = out.all_pairs;
-    again.rounds = out.rounds;
-    again.seconds_features = out.seconds_features;
-    again.seconds_links = out.seconds_links;
+    NetworkResult again = registrationFacts(out);
     again.links = withRefinedPairs(out.links, refined);
     adjust(stations, params, control, again, locked);
     out = std::move(again);
   }
   out.final_refinement = summary;
+}
+
+/// out.links adjusted with the surveyor's locks, then refined on points when enabled; timed.
+void adjustAndRefine(const std::vector<Station>& stations, const NetworkParams& params, const ControlSurvey* control,
+                     NetworkResult& out, const LockedStations& locked) {
+  const auto t0 = std::chrono::steady_clock::now();
+  adjust(stations, params, control, out, locked);
+  refineOnPoints(stations, params, control, out, locked);
+  out.seconds_adjustment = secondsSince(t0);
 }
 
 }  // namespace
@@ -251,10 +267,18 @@ NetworkResult adjustRegisteredLinks(const std::vector<Station>& stations, std::v
   out.links = std::move(links);
   out.rounds = 1;
   for (const auto& l : out.links) out.seconds_links += l.seconds;
-  const auto t0 = std::chrono::steady_clock::now();
-  adjust(stations, params, control, out, decisions.locked);
-  refineOnPoints(stations, params, control, out, decisions.locked);
-  out.seconds_adjustment = secondsSince(t0);
+  adjustAndRefine(stations, params, control, out, decisions.locked);
+  return out;
+}
+
+NetworkResult readjustNetwork(const std::vector<Station>& stations, const NetworkResult& registered,
+                              const NetworkParams& params, const ControlSurvey* control,
+                              const NetworkDecisions& decisions) {
+  checkNetwork(stations, registered.reference, params);
+  NetworkResult out = registrationFacts(registered);
+  out.links = registered.links;
+  applyDecisions(out.links, decisions, stations);
+  adjustAndRefine(stations, params, control, out, decisions.locked);
   return out;
 }
 
@@ -265,14 +289,11 @@ NetworkResult registerNetwork(const std::vector<Station>& stations, std::size_t 
   out.reference = reference;
   out.all_pairs = stations.size() * (stations.size() - 1) / 2;
   for (const auto& s : stations) out.seconds_features += s.seconds_features;
-  auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = std::chrono::steady_clock::now();
   if (control) checkObservations(*control, stationNames(stations));  // before minutes of link registration
   registerLinks(stations, params, out, progress);
   out.seconds_links = secondsSince(t0);
-  t0 = std::chrono::steady_clock::now();
-  adjust(stations, params, control, out);
-  refineOnPoints(stations, params, control, out, {});
-  out.seconds_adjustment = secondsSince(t0);
+  adjustAndRefine(stations, params, control, out, {});
   return out;
 }
 

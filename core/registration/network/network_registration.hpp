@@ -115,4 +115,12 @@ NetworkResult adjustRegisteredLinks(const std::vector<Station>& stations, std::v
                                     std::size_t reference, const NetworkParams& params,
                                     const ControlSurvey* control = nullptr, const NetworkDecisions& decisions = {});
 
+/// The network `registered` (registerNetwork or adjustRegisteredLinks) adjusted again on its
+/// links as first registered, with the surveyor's `decisions`: what the project view's re-run
+/// and `network --accept/--reject/--lock` do. Rounds and the feature and link times are those
+/// of the registration. Throws InputError as applyDecisions.
+NetworkResult readjustNetwork(const std::vector<Station>& stations, const NetworkResult& registered,
+                              const NetworkParams& params, const ControlSurvey* control,
+                              const NetworkDecisions& decisions);
+
 }  // namespace plumb

@@ -115,7 +115,7 @@ nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& s
   nlohmann::json loops = loopsJson(r, st, lt, lr);
   std::size_t tried = 0, registered = 0, flagged = 0, bridges = 0;
   for (const auto& l : r.links)
-    if (l.reason != "final refinement") ++tried, registered += l.registered;  // pairs the pipeline registered
+    if (l.reason != kFinalRefinementReason) ++tried, registered += l.registered;  // pairs the pipeline registered
   std::vector<std::size_t> dropped;
   for (std::size_t i = 0; i < r.adjusted.size(); ++i) {
     const auto& o = r.adjustment.links[i];

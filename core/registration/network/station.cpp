@@ -60,6 +60,25 @@ void detectStationFeatures(Station& station, const PipelineParams& params) {
   station.seconds_features = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+std::vector<Station> stationsOfFiles(const std::vector<StationFile>& inputs) {
+  std::vector<Station> stations;
+  for (const auto& in : inputs)
+    for (auto& s : stationsOf(*in.data, in.file)) {
+      s.subsample_voxel = in.subsample_voxel;
+      stations.push_back(std::move(s));
+    }
+  makeStationNamesUnique(stations);
+  return stations;
+}
+
+void detectStationsFeatures(std::vector<Station>& stations, const PipelineParams& params, Progress& progress) {
+  for (std::size_t i = 0; i < stations.size(); ++i) {
+    progress.report(double(i) / double(stations.size()), "features of " + stations[i].name);
+    progress.check();
+    detectStationFeatures(stations[i], params);
+  }
+}
+
 std::vector<std::string> stationNames(const std::vector<Station>& stations) {
   std::vector<std::string> names;
   for (const auto& st : stations) names.push_back(st.name);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "common/progress.hpp"
 #include "model/bim_model.hpp"
 #include "model/dataset.hpp"
 #include "registration/auto/registration_input.hpp"
@@ -41,6 +42,23 @@ std::string stationName(const Scan& scan, std::size_t index);
 /// with a pose is a static station whose scanner sits at its frame's origin. Throws FileError
 /// naming the file and scan when a scan holds no points.
 std::vector<Station> stationsOf(const Dataset& data, const std::string& file);
+
+/// One input of a network: a point dataset as read (whole, or its scans' voxel subsamples), the
+/// file it came from, and the subsample voxel (0: every point).
+struct StationFile {
+  const Dataset* data = nullptr;
+  std::string file;
+  double subsample_voxel = 0.0;
+};
+
+/// Every scan of every input as a station (stationsOf), each with its file's subsample voxel,
+/// names made unique (makeStationNamesUnique): the stations of `plumb-cli network` and of the
+/// desktop's Network dock, before the model (modelStation, last).
+std::vector<Station> stationsOfFiles(const std::vector<StationFile>& inputs);
+
+/// Detects every station's features (detectStationFeatures), reporting each station to
+/// `progress` and honouring its cancel.
+void detectStationsFeatures(std::vector<Station>& stations, const PipelineParams& params, Progress& progress);
 
 /// Station names made unique: a name used twice gets its file's stem as a prefix
 /// ("indoor/tls-0"), then a number if still not unique.
