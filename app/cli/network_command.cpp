@@ -185,7 +185,10 @@ int finish(const NetworkOptions& o, const NetworkResult& r, const std::vector<St
     if (!r.unplaced.empty()) {
       std::cerr << " " << r.unplaced.size() << " station(s) could not be placed:";
       for (std::size_t i : r.unplaced) std::cerr << " " << stations[i].name;
-      std::cerr << " (no accepted link joins them to the reference " << stations[r.reference].name << ")";
+      std::cerr << (r.georeference && r.georeference->done
+                        ? " (no kept link joins them to stations the control points hold, and they do not see 3 "
+                          "control points themselves)"
+                        : " (no accepted link joins them to the reference " + stations[r.reference].name + ")");
     }
     if (const auto ambiguous = r.ambiguous(); !ambiguous.empty()) {
       std::cerr << (r.unplaced.empty() ? " " : "; ") << ambiguous.size() << " station(s) ambiguous:";
@@ -218,18 +221,19 @@ int writePlan(const NetworkOptions& o, const NetworkParams& p, std::vector<Stati
   return 0;
 }
 
-/// --links-from DIR when the reports' accepted links leave the network split: the next round of
-/// jobs, as a network run would register next (the adjustment still reports the parts).
+/// --links-from DIR: the next round of jobs, as a network run would register next (nextRound:
+/// pairs between the parts while the links leave the network split, footprint pairs within the
+/// placed parts); the adjustment of the links so far is still reported.
 void planNextRound(const NetworkOptions& o, const NetworkParams& p, std::vector<Station>& stations,
                    const std::vector<Link>& links, Progress& progress) {
-  if (!acceptedLinksSplit(stations.size(), links)) return;
-  detectStationsFeatures(stations, p.link, progress);  // the pairs between the parts are chosen by layout
-  const auto pairs = expansionRound(stations, links, p);
+  const bool split = acceptedLinksSplit(stations.size(), links);
+  if (split) detectStationsFeatures(stations, p.link, progress);  // the pairs between the parts are chosen by layout
+  const auto pairs = nextRound(stations, links, p);
   if (pairs.empty()) return;
   const auto jobs = appendLinkRound(o.links_from, stations, pairs);
   if (isatty(2)) std::cerr << "\r\033[K";
-  std::cerr << "plumb-cli: the links leave the network split; " << pairs.size()
-            << " more link jobs written to " << jobs.string() << ": run them, then --links-from "
+  std::cerr << "plumb-cli: " << (split ? "the links leave the network split; " : "placed stations overlap untried; ")
+            << pairs.size() << " more link jobs written to " << jobs.string() << ": run them, then --links-from "
             << o.links_from << " again\n";
 }
 

@@ -32,6 +32,14 @@ struct Georeference {
   std::size_t control_used = 0;       ///< control points seen by placed stations
   double control_rms = 0.0;           ///< m, 3D RMS of the control points' residuals
   double check_max = 0.0;             ///< m, largest 3D check-point residual (0: none seen)
+  /// Stations that see 3 control points (not in a line) themselves, every one within the drop
+  /// translation at the station's adjusted pose: their own resection confirms them, whatever the
+  /// links said (sorted).
+  std::vector<std::size_t> settled;
+  /// Links the control points contradicted (dropped in the georeferenced solve), and stations
+  /// that then lost every link to stations the control holds (left unplaced).
+  std::size_t links_dropped = 0;
+  std::vector<std::size_t> unplaced;
 };
 
 /// Checks that every observation names a station in `names` and a point of `survey`; throws
@@ -43,8 +51,18 @@ void checkObservations(const ControlSurvey& survey, const std::vector<std::strin
 /// stations; otherwise returns done = false with the reason and leaves the adjustment as it
 /// was. On success, poses, sigmas, chain poses and link residuals are those of the ground
 /// frame at the grid origin.
+///
+/// The control points are evidence the links cannot fake: a station that sees 3 of them starts
+/// at its own resection when the links put it elsewhere; a kept link whose residual then exceeds
+/// the drop thresholds is dropped (params.auto_drop, the worst first, solved again); stations
+/// whose group of links no longer sees 3 control points are unplaced (their pose reset).
 Georeference georeferenceNetwork(const ControlSurvey& survey, const std::vector<std::string>& station_names,
                                  const std::vector<AdjustmentLink>& links, const PoseGraphParams& params,
                                  NetworkAdjustment& adjustment);
+
+/// `part`'s georeference (a part of the network placed by its own control points) merged into
+/// `into`: each point's residual averaged over both sets of observations; counts, control RMS
+/// and largest check residual computed again.
+void mergeGeoreference(Georeference& into, const Georeference& part);
 
 }  // namespace plumb

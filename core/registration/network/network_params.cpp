@@ -17,7 +17,13 @@ const ParamSchema<PairSelectionParams>& PairSelectionParams::schema() {
           .integer(&P::sequence_neighbours, "sequence-neighbours", "Sequence neighbours", "", 0, 50,
                    "Pairs each station with the stations up to this many places after it in input order")
           .integer(&P::expansion_per_station, "expansion", "Expansion pairs per station", "", 0, 100,
-                   "While the network is split, further pairs per station tried between its parts");
+                   "While the network is split, further pairs per station tried between its parts")
+          .real(&P::footprint_overlap, "footprint-overlap", "Footprint overlap", "", 0.01, 1.0,
+                "Placed stations of one part whose plan footprints overlap this much are paired too")
+          .integer(&P::footprint_per_station, "footprint-pairs", "Footprint pairs per station", "", 0, 100,
+                   "Footprint pairs per station and round (0: none)")
+          .real(&P::footprint_cell, "footprint-cell", "Footprint cell", "m", 0.05, 10.0,
+                "Plan cell of a station's footprint", true);
   return s;
 }
 

@@ -24,6 +24,17 @@ struct PairSelectionParams {
   /// While the accepted links leave the network split, at most this many further pairs per
   /// station are tried between the parts, most similar first, [0, 100].
   int expansion_per_station = 2;
+  /// Once links place a part of the network, untried pairs of its stations whose footprints
+  /// (plan cells holding their points) overlap by at least this share are registered too, so
+  /// loops form inside the part (footprint_pairs.hpp), [0.01, 1].
+  double footprint_overlap = 0.3;
+  /// At most this many footprint pairs per station and round; 0: no footprint pairs, [0, 100].
+  /// Off by default: on office-floor (symmetric under a half turn) they paired stations placed
+  /// by the half turn with their twins, whose registration corroborates the wrong placement
+  /// (docs/NETWORK.md "Candidate pairs").
+  int footprint_per_station = 0;
+  /// Plan cell of a footprint, m, [0.05, 10].
+  double footprint_cell = 0.5;
   static const ParamSchema<PairSelectionParams>& schema();
 };
 

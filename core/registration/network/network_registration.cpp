@@ -6,6 +6,8 @@
 #include <set>
 
 #include "common/error.hpp"
+#include "registration/network/control_parts.hpp"
+#include "registration/network/footprint_pairs.hpp"
 
 namespace plumb {
 namespace {
@@ -65,18 +67,15 @@ std::vector<CandidatePair> firstPairs(const std::vector<Station>& stations,
   return pairs;
 }
 
-/// Pair rounds: the initial pairs, then expansions while the accepted links leave parts apart.
+/// Pair rounds: the initial pairs, then the next rounds (nextRound) until none is left.
 void registerLinks(const std::vector<Station>& stations, const NetworkParams& params, NetworkResult& out,
                    Progress* progress) {
-  const auto similarity = nodeSimilarity(stations);
   std::set<std::pair<std::size_t, std::size_t>> tried;
-  std::vector<CandidatePair> pairs = firstPairs(stations, similarity, params.pairs);
+  std::vector<CandidatePair> pairs = firstPairs(stations, nodeSimilarity(stations), params.pairs);
   while (!pairs.empty()) {
     ++out.rounds;
     registerPairs(stations, pairs, params, out, tried, progress);
-    if (!acceptedLinksSplit(stations.size(), out.links)) break;
-    pairs = expansionPairs(similarity, connectedComponents(stations.size(), acceptedEdges(out.links)), tried,
-                           params.pairs);
+    pairs = nextRound(stations, out.links, params);
   }
 }
 
@@ -103,6 +102,18 @@ std::vector<std::size_t> copiesUnchecked(const std::vector<Station>& stations, c
 
 namespace {
 
+/// Stations the control points confirm (Georeference::settled) are not ambiguous: their own
+/// resection decides between the placements the links offered.
+void settleByControl(NetworkResult& out) {
+  if (!out.georeference || !out.georeference->done) return;
+  const auto& settled = out.georeference->settled;
+  for (auto* list : {&out.competing.ambiguous, &out.copies_unchecked, &out.one_loop}) {
+    std::vector<std::size_t> kept;
+    std::set_difference(list->begin(), list->end(), settled.begin(), settled.end(), std::back_inserter(kept));
+    *list = std::move(kept);
+  }
+}
+
 void adjust(const std::vector<Station>& stations, const NetworkParams& params, const ControlSurvey* control,
             NetworkResult& out, const LockedStations& locked = {}) {
   std::vector<AdjustmentLink> links;
@@ -123,8 +134,11 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, c
                                             out.adjustment);
   out.copies_unchecked = copiesUnchecked(stations, out);
   out.one_loop = decidedByOneLoop(stations.size(), links, out.adjustment, out.reference);
-  if (control)
+  if (control) {
     out.georeference = georeferenceNetwork(*control, stationNames(stations), links, params.graph, out.adjustment);
+    placePartsByOwnControl(stations, links, params, *control, out);
+    settleByControl(out);
+  }
   for (std::size_t i = 0; i < stations.size(); ++i)
     if (!out.adjustment.poses[i]) out.unplaced.push_back(i);
   std::vector<GraphEdge> kept;
@@ -225,13 +239,18 @@ bool acceptedLinksSplit(std::size_t stations, const std::vector<Link>& links) {
   return *std::max_element(component.begin(), component.end()) > 0;
 }
 
-std::vector<CandidatePair> expansionRound(const std::vector<Station>& stations, const std::vector<Link>& links,
-                                          const NetworkParams& params) {
-  if (!acceptedLinksSplit(stations.size(), links)) return {};
+std::vector<CandidatePair> nextRound(const std::vector<Station>& stations, const std::vector<Link>& links,
+                                     const NetworkParams& params) {
   std::set<std::pair<std::size_t, std::size_t>> tried;
   for (const auto& l : links) tried.insert({std::min(l.a, l.b), std::max(l.a, l.b)});
-  return expansionPairs(nodeSimilarity(stations), connectedComponents(stations.size(), acceptedEdges(links)), tried,
-                        params.pairs);
+  std::vector<CandidatePair> pairs;
+  if (acceptedLinksSplit(stations.size(), links))
+    pairs = expansionPairs(nodeSimilarity(stations), connectedComponents(stations.size(), acceptedEdges(links)),
+                           tried, params.pairs);
+  if (params.pairs.footprint_per_station <= 0) return pairs;
+  const auto footprint = footprintPairs(stations, placeParts(stations, links, params.graph), tried, params.pairs);
+  pairs.insert(pairs.end(), footprint.begin(), footprint.end());
+  return pairs;
 }
 
 void applyDecisions(std::vector<Link>& links, const NetworkDecisions& d, const std::vector<Station>& stations) {

@@ -61,6 +61,10 @@ struct NetworkResult {
   /// With control points: the network moved into the survey's grid, and each control and check
   /// point's residual (georeference.hpp).
   std::optional<Georeference> georeference;
+  /// With control points: stations no kept link joins to the reference, placed in the grid by
+  /// the control points their own part of the network sees (docs/NETWORK.md "Parts placed by
+  /// their own control"), sorted.
+  std::vector<std::size_t> placed_by_own_control;
   /// Stations the surveyor locked (NetworkDecisions::locked), sorted.
   std::vector<std::size_t> locked;
   /// The final refinement on points (final-refinement.enabled): its refined pairs are links
@@ -101,11 +105,13 @@ std::vector<CandidatePair> plannedPairs(const std::vector<Station>& stations, co
 /// The accepted `links` leave the network of `stations` nodes in several parts.
 bool acceptedLinksSplit(std::size_t stations, const std::vector<Link>& links);
 
-/// While the accepted `links` leave the network split: the next round of pairs between its parts
-/// (not yet tried, most similar first), as registerNetwork would register next; empty when the
-/// network is connected or every pair between the parts was tried. `stations` carry features.
-std::vector<CandidatePair> expansionRound(const std::vector<Station>& stations, const std::vector<Link>& links,
-                                          const NetworkParams& params);
+/// The next round of pairs after `links` (docs/NETWORK.md "Candidate pairs"), as registerNetwork
+/// registers them: while the accepted links leave the network split, pairs between its parts
+/// (expansionPairs, not yet tried, most similar first; `stations` then need their features), and
+/// the untried pairs of placed stations whose footprints overlap within each part
+/// (footprintPairs). Empty when neither is left.
+std::vector<CandidatePair> nextRound(const std::vector<Station>& stations, const std::vector<Link>& links,
+                                     const NetworkParams& params);
 
 /// The adjustment of links registered elsewhere (`network --links-from`, linkFromReport), as
 /// registerNetwork adjusts its own; no pair is added while the network is split (the parts are

@@ -38,6 +38,7 @@ nlohmann::json linkJson(const NetworkResult& r, const std::vector<Station>& st, 
   const LinkOutcome* o = outcomeOf(r, k);
   j["flagged"] = o && o->flagged;
   j["dropped"] = o && o->dropped;
+  if (o && o->dropped_by_control) j["dropped_by"] = "control points";
   j["bridge"] = o && o->bridge;
   if (o) {
     j["residual_translation_m"] = o->residual.translation;
@@ -59,6 +60,12 @@ nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& s
                       {"links", links}};
   if (st[i].subsample_voxel > 0) j["subsample_voxel_m"] = st[i].subsample_voxel;
   if (std::binary_search(r.locked.begin(), r.locked.end(), i)) j["locked"] = true;
+  if (std::binary_search(r.placed_by_own_control.begin(), r.placed_by_own_control.end(), i))
+    j["placed_by"] = "own control points";  // no kept link joins it to the reference
+  if (r.georeference && std::binary_search(r.georeference->settled.begin(), r.georeference->settled.end(), i))
+    j["settled_by_control"] = true;  // sees 3 control points itself, all within the drop translation
+  if (r.georeference && std::binary_search(r.georeference->unplaced.begin(), r.georeference->unplaced.end(), i))
+    j["unplaced_why"] = "the control points contradict the links that placed it, and it sees fewer than 3 of them";
   if (ambiguous)
     j["ambiguous_why"] =
         std::binary_search(r.competing.ambiguous.begin(), r.competing.ambiguous.end(), i)
@@ -132,6 +139,7 @@ nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& s
           {"residual_translation_mean_m", res.mean()}, {"residual_translation_max_m", res.max},
           {"unplaced", names(st, r.unplaced)}, {"ambiguous", names(st, r.ambiguous())},
           {"copies_unchecked", names(st, r.copies_unchecked)}, {"one_loop", names(st, r.one_loop)},
+          {"placed_by_own_control", names(st, r.placed_by_own_control)},
           {"competing", competingJson(r, st)}, {"parts", parts}, {"solves", r.adjustment.solves},
           {"converged", r.adjustment.converged}, {"covariance", r.adjustment.covariance_ok},
           {"solver", r.adjustment.message}, {"seconds_features", r.seconds_features},
@@ -156,7 +164,7 @@ nlohmann::json georeferenceJson(const Georeference& g) {
           {"coordinates", "ground frame moved to origin_grid: grid coordinates at that point, ground distances "
                           "about it (grid = origin + scale_factor x horizontal offset)"},
           {"control_used", g.control_used}, {"control_rms_m", g.control_rms}, {"check_max_m", g.check_max},
-          {"points", points}};
+          {"links_dropped", g.links_dropped}, {"points", points}};
 }
 
 void georeferenceText(const nlohmann::json& g, std::ostringstream& o) {
@@ -219,7 +227,8 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
       o << std::setprecision(1) << ", overlap " << 100 * l["overlap"].get<double>() << "%, RMS "
         << 1000 * l["point_rms_m"].get<double>() << " mm, residual " << 1000 * l.value("residual_translation_m", 0.0)
         << " mm / " << std::setprecision(4) << l.value("residual_rotation_deg", 0.0) << " deg";
-    if (l["dropped"].get<bool>()) o << "  DROPPED (disagrees with the network)";
+    if (l["dropped"].get<bool>())
+      o << (l.contains("dropped_by") ? "  DROPPED (the control points contradict it)" : "  DROPPED (disagrees with the network)");
     else if (l["flagged"].get<bool>()) o << "  FLAGGED (disagrees with the network)";
     else if (l["bridge"].get<bool>()) o << "  (no loop checks it)";
     if (l.contains("decision")) o << "  [" << l["decision"].get<std::string>() << " by the surveyor]";
@@ -232,11 +241,13 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
       continue;
     }
     if (!s["placed"].get<bool>()) {
-      o << "NOT PLACED (no accepted link joins it to the reference)\n";
+      o << "NOT PLACED (" << s.value("unplaced_why", "no accepted link joins it to the reference") << ")\n";
       continue;
     }
     const auto& sp = s["sigma_position_m"];
     if (s.value("locked", false)) o << "locked, ";
+    if (s.contains("placed_by")) o << "placed by its own control points (no link to the reference), ";
+    if (s.value("settled_by_control", false)) o << "confirmed by the 3+ control points it sees, ";
     o << std::setprecision(2) << "sigma " << 1000 * sp[0].get<double>() << ", " << 1000 * sp[1].get<double>() << ", "
       << 1000 * sp[2].get<double>() << " mm\n";
   }

@@ -47,12 +47,16 @@ std::vector<CandidatePair> expansionPairs(const std::vector<std::vector<double>>
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j)
       if (component[i] != component[j] && !tried.count({i, j})) all.push_back({i, j, similarity[i][j], "expansion"});
+  return bestPerStation(std::move(all), params.expansion_per_station, n);
+}
+
+std::vector<CandidatePair> bestPerStation(std::vector<CandidatePair> all, int per_station, std::size_t stations) {
   std::stable_sort(all.begin(), all.end(),
                    [](const CandidatePair& x, const CandidatePair& y) { return x.similarity > y.similarity; });
-  std::vector<int> used(n, 0);
+  std::vector<int> used(stations, 0);
   std::vector<CandidatePair> out;
   for (const auto& p : all)
-    if (used[p.a] < params.expansion_per_station && used[p.b] < params.expansion_per_station) {
+    if (used[p.a] < per_station && used[p.b] < per_station) {
       ++used[p.a], ++used[p.b];
       out.push_back(p);
     }

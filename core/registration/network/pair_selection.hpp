@@ -28,6 +28,10 @@ std::vector<std::vector<double>> similarityMatrix(const std::vector<LayoutDescri
 std::vector<CandidatePair> initialPairs(const std::vector<std::vector<double>>& similarity,
                                         const PairSelectionParams& params);
 
+/// `all` ordered by similarity (largest first, ties in their given order), each kept while
+/// neither of its stations has `per_station` kept pairs yet.
+std::vector<CandidatePair> bestPerStation(std::vector<CandidatePair> all, int per_station, std::size_t stations);
+
 /// Pairs joining two different parts (`component` per station) not in `tried`, most similar
 /// first, at most params.expansion_per_station per station.
 std::vector<CandidatePair> expansionPairs(const std::vector<std::vector<double>>& similarity,

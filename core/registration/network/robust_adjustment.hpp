@@ -31,6 +31,8 @@ struct LinkOutcome {
   EdgeResidual residual;      ///< after the final adjustment (also for dropped links)
   bool flagged = false;       ///< residual beyond the flag thresholds
   bool dropped = false;       ///< removed by the robust loop
+  /// Dropped by the georeferencing: the control points contradict it (georeference.hpp).
+  bool dropped_by_control = false;
   TriangleSupport triangles;  ///< with all links, before any drop
   /// A kept link that is the only connection between two parts: nothing checks it.
   bool bridge = false;

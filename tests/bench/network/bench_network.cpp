@@ -1,4 +1,5 @@
 // bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic [--robust-scale S]] [--bim]
+//               [--report-dir DIR] [--set GROUP.KEY=VALUE]...   (--set: plumb-cli network's --set)
 // Simulates a campaign of the preset (a station in every ground-floor room and interior
 // doorway, shot as a walk: each next station the nearest one not yet scanned; --smoke: two
 // furnished rooms of 4 x 5 and 4.5 x 5 m plus a station in a corner of each room), perturbs every
@@ -24,6 +25,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <string>
@@ -51,6 +53,7 @@ struct Options {
   bool smoke = false;
   bool synthetic = false;
   bool bim = false;  ///< also register every station onto the building's model (the reference)
+  std::vector<std::string> settings;  ///< --set GROUP.KEY=VALUE: network or link pipeline parameters
   std::string report_dir;  ///< when set: each seed's network report, with every station's true error
   double robust_scale = PoseGraphParams{}.robust_scale;  ///< --synthetic: the adjustment's Cauchy scale
   bool loop = false;  ///< --loop: 40 stations around a ring of rooms, shuffled, a planted wrong link
@@ -129,12 +132,24 @@ void writeReport(const std::string& dir, std::uint64_t seed, const NetworkResult
     j["stations"][i]["true_rotation_error_deg"] = RigidTransform::rotationErrorDeg(expected, *r.adjustment.poses[i]);
     j["stations"][i]["true_position_error_m"] = RigidTransform::translationError(expected, *r.adjustment.poses[i]);
   }
+  std::filesystem::create_directories(dir);
   std::ofstream(dir + "/seed-" + std::to_string(seed) + ".json") << j.dump(1);
+}
+
+/// The network parameters with the --set options applied (setNetworkParam).
+NetworkParams paramsOf(const Options& o) {
+  NetworkParams p;
+  for (const auto& s : o.settings) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos) throw std::runtime_error("--set wants GROUP.KEY=VALUE, got " + s);
+    setNetworkParam(p, s.substr(0, eq), s.substr(eq + 1));
+  }
+  return p;
 }
 
 bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
   const Campaign c = simulate(b, o, seed);
-  NetworkParams params;
+  const NetworkParams params = paramsOf(o);
   std::vector<Station> stations = stationsOf(c.indoor.data, "indoor.e57");
   if (o.bim) stations.push_back(modelStation(b.model, "model.ifc"));
   for (auto& s : stations) detectStationFeatures(s, params.link);
@@ -224,7 +239,7 @@ double coveredShare(const NetworkResult& r, const SimulatedDataset& d) {
 bool runLoop(const Options& o, std::uint64_t seed) {
   const GeneratedBuilding b = generateBuilding(ringBuilding());
   const Campaign c = simulate(b, o, seed);
-  NetworkParams params;
+  const NetworkParams params = paramsOf(o);
   std::vector<Station> stations = stationsOf(c.indoor.data, "indoor.e57");
   for (auto& s : stations) detectStationFeatures(s, params.link);
   const NetworkResult first = registerNetwork(stations, 0, params);
@@ -330,8 +345,9 @@ Options parse(int argc, char** argv) {
     else if (a == "--seeds" && i + 1 < argc) o.seeds = std::stoi(argv[++i]);
     else if (a == "--first-seed" && i + 1 < argc) o.first_seed = std::stoull(argv[++i]);
     else if (a == "--report-dir" && i + 1 < argc) o.report_dir = argv[++i];
+    else if (a == "--set" && i + 1 < argc) o.settings.push_back(argv[++i]);
     else throw std::runtime_error("usage: bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic "
-                                     "[--robust-scale S]] [--loop [--corners]] [--bim] [--report-dir DIR]");
+                                     "[--robust-scale S]] [--loop [--corners]] [--bim] [--report-dir DIR] [--set GROUP.KEY=VALUE]");
   }
   return o;
 }

@@ -226,6 +226,40 @@ TEST(CliNetwork, TwoControlPointsCannotGeoreferenceAndNothingIsWritten) {
   EXPECT_FALSE(report["complete"].get<bool>());
 }
 
+// Issue 15 "control seen only by unplaced parts": two rooms and no doorway station, so no link
+// joins the rooms (room onto room through the door is contradicted); each room's three stations
+// see control points. Each part is placed in the grid by its own control, the control drops the
+// link that half-turns a room's corner station onto its twin, and every station comes out within
+// the target; the report says which stations their own control placed.
+TEST(CliNetwork, EachPartTheLinksLeaveApartIsPlacedByItsOwnControlPoints) {
+  const auto dir = test::scratchDir("cli_network_control_parts");
+  std::ofstream(dir / "rooms.json") << R"({"name": "two-furnished-rooms", "column_widths": [4.0, 4.5],
+                                          "row_depths": [5.0], "furniture_per_room": 1})";
+  const auto sim = test::plumbCli(dir, "simulate --building rooms.json --tls-rooms --tls 1.0,1.2,1.75 "
+                                       "--tls 2.8,3.8,1.75 --tls 5.2,1.2,1.75 --tls 7.2,3.9,1.75 "
+                                       "--perturb-stations 180,20 --seed 4 --control-points 4,2 "
+                                       "--grid 651000,6860000,40 --crs EPSG:32632 -o sim");
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const auto r = test::plumbCli(dir, "network sim/indoor.e57 --control sim/control.csv --targets sim/targets.csv "
+                                     "--crs EPSG:32632 --report net.json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto report = test::readJsonFile(dir / "net.json");
+  ASSERT_GE(report["network"]["parts"].size(), 2u) << "no link joins the two rooms";
+  EXPECT_EQ(report["network"]["placed_by_own_control"].size(), 3u);
+  EXPECT_NE(r.out.find("placed by its own control points"), std::string::npos) << r.out;
+  const auto& g = report["georeference"];
+  EXPECT_TRUE(g["done"].get<bool>());
+  EXPECT_LE(g["check_max_m"].get<double>(), 0.005);
+  // The link the control contradicts is dropped and named so; it is wrong against the truth.
+  int by_control = 0;
+  for (const auto& l : report["links"]) by_control += l.value("dropped_by", "") == "control points";
+  EXPECT_GE(by_control, 1);
+  EXPECT_NE(r.out.find("DROPPED (the control points contradict it)"), std::string::npos) << r.out;
+  const auto errors = test::reportErrors(test::readJsonFile(dir / "sim/truth.json"), report);
+  ASSERT_EQ(errors.size(), 6u);
+  expectEveryStationWithinTarget(errors);
+}
+
 TEST(CliNetwork, ATargetOfAnUnknownStationIsAnErrorNamingTheLine) {
   const auto dir = simulateControlledCampaign(7);
   std::ofstream(dir / "bad.csv") << "# station, point, x, y, z\ntls-0,CP1,1,2,3\ntls-9,CP2,1,2,3\n";

@@ -156,5 +156,48 @@ TEST(Georeference, AnObservationOfAnUnknownStationNamesTheLine) {
   EXPECT_NE(e.find("'s7'"), std::string::npos) << e;
 }
 
+/// The network of SmallNetwork with its link 1-2 replaced by a wrong one (station 2 turned by a
+/// half turn about station 1), the adjustment placing station 2 by it.
+void plantHalfTurn(SmallNetwork& n, std::size_t control_points) {
+  for (std::size_t i = 0; i < n.survey.points.size(); ++i) n.survey.points[i].check = i >= control_points;
+  n.survey.grid = makeGridFrame(n.survey.points, 1.0);
+  const RigidTransform wrong = RigidTransform::fromYaw(M_PI, {0, 0, 0}) * n.links[1].transform;
+  n.links[1].transform = wrong;
+  n.adjustment.poses[2] = *n.adjustment.poses[1] * wrong;
+}
+
+TEST(Georeference, TheControlDropsALinkItContradictsAndPlacesTheStationByItsOwnTargets) {
+  // Station 2 sees three control points itself: its resection puts it where the truth is, the
+  // half-turned link is dropped, and the station is settled by its own control.
+  SmallNetwork n({{1, 2, 1}, {7, -2, 0.5}, {13, 3, 1.5}, {11, -3, 1}, {14, 0, 2}, {4, 0, 1}},
+                 {{0, 1}, {1, 2}, {2, 3, 4}}, 1.0);
+  plantHalfTurn(n, 5);
+  const Georeference g = georeferenceNetwork(n.survey, {"s0", "s1", "s2"}, n.links, PoseGraphParams{}, n.adjustment);
+  ASSERT_TRUE(g.done) << g.message;
+  EXPECT_EQ(g.links_dropped, 1u);
+  EXPECT_TRUE(n.adjustment.links[1].dropped);
+  EXPECT_FALSE(n.adjustment.links[0].dropped);
+  EXPECT_EQ(g.settled, (std::vector<std::size_t>{2}));
+  EXPECT_TRUE(g.unplaced.empty());
+  const RigidTransform to_registered(Eigen::Matrix3d::Identity(), Eigen::Vector3d(651000, 6860000, 40));
+  for (std::size_t s = 0; s < 3; ++s) {
+    ASSERT_TRUE(n.adjustment.poses[s]) << s;
+    EXPECT_LT(RigidTransform::translationError(*n.adjustment.poses[s], to_registered * n.truth[s]), 1e-4) << s;
+  }
+}
+
+TEST(Georeference, AStationTheControlCannotHoldAfterItsLinkIsDroppedIsUnplaced) {
+  // Station 2 sees only one control point: once the control contradicts its only link, nothing
+  // places it. Stations 0 and 1 see three points together and stay placed.
+  SmallNetwork n({{1, 2, 1}, {7, -2, 0.5}, {5, 3, 1.5}, {13, 3, 1}}, {{0, 1}, {1, 2}, {3}}, 1.0);
+  plantHalfTurn(n, 4);
+  const Georeference g = georeferenceNetwork(n.survey, {"s0", "s1", "s2"}, n.links, PoseGraphParams{}, n.adjustment);
+  ASSERT_TRUE(g.done) << g.message;
+  EXPECT_EQ(g.links_dropped, 1u);
+  EXPECT_EQ(g.unplaced, (std::vector<std::size_t>{2}));
+  EXPECT_FALSE(n.adjustment.poses[2]) << "its pose is reset: not placed";
+  EXPECT_TRUE(n.adjustment.poses[0] && n.adjustment.poses[1]);
+}
+
 }  // namespace
 }  // namespace plumb
