@@ -298,6 +298,23 @@ std::vector<std::size_t> settledStations(const ControlSurvey& survey, const std:
   return out;
 }
 
+/// Placed stations seeing a check point beyond the drop translation at their pose; each is
+/// unplaced, then the groups that no longer see 3 control points.
+void unplaceCheckFailures(const ControlSurvey& survey, const std::vector<Seen>& seen,
+                          const std::vector<AdjustmentLink>& links, const PoseGraphParams& params, ControlSolve& c,
+                          Georeference& g) {
+  for (const auto& s : seen) {
+    if (!survey.points[s.point].check || !c.placed[s.station]) continue;
+    const double d = misfit(survey, s, c.poses[s.station]);
+    if (d > params.drop_translation) g.check_failures.push_back({s.station, survey.points[s.point].name, d});
+  }
+  for (const auto& f : g.check_failures)
+    if (c.placed[f.station]) c.placed[f.station] = false, g.unplaced.push_back(f.station);
+  for (std::size_t k = 0; k < links.size(); ++k) c.active[k] = c.active[k] && c.placed[links[k].a] && c.placed[links[k].b];
+  const auto lost = unplaceUncontrolled(survey, seen, links, c);
+  g.unplaced.insert(g.unplaced.end(), lost.begin(), lost.end());
+}
+
 /// The solution written back: poses at the grid origin (stations the control no longer holds
 /// unplaced), sigmas, chain poses, link residuals.
 void writeBack(const PoseGraphSolution& s, const ControlSolve& c, const RigidTransform& fit, const GridFrame& grid,
@@ -363,6 +380,7 @@ void mergeGeoreference(Georeference& into, const Georeference& part) {
     std::sort(list->begin(), list->end());
   }
   into.links_dropped += part.links_dropped;
+  into.check_failures.insert(into.check_failures.end(), part.check_failures.begin(), part.check_failures.end());
   summarise(into);
 }
 
@@ -402,6 +420,8 @@ Georeference georeferenceNetwork(const ControlSurvey& survey, const std::vector<
   dropLinksToGrossErrors(links, c, solved, g);
   const auto s = solveWithControl(survey, seen, links, params, c, solved, g);
   if (!s) return notDone("the control points contradict the links of every group of stations that sees them");
+  c.poses = s->poses;
+  unplaceCheckFailures(survey, seen, links, params, c, g);
   std::sort(g.unplaced.begin(), g.unplaced.end());
   adjustment = std::move(solved);
   writeBack(*s, c, fit, survey.grid, links, params, adjustment);
@@ -411,6 +431,8 @@ Georeference georeferenceNetwork(const ControlSurvey& survey, const std::vector<
   summarise(g);
   g.message = "georeferenced on " + std::to_string(g.control_used) + " control point(s)";
   if (g.links_dropped) g.message += "; " + std::to_string(g.links_dropped) + " link(s) the control points contradict dropped";
+  if (!g.check_failures.empty())
+    g.message += "; " + std::to_string(g.check_failures.size()) + " check point observation(s) contradict their station";
   return g;
 }
 

@@ -24,6 +24,14 @@ struct PointResidual {
   Eigen::Vector3d grid = Eigen::Vector3d::Zero();  ///< the same in grid units (E, N times k)
 };
 
+/// A check point a placed station sees farther than the drop translation from its coordinates:
+/// the check contradicts the station's placement (or the target was misidentified).
+struct CheckFailure {
+  std::size_t station = 0;
+  std::string point;
+  double misfit = 0.0;  ///< m, ground frame
+};
+
 struct Georeference {
   bool done = false;
   std::string message;  ///< what was done, or why the network is not georeferenced
@@ -40,6 +48,9 @@ struct Georeference {
   /// that then lost every link to stations the control holds (left unplaced).
   std::size_t links_dropped = 0;
   std::vector<std::size_t> unplaced;
+  /// Check points contradicting a station's placement: the station is not placed (in
+  /// `unplaced`), nor are the stations that only it joined to the control.
+  std::vector<CheckFailure> check_failures;
 };
 
 /// Checks that every observation names a station in `names` and a point of `survey`; throws
@@ -55,7 +66,9 @@ void checkObservations(const ControlSurvey& survey, const std::vector<std::strin
 /// The control points are evidence the links cannot fake: a station that sees 3 of them starts
 /// at its own resection when the links put it elsewhere; a kept link whose residual then exceeds
 /// the drop thresholds is dropped (params.auto_drop, the worst first, solved again); stations
-/// whose group of links no longer sees 3 control points are unplaced (their pose reset).
+/// whose group of links no longer sees 3 control points are unplaced (their pose reset). Check
+/// points stay out of the solve, but a station that sees one farther than the drop translation
+/// from its coordinates is not placed: the check contradicts it (check_failures).
 Georeference georeferenceNetwork(const ControlSurvey& survey, const std::vector<std::string>& station_names,
                                  const std::vector<AdjustmentLink>& links, const PoseGraphParams& params,
                                  NetworkAdjustment& adjustment);

@@ -50,6 +50,18 @@ nlohmann::json linkJson(const NetworkResult& r, const std::vector<Station>& st, 
   return j;
 }
 
+/// Why the georeferencing left station i unplaced (Georeference::unplaced).
+std::string unplacedByControlWhy(const Georeference& g, std::size_t i) {
+  for (const auto& f : g.check_failures)
+    if (f.station == i) {
+      std::ostringstream o;
+      o << std::fixed << std::setprecision(3) << "check point " << f.point << " it sees lies " << f.misfit
+        << " m from its coordinates at this placement: the placement is wrong (or the target misidentified)";
+      return o.str();
+    }
+  return "the control points contradict the links that placed it, and it sees fewer than 3 of them";
+}
+
 nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& st, std::size_t i) {
   nlohmann::json links = nlohmann::json::array();
   for (std::size_t k = 0; k < r.links.size(); ++k)
@@ -65,7 +77,7 @@ nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& s
   if (r.georeference && std::binary_search(r.georeference->settled.begin(), r.georeference->settled.end(), i))
     j["settled_by_control"] = true;  // sees 3 control points itself, all within the drop translation
   if (r.georeference && std::binary_search(r.georeference->unplaced.begin(), r.georeference->unplaced.end(), i))
-    j["unplaced_why"] = "the control points contradict the links that placed it, and it sees fewer than 3 of them";
+    j["unplaced_why"] = unplacedByControlWhy(*r.georeference, i);
   if (ambiguous)
     j["ambiguous_why"] =
         std::binary_search(r.competing.ambiguous.begin(), r.competing.ambiguous.end(), i)
@@ -151,7 +163,14 @@ std::string referenceName(const NetworkResult& r, const std::vector<Station>& st
   return r.georeference && r.georeference->done ? "control points" : st[r.reference].name;
 }
 
-nlohmann::json georeferenceJson(const Georeference& g) {
+nlohmann::json checkFailuresJson(const Georeference& g, const std::vector<Station>& st) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& f : g.check_failures)
+    out.push_back({{"point", f.point}, {"station", st[f.station].name}, {"misfit_m", f.misfit}});
+  return out;
+}
+
+nlohmann::json georeferenceJson(const Georeference& g, const std::vector<Station>& st) {
   nlohmann::json points = nlohmann::json::array();
   for (const auto& p : g.points) {
     nlohmann::json j = {{"name", p.point}, {"role", p.check ? "check" : "control"}, {"observations", p.observations}};
@@ -164,7 +183,7 @@ nlohmann::json georeferenceJson(const Georeference& g) {
           {"coordinates", "ground frame moved to origin_grid: grid coordinates at that point, ground distances "
                           "about it (grid = origin + scale_factor x horizontal offset)"},
           {"control_used", g.control_used}, {"control_rms_m", g.control_rms}, {"check_max_m", g.check_max},
-          {"links_dropped", g.links_dropped}, {"points", points}};
+          {"links_dropped", g.links_dropped}, {"points", points}, {"check_failures", checkFailuresJson(g, st)}};
 }
 
 void georeferenceText(const nlohmann::json& g, std::ostringstream& o) {
@@ -183,6 +202,10 @@ void georeferenceText(const nlohmann::json& g, std::ostringstream& o) {
   if (g["done"].get<bool>())
     o << std::setprecision(1) << "  control RMS " << 1000 * g["control_rms_m"].get<double>() << " mm, check max "
       << 1000 * g["check_max_m"].get<double>() << " mm\n";
+  for (const auto& f : g["check_failures"])
+    o << std::setprecision(3) << "  CHECK FAILED: " << f["point"].get<std::string>() << " seen by "
+      << f["station"].get<std::string>() << " lies " << f["misfit_m"].get<double>()
+      << " m from its coordinates: the station is not placed\n";
 }
 
 }  // namespace
@@ -207,7 +230,7 @@ nlohmann::json networkReportToJson(const NetworkResult& r, const std::vector<Sta
   j["links"] = nlohmann::json::array();
   for (std::size_t k = 0; k < r.links.size(); ++k) j["links"].push_back(linkJson(r, st, k));
   j["network"] = networkJson(r, st);
-  if (r.georeference) j["georeference"] = georeferenceJson(*r.georeference);
+  if (r.georeference) j["georeference"] = georeferenceJson(*r.georeference, st);
   if (r.final_refinement.done)
     j["final_refinement"] = {{"pairs_tried", r.final_refinement.pairs_tried},
                              {"pairs_used", r.final_refinement.pairs_used},

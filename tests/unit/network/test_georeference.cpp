@@ -199,5 +199,24 @@ TEST(Georeference, AStationTheControlCannotHoldAfterItsLinkIsDroppedIsUnplaced) 
   EXPECT_TRUE(n.adjustment.poses[0] && n.adjustment.poses[1]);
 }
 
+TEST(Georeference, ACheckPointContradictingAStationLeavesItUnplaced) {
+  // Station 2 sees no control point, only check point P3: the control cannot judge its
+  // half-turned link, but the check can. The check stays out of the solve; the station it
+  // contradicts is not placed, and the failure is reported with its misfit.
+  SmallNetwork n({{1, 2, 1}, {7, -2, 0.5}, {5, 3, 1.5}, {13, 3, 1}}, {{0, 1}, {1, 2}, {3}}, 1.0);
+  plantHalfTurn(n, 3);
+  const Georeference g = georeferenceNetwork(n.survey, {"s0", "s1", "s2"}, n.links, PoseGraphParams{}, n.adjustment);
+  ASSERT_TRUE(g.done) << g.message;
+  EXPECT_EQ(g.links_dropped, 0u) << "check points never drop links";
+  ASSERT_EQ(g.check_failures.size(), 1u);
+  EXPECT_EQ(g.check_failures[0].station, 2u);
+  EXPECT_EQ(g.check_failures[0].point, "P3");
+  EXPECT_GT(g.check_failures[0].misfit, 1.0);
+  EXPECT_EQ(g.unplaced, (std::vector<std::size_t>{2}));
+  EXPECT_FALSE(n.adjustment.poses[2]);
+  EXPECT_TRUE(n.adjustment.poses[0] && n.adjustment.poses[1]);
+  EXPECT_EQ(g.points[3].observations, 0u) << "residuals are those of the placed stations";
+}
+
 }  // namespace
 }  // namespace plumb
