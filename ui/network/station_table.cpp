@@ -62,7 +62,12 @@ void StationTable::setSession(std::shared_ptr<const NetworkSession> session, con
 void StationTable::fillRow(int row, const nlohmann::json& station, const NetworkSession& session, bool locked) {
   setItem(row, Name, cell(QString::fromStdString(station["name"].get<std::string>())));
   QTableWidgetItem* state = cell(stationState(session, std::size_t(row)));
-  if (station.contains("ambiguous_why")) state->setToolTip(QString::fromStdString(station["ambiguous_why"]));
+  for (const char* why : {"ambiguous_why", "unplaced_why"})
+    if (station.contains(why)) state->setToolTip(QString::fromStdString(station[why].get<std::string>()));
+  if (station.contains("placed_by"))
+    state->setToolTip(tr("Placed by its own control points: no kept link joins it to the reference"));
+  else if (station.value("settled_by_control", false))
+    state->setToolTip(tr("Confirmed by the 3 or more control points it sees"));
   if (!session.result->placed(std::size_t(row))) state->setForeground(QColor(190, 30, 30));
   setItem(row, State, state);
   setItem(row, Sigma, cell(sigmaMm(station)));

@@ -28,6 +28,7 @@
 #include "ui/network/network_plan_view.hpp"
 #include "ui/network/network_runner.hpp"
 #include "ui/network/reference_combo.hpp"
+#include "ui/network/station_table.hpp"
 #include "ui/panels/log_panel.hpp"
 #include "ui/tasks/task_manager.hpp"
 
@@ -157,6 +158,14 @@ class GuiNetworkControlTest : public QObject {
     QCOMPARE(panel().plan().frameLabel(), QString("grid (control points)"));
     expectResidualsShown(g);
     expectWithinTargetOfTruth(session->report, true);
+    // A station that sees 3 control points itself is confirmed by them; the state says so.
+    int settled = 0;
+    for (std::size_t i = 0; i < session->report["stations"].size(); ++i) {
+      const bool confirmed = session->report["stations"][i].value("settled_by_control", false);
+      settled += confirmed;
+      QCOMPARE(panel().stations().item(int(i), StationTable::State)->toolTip().startsWith("Confirmed"), confirmed);
+    }
+    QVERIFY(settled > 0);
     auto* page = panel().findChild<QWidget*>("networkControlPage");
     QVERIFY(page);
     panel().findChild<QTabWidget*>()->setCurrentWidget(page);
