@@ -1,5 +1,8 @@
 // bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic [--robust-scale S]] [--bim]
-//               [--report-dir DIR] [--set GROUP.KEY=VALUE]...   (--set: plumb-cli network's --set)
+//               [--report-dir DIR] [--set GROUP.KEY=VALUE]... [--control N,M]   (--set: plumb-cli network's --set)
+// --control N,M: N control and M check targets beside the stations (as simulate --control-points)
+// in a UTM grid (k = 0.99988); the network is georeferenced on them and its errors measured in
+// the grid frame.
 // Simulates a campaign of the preset (a station in every ground-floor room and interior
 // doorway, shot as a walk: each next station the nearest one not yet scanned; --smoke: two
 // furnished rooms of 4 x 5 and 4.5 x 5 m plus a station in a corner of each room), perturbs every
@@ -35,6 +38,8 @@
 #include "registration/network/network_registration.hpp"
 #include "registration/network/network_report.hpp"
 #include "simulation/building_generator.hpp"
+#include "simulation/control_targets.hpp"
+#include "simulation/ray_caster.hpp"
 #include "simulation/doorway_stations.hpp"
 #include "simulation/presets.hpp"
 #include "simulation/station_order.hpp"
@@ -54,6 +59,7 @@ struct Options {
   bool synthetic = false;
   bool bim = false;  ///< also register every station onto the building's model (the reference)
   std::vector<std::string> settings;  ///< --set GROUP.KEY=VALUE: network or link pipeline parameters
+  int control = 0, check = 0;  ///< --control N,M: N control and M check targets (simulate --control-points)
   std::string report_dir;  ///< when set: each seed's network report, with every station's true error
   double robust_scale = PoseGraphParams{}.robust_scale;  ///< --synthetic: the adjustment's Cauchy scale
   bool loop = false;  ///< --loop: 40 stations around a ring of rooms, shuffled, a planted wrong link
@@ -62,6 +68,7 @@ struct Options {
 
 struct Campaign {
   SimulatedDataset indoor;
+  std::vector<Eigen::Vector3d> station_positions;  ///< model frame, in shot order
   double seconds_simulation = 0.0;
 };
 
@@ -86,6 +93,7 @@ Campaign simulate(const GeneratedBuilding& b, const Options& o, std::uint64_t se
   r.perturb_station_shift_m = 20.0;
   r.seed = seed;
   Campaign c;
+  c.station_positions = r.tls_stations;
   c.indoor = simulateSurvey(b.model, b.glass_triangles, b.truth.footprint, r).datasets.at(0);
   c.seconds_simulation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return c;
@@ -100,9 +108,9 @@ struct Worst {
 /// Largest error of the placed `poses` against the truth, in the reference station's file
 /// frame; `ambiguous` stations count as not placed.
 Worst worstError(const std::vector<std::optional<RigidTransform>>& poses, const SimulatedDataset& d, std::size_t ref,
-                 const std::vector<std::size_t>& ambiguous = {}) {
+                 const std::vector<std::size_t>& ambiguous = {}, const std::optional<RigidTransform>& grid = {}) {
   const bool model_frame = ref >= d.true_poses.size();  // the model is the reference
-  const RigidTransform to_registered = model_frame ? RigidTransform() : d.scan_truths[ref].inverse();
+  const RigidTransform to_registered = grid ? *grid : model_frame ? RigidTransform() : d.scan_truths[ref].inverse();
   Worst w;
   for (std::size_t i = 0; i < d.true_poses.size(); ++i) {
     if (!poses[i] || std::find(ambiguous.begin(), ambiguous.end(), i) != ambiguous.end()) {
@@ -147,6 +155,35 @@ NetworkParams paramsOf(const Options& o) {
   return p;
 }
 
+constexpr double kGridScale = 0.99988;  // UTM zone 32N at x ~ 651,000
+const Eigen::Vector3d kGridOrigin(651000, 6860000, 40);
+
+/// --control N,M: N control and M check targets beside the stations, as simulate
+/// --control-points writes them (grid = origin + k x model E, N), each seen by the stations with
+/// a clear line of sight.
+ControlSurvey controlSurvey(const GeneratedBuilding& b, const Campaign& c, const Options& o) {
+  const auto targets = placeControlTargets(c.station_positions, o.control, o.check);
+  const RayCaster caster(b.model.mesh);
+  ControlSurvey s;
+  for (const auto& t : targets)
+    s.points.push_back({t.name, kGridOrigin + Eigen::Vector3d(kGridScale * t.position.x(), kGridScale * t.position.y(),
+                                                              t.position.z()), t.check});
+  for (const auto& seen : sightTargets(caster, c.indoor.true_poses, targets))
+    s.observations.push_back({c.indoor.data.scans[seen.station].name, targets[seen.target].name, seen.in_station, 0});
+  s.grid = makeGridFrame(s.points, kGridScale);
+  return s;
+}
+
+/// The georeferenced frame's relation to the model frame (a translation: ground frame at the
+/// grid origin O, docs/NETWORK.md "Output frame").
+std::optional<RigidTransform> gridFrame(const NetworkResult& r) {
+  if (!r.georeference || !r.georeference->done) return std::nullopt;
+  const Eigen::Vector3d o = r.georeference->grid.origin;
+  return RigidTransform(Eigen::Matrix3d::Identity(),
+                        Eigen::Vector3d(o.x() + (kGridOrigin.x() - o.x()) / kGridScale,
+                                        o.y() + (kGridOrigin.y() - o.y()) / kGridScale, kGridOrigin.z()));
+}
+
 bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
   const Campaign c = simulate(b, o, seed);
   const NetworkParams params = paramsOf(o);
@@ -154,10 +191,11 @@ bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
   if (o.bim) stations.push_back(modelStation(b.model, "model.ifc"));
   for (auto& s : stations) detectStationFeatures(s, params.link);
   const std::size_t ref = o.bim ? stations.size() - 1 : 0;
-  const NetworkResult r = registerNetwork(stations, ref, params);
+  const std::optional<ControlSurvey> control = o.control > 0 ? std::optional(controlSurvey(b, c, o)) : std::nullopt;
+  const NetworkResult r = registerNetwork(stations, ref, params, nullptr, control ? &*control : nullptr);
   const auto ambiguous = r.ambiguous();
-  const Worst net = worstError(r.adjustment.poses, c.indoor, ref, ambiguous);
-  const Worst chain = worstError(r.adjustment.chain_poses, c.indoor, ref);
+  const Worst net = worstError(r.adjustment.poses, c.indoor, ref, ambiguous, gridFrame(r));
+  const Worst chain = worstError(r.adjustment.chain_poses, c.indoor, ref, {}, gridFrame(r));
   if (!o.report_dir.empty()) writeReport(o.report_dir, seed, r, stations, c.indoor, ref);
   double loop_max = 0.0, loop_sum = 0.0;
   for (const auto& l : r.adjustment.loops) loop_max = std::max(loop_max, l.translation), loop_sum += l.translation;
@@ -346,8 +384,9 @@ Options parse(int argc, char** argv) {
     else if (a == "--first-seed" && i + 1 < argc) o.first_seed = std::stoull(argv[++i]);
     else if (a == "--report-dir" && i + 1 < argc) o.report_dir = argv[++i];
     else if (a == "--set" && i + 1 < argc) o.settings.push_back(argv[++i]);
+    else if (a == "--control" && i + 1 < argc && std::sscanf(argv[++i], "%d,%d", &o.control, &o.check) == 2) continue;
     else throw std::runtime_error("usage: bench_network [--preset NAME] [--seeds N] [--first-seed S] [--smoke] [--synthetic "
-                                     "[--robust-scale S]] [--loop [--corners]] [--bim] [--report-dir DIR] [--set GROUP.KEY=VALUE]");
+                                     "[--robust-scale S]] [--loop [--corners]] [--bim] [--report-dir DIR] [--set GROUP.KEY=VALUE] [--control N,M]");
   }
   return o;
 }
