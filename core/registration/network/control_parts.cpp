@@ -1,7 +1,5 @@
 #include "registration/network/control_parts.hpp"
 
-#include <algorithm>
-#include <iterator>
 #include <set>
 
 namespace plumb {
@@ -33,12 +31,6 @@ std::vector<std::size_t> unplacedParts(const std::vector<Station>& stations, con
     if (!placed[l.a] && !placed[l.b] && !stations[l.a].is_model && !stations[l.b].is_model)
       edges.push_back({l.a, l.b, l.transform});
   return connectedComponents(stations.size(), edges);
-}
-
-void sortedUnion(std::vector<std::size_t>& into, const std::vector<std::size_t>& more) {
-  std::vector<std::size_t> out;
-  std::set_union(into.begin(), into.end(), more.begin(), more.end(), std::back_inserter(out));
-  into = std::move(out);
 }
 
 /// The part's adjustment `a` (georeferenced) and its checks merged into the network's.

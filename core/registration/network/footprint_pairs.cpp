@@ -15,13 +15,11 @@ std::uint64_t cellKey(double x, double y, double cell) {
   return (static_cast<std::uint64_t>(ix) << 32) ^ (static_cast<std::uint64_t>(iy) & 0xffffffffULL);
 }
 
-/// The accepted links as the adjustment takes them (as network_registration.cpp's adjust).
+/// The accepted links as the adjustment takes them.
 std::vector<AdjustmentLink> adjustmentLinks(const std::vector<Station>& stations, const std::vector<Link>& links) {
   std::vector<AdjustmentLink> out;
   for (const auto& l : links)
-    if (l.accepted)
-      out.push_back({l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg, l.reason == "sequence",
-                     stations[l.a].is_model || stations[l.b].is_model});
+    if (l.accepted) out.push_back(adjustmentLink(l, stations));
   return out;
 }
 

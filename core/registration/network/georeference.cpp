@@ -51,6 +51,11 @@ std::string spanProblem(const ControlSurvey& survey, const std::vector<Seen>& se
   return {};
 }
 
+/// The observed point's given coordinates in the ground frame.
+Eigen::Vector3d groundOf(const ControlSurvey& survey, const Seen& s) {
+  return survey.grid.toGround(survey.points[s.point].grid);
+}
+
 /// Rigid fit (Umeyama, no scale) of the control targets among `seen`, each observed at
 /// `where(seen)`, onto the ground frame.
 template <class Where>
@@ -59,7 +64,7 @@ RigidTransform fitControl(const ControlSurvey& survey, const std::vector<Seen>& 
   for (const auto& s : seen)
     if (!survey.points[s.point].check) {
       from.push_back(where(s));
-      to.push_back(survey.grid.toGround(survey.points[s.point].grid));
+      to.push_back(groundOf(survey, s));
     }
   Eigen::Matrix3Xd src(3, from.size()), dst(3, to.size());
   for (std::size_t i = 0; i < from.size(); ++i) {
@@ -76,7 +81,7 @@ RigidTransform fitControl(const ControlSurvey& survey, const std::vector<Seen>& 
 double grossError(const PoseGraphParams& p) { return 10.0 * p.drop_translation; }
 
 double misfit(const ControlSurvey& survey, const Seen& s, const RigidTransform& pose) {
-  return (pose.apply(s.observed) - survey.grid.toGround(survey.points[s.point].grid)).norm();
+  return (pose.apply(s.observed) - groundOf(survey, s)).norm();
 }
 
 /// The placed stations' control targets fitted onto the ground frame: the network's first move.
@@ -93,7 +98,7 @@ RigidTransform firstFit(const ControlSurvey& survey, const std::vector<Seen>& se
     std::vector<Seen> in;
     cost = 0.0;
     for (const auto& s : control) {
-      const double d = (fit.apply(where(s)) - survey.grid.toGround(survey.points[s.point].grid)).norm();
+      const double d = misfit(survey, s, fit * *a.poses[s.station]);
       if (d <= grossError(params)) in.push_back(s), cost += d * d;
     }
     return in;
@@ -185,11 +190,17 @@ void dropLinksToGrossErrors(const std::vector<AdjustmentLink>& links, ControlSol
   }
 }
 
+/// Links touching a station no longer placed are no longer active.
+void deactivateLinksOfUnplaced(const std::vector<AdjustmentLink>& links, ControlSolve& c) {
+  for (std::size_t k = 0; k < links.size(); ++k) c.active[k] = c.active[k] && c.placed[links[k].a] && c.placed[links[k].b];
+}
+
 /// Groups of placed stations (joined by active links) that do not see 3 control points, not in
 /// a line, are unplaced and their links deactivated. Returns the stations unplaced.
 std::vector<std::size_t> unplaceUncontrolled(const ControlSurvey& survey, const std::vector<Seen>& seen,
                                              const std::vector<AdjustmentLink>& links, ControlSolve& c) {
   const std::size_t n = c.placed.size();
+  deactivateLinksOfUnplaced(links, c);
   std::vector<GraphEdge> edges;
   for (std::size_t k = 0; k < links.size(); ++k)
     if (c.active[k]) edges.push_back({links[k].a, links[k].b, links[k].transform});
@@ -203,7 +214,7 @@ std::vector<std::size_t> unplaceUncontrolled(const ControlSurvey& survey, const 
     for (std::size_t j = 0; j < n; ++j)
       if (group[j]) c.placed[j] = false, out.push_back(j);
   }
-  for (std::size_t k = 0; k < links.size(); ++k) c.active[k] = c.active[k] && c.placed[links[k].a] && c.placed[links[k].b];
+  deactivateLinksOfUnplaced(links, c);
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -226,7 +237,7 @@ PoseGraphProblem controlProblem(const ControlSurvey& survey, const std::vector<S
     }
   for (const auto& s : seen)
     if (!survey.points[s.point].check && c.placed[s.station])
-      pg.points.push_back({s.station, s.observed, survey.grid.toGround(survey.points[s.point].grid), survey.sigma});
+      pg.points.push_back({s.station, s.observed, groundOf(survey, s), survey.sigma});
   return pg;
 }
 
@@ -271,7 +282,7 @@ std::vector<PointResidual> pointResiduals(const ControlSurvey& survey, const std
   for (const auto& p : survey.points) out.push_back({p.name, p.check});
   for (const auto& s : seen) {
     auto& r = out[s.point];
-    r.ground += ground_poses[s.station].apply(s.observed) - survey.grid.toGround(survey.points[s.point].grid);
+    r.ground += ground_poses[s.station].apply(s.observed) - groundOf(survey, s);
     ++r.observations;
   }
   const double k = survey.grid.scale_factor;
@@ -310,7 +321,6 @@ void unplaceCheckFailures(const ControlSurvey& survey, const std::vector<Seen>& 
   }
   for (const auto& f : g.check_failures)
     if (c.placed[f.station]) c.placed[f.station] = false, g.unplaced.push_back(f.station);
-  for (std::size_t k = 0; k < links.size(); ++k) c.active[k] = c.active[k] && c.placed[links[k].a] && c.placed[links[k].b];
   const auto lost = unplaceUncontrolled(survey, seen, links, c);
   g.unplaced.insert(g.unplaced.end(), lost.begin(), lost.end());
 }
@@ -374,11 +384,8 @@ void mergeGeoreference(Georeference& into, const Georeference& part) {
     r.observations = n;
     r.grid = Eigen::Vector3d(r.ground.x() * k, r.ground.y() * k, r.ground.z());
   }
-  for (auto* list : {&into.settled, &into.unplaced}) {
-    const auto& more = list == &into.settled ? part.settled : part.unplaced;
-    list->insert(list->end(), more.begin(), more.end());
-    std::sort(list->begin(), list->end());
-  }
+  sortedUnion(into.settled, part.settled);
+  sortedUnion(into.unplaced, part.unplaced);
   into.links_dropped += part.links_dropped;
   into.check_failures.insert(into.check_failures.end(), part.check_failures.begin(), part.check_failures.end());
   summarise(into);
@@ -420,7 +427,6 @@ Georeference georeferenceNetwork(const ControlSurvey& survey, const std::vector<
   dropLinksToGrossErrors(links, c, solved, g);
   const auto s = solveWithControl(survey, seen, links, params, c, solved, g);
   if (!s) return notDone("the control points contradict the links of every group of stations that sees them");
-  c.poses = s->poses;
   unplaceCheckFailures(survey, seen, links, params, c, g);
   std::sort(g.unplaced.begin(), g.unplaced.end());
   adjustment = std::move(solved);

@@ -3,6 +3,7 @@
 #include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
+#include <iterator>
 #include <functional>
 #include <map>
 
@@ -169,6 +170,12 @@ std::vector<TriangleSupport> triangleSupport(std::size_t nodes, const std::vecto
       (closes ? support[k].closing : support[k].failing) += 1;
     }
   return support;
+}
+
+void sortedUnion(std::vector<std::size_t>& into, const std::vector<std::size_t>& more) {
+  std::vector<std::size_t> out;
+  std::set_union(into.begin(), into.end(), more.begin(), more.end(), std::back_inserter(out));
+  into = std::move(out);
 }
 
 }  // namespace plumb

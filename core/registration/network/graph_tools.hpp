@@ -54,4 +54,7 @@ struct TriangleSupport {
 std::vector<TriangleSupport> triangleSupport(std::size_t nodes, const std::vector<GraphEdge>& edges,
                                              double tolerance_m, double tolerance_deg);
 
+/// `into` (sorted station indices) becomes its union with `more` (sorted).
+void sortedUnion(std::vector<std::size_t>& into, const std::vector<std::size_t>& more);
+
 }  // namespace plumb

@@ -10,6 +10,11 @@
 
 namespace plumb {
 
+AdjustmentLink adjustmentLink(const Link& l, const std::vector<Station>& stations) {
+  return {l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg, l.reason == "sequence",
+          stations[l.a].is_model || stations[l.b].is_model};
+}
+
 void weighLink(Link& link, const LinkWeightParams& p) {
   const double held = std::clamp(link.weakest_resistance / p.full_resistance, 1e-3, 1.0);
   link.sigma_translation = std::max(p.min_sigma, p.rms_factor * link.point_rms) / std::sqrt(held);

@@ -10,6 +10,7 @@
 #include "quality/verdict_level.hpp"
 #include "registration/network/network_params.hpp"
 #include "registration/network/pair_selection.hpp"
+#include "registration/network/robust_adjustment.hpp"
 #include "registration/network/station.hpp"
 
 namespace plumb {
@@ -57,6 +58,10 @@ Link registerLink(const Station& a, const Station& b, const CandidatePair& pair,
 /// model (the transform is inverted). Throws InputError naming what the report lacks.
 Link linkFromReport(const nlohmann::json& report, const CandidatePair& pair, bool onto_model,
                     const NetworkParams& params);
+
+/// The link as the adjustment takes it: its transform and sigmas, whether it is a sequence link
+/// and whether it joins a station to the model (an anchor).
+AdjustmentLink adjustmentLink(const Link& link, const std::vector<Station>& stations);
 
 /// sigma_t = max(min_sigma, rms_factor * point_rms) / sqrt(min(1, weakest / full_resistance));
 /// sigma_r = sigma_t / length_scale (radians; length_scale at least 1 m).

@@ -23,17 +23,15 @@ std::vector<GraphEdge> acceptedEdges(const std::vector<Link>& links) {
   return edges;
 }
 
-/// Registers `pairs`, appending to `out` and `tried`.
+/// Registers `pairs`, appending to out.links.
 void registerPairs(const std::vector<Station>& stations, const std::vector<CandidatePair>& pairs,
-                   const NetworkParams& params, NetworkResult& out,
-                   std::set<std::pair<std::size_t, std::size_t>>& tried, Progress* progress) {
+                   const NetworkParams& params, NetworkResult& out, Progress* progress) {
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     if (progress) {
       progress->check();
       progress->report(double(k) / double(pairs.size()),
                        "link " + stations[pairs[k].a].name + " - " + stations[pairs[k].b].name);
     }
-    tried.insert({pairs[k].a, pairs[k].b});
     out.links.push_back(registerLink(stations[pairs[k].a], stations[pairs[k].b], pairs[k], params));
   }
 }
@@ -70,11 +68,10 @@ std::vector<CandidatePair> firstPairs(const std::vector<Station>& stations,
 /// Pair rounds: the initial pairs, then the next rounds (nextRound) until none is left.
 void registerLinks(const std::vector<Station>& stations, const NetworkParams& params, NetworkResult& out,
                    Progress* progress) {
-  std::set<std::pair<std::size_t, std::size_t>> tried;
   std::vector<CandidatePair> pairs = firstPairs(stations, nodeSimilarity(stations), params.pairs);
   while (!pairs.empty()) {
     ++out.rounds;
-    registerPairs(stations, pairs, params, out, tried, progress);
+    registerPairs(stations, pairs, params, out, progress);
     pairs = nextRound(stations, out.links, params);
   }
 }
@@ -123,8 +120,7 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, c
     if (!l.accepted) continue;
     if (l.decision == "accepted") forced.push_back(links.size());
     out.adjusted.push_back(k);
-    links.push_back({l.a, l.b, l.transform, l.sigma_translation, l.sigma_rotation_deg, l.reason == "sequence",
-                     stations[l.a].is_model || stations[l.b].is_model});
+    links.push_back(adjustmentLink(l, stations));
   }
   const RigidTransform& reference_pose = stations[out.reference].file_pose;
   out.adjustment = adjustNetwork(stations.size(), links, out.reference, reference_pose, params.graph, forced, locked);
@@ -195,10 +191,9 @@ bool NetworkResult::isAmbiguous(std::size_t i) const {
 }
 
 std::vector<std::size_t> NetworkResult::ambiguous() const {
-  std::vector<std::size_t> two, out;
-  std::set_union(competing.ambiguous.begin(), competing.ambiguous.end(), copies_unchecked.begin(),
-                 copies_unchecked.end(), std::back_inserter(two));
-  std::set_union(two.begin(), two.end(), one_loop.begin(), one_loop.end(), std::back_inserter(out));
+  std::vector<std::size_t> out = competing.ambiguous;
+  sortedUnion(out, copies_unchecked);
+  sortedUnion(out, one_loop);
   return out;
 }
 
