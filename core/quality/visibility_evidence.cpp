@@ -99,6 +99,32 @@ void tallySightings(const std::vector<Sighting>& s, VisibilityEvidence& e) {
     e.expected_overlap = static_cast<double>(e.visible) / static_cast<double>(e.tested);
 }
 
+VisibilityEvidence freeSpaceEvidence(const StationRangeImages& images, const PointCloud& tested,
+                                     const std::optional<Eigen::Vector3d>& tested_viewpoint,
+                                     const RigidTransform& to_observer, const VisibilityParams& p,
+                                     TestedSightings* detail) {
+  const auto t0 = std::chrono::steady_clock::now();
+  VisibilityEvidence e;
+  if (!images.available()) {
+    e.missing_reason = "no sensor origins (no station poses, trajectory or viewpoint)";
+    return e;
+  }
+  e.available = true;
+  e.stations = images.stations();
+  const auto idx = testedPoints(tested, tested_viewpoint, p);
+  std::vector<Sighting> sightings(idx.size(), Sighting::NoEvidence);
+  // Each point's sighting is independent and written to its own slot: thread-count invariant.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, idx.size(), 512),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t k = r.begin(); k < r.end(); ++k)
+                        sightings[k] = images.classify(to_observer.apply(tested.world(idx[k])));
+                    });
+  tallySightings(sightings, e);
+  if (detail) *detail = TestedSightings{idx, std::move(sightings), false};
+  e.seconds = secondsSince(t0);
+  return e;
+}
+
 VisibilityEvidence freeSpaceEvidence(const PointCloud& observer,
                                      const std::optional<Eigen::Vector3d>& viewpoint,
                                      const PointCloud& tested,
@@ -116,18 +142,7 @@ VisibilityEvidence freeSpaceEvidence(const PointCloud& observer,
     return e;
   }
   const StationRangeImages images(observer, viewpoint, p);
-  e.available = true;
-  e.stations = images.stations();
-  const auto idx = testedPoints(tested, tested_viewpoint, p);
-  std::vector<Sighting> sightings(idx.size(), Sighting::NoEvidence);
-  // Each point's sighting is independent and written to its own slot: thread-count invariant.
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, idx.size(), 512),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t k = r.begin(); k < r.end(); ++k)
-                        sightings[k] = images.classify(to_observer.apply(tested.world(idx[k])));
-                    });
-  tallySightings(sightings, e);
-  if (detail) *detail = TestedSightings{idx, std::move(sightings), false};
+  e = freeSpaceEvidence(images, tested, tested_viewpoint, to_observer, p, detail);
   e.seconds = secondsSince(t0);
   return e;
 }

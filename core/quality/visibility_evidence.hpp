@@ -24,6 +24,7 @@
 namespace plumb {
 
 struct TestedSightings;
+class StationRangeImages;
 
 struct VisibilityParams {
   /// Compute the evidence after refinement (and let it fail or flag the result).
@@ -147,6 +148,14 @@ struct VisibilityEvidence {
 VisibilityEvidence freeSpaceEvidence(const PointCloud& observer,
                                      const std::optional<Eigen::Vector3d>& observer_viewpoint,
                                      const PointCloud& tested,
+                                     const std::optional<Eigen::Vector3d>& tested_viewpoint,
+                                     const RigidTransform& tested_to_observer,
+                                     const VisibilityParams& params,
+                                     TestedSightings* sightings = nullptr);
+
+/// The same test against the observer's range images built once (one observer judged against
+/// many placements: the network's free-space judge). Unavailable when the images are.
+VisibilityEvidence freeSpaceEvidence(const StationRangeImages& observer_images, const PointCloud& tested,
                                      const std::optional<Eigen::Vector3d>& tested_viewpoint,
                                      const RigidTransform& tested_to_observer,
                                      const VisibilityParams& params,

@@ -45,6 +45,7 @@ CompetingPlacement alternativeFor(std::size_t link, std::size_t stations, const 
   c.dropped_sequence = droppedLinks(links, alt, &AdjustmentLink::sequence);
   c.dropped_anchors = droppedLinks(links, alt, &AdjustmentLink::anchor);
   compareStations(adopted, alt, params, c);
+  c.poses = alt.poses;
   // The adopted solution wins outright when it gives up fewer links to the BIM, or as many and
   // fewer sequence links.
   const auto [anchors, sequence] = adopted_gave_up;

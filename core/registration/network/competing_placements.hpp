@@ -35,6 +35,7 @@ struct CompetingPlacement {
   std::vector<std::size_t> stations;  ///< placed differently from the adopted solution
   double max_translation = 0.0;       ///< m, largest station position difference
   double max_rotation_deg = 0.0;      ///< deg, largest station rotation difference
+  std::vector<std::optional<RigidTransform>> poses;  ///< every station as the alternative places it
 };
 
 struct CompetingPlacements {

@@ -97,6 +97,9 @@ Link linkFromReport(const nlohmann::json& j, const CandidatePair& pair, bool ont
         if (c.value("refined", false) && (c.value("role", "") == "competing" || c.value("role", "") == "worse"))
           link.alternatives.push_back({matrixFrom(c.at("transform")), c["role"].get<std::string>(),
                                        c.value("overlap_ratio", 0.0), c.value("rms_m", 0.0)});
+    if (onto_model && j.contains("candidates"))
+      for (const auto& c : j["candidates"])
+        if (c.value("refined", false)) link.model_candidates.push_back(matrixFrom(c.at("transform")));
   } catch (const nlohmann::json::exception& e) {
     throw InputError(std::string("not a plumb-cli register report: ") + e.what());
   }
@@ -130,6 +133,9 @@ Link registerLink(const Station& a, const Station& b, const CandidatePair& pair,
   link.weakest_resistance = *std::min_element(r.report.direction_resistance.begin(), r.report.direction_resistance.end());
   link.length_scale = r.refinement ? r.refinement->length_scale : 0.0;
   if (!onto_model) link.alternatives = alternativesOf(r);
+  if (onto_model)
+    for (const auto& c : r.report.candidates)
+      if (c.refined) link.model_candidates.push_back(c.transform);
   acceptAndWeigh(link, params);
   link.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return link;

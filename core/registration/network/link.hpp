@@ -43,10 +43,18 @@ struct Link {
   double sigma_rotation_deg = 0.0;  ///< deg
   double seconds = 0.0;
   std::vector<LinkAlternative> alternatives;  ///< empty for links to the BIM (the model report lists those)
+  /// Links to the BIM: every refined placement the pipeline compared, the chosen one first
+  /// (station frame -> model frame); an ambiguous link's copies are the free-space judge's
+  /// hypotheses (free_space_judge.hpp).
+  std::vector<RigidTransform> model_candidates;
   /// The surveyor's decision (NetworkDecisions): "" none, "accepted" (taken as true, never
-  /// dropped) or "rejected" (left out of the adjustment).
+  /// dropped) or "rejected" (left out of the adjustment); or kFreeSpaceDecision (taken as true
+  /// because the free space of the placed stations chose it).
   std::string decision;
 };
+
+/// Link::decision of a link the free-space judge took as true (free_space_judge.hpp).
+inline constexpr const char* kFreeSpaceDecision = "free space";
 
 /// Registers station b onto station a with params.link and weighs the result (when b is the
 /// model, a onto the model, the transform inverted).

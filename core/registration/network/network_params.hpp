@@ -11,6 +11,7 @@
 
 #include "common/params.hpp"
 #include "registration/auto/registration_pipeline.hpp"
+#include "registration/network/free_space_judge.hpp"
 
 namespace plumb {
 
@@ -102,6 +103,7 @@ struct NetworkParams {
   LinkWeightParams weights;
   PoseGraphParams graph;
   FinalRefinementParams final_refinement;
+  FreeSpaceJudgeParams free_space;  ///< free_space_judge.hpp
   PipelineParams link;  ///< the pipeline of each link
 };
 
@@ -112,6 +114,7 @@ void forEachNetworkParamGroup(P& p, F&& f) {
   f("link-weights", "Link weights", LinkWeightParams::schema(), p.weights);
   f("pose-graph", "Global adjustment", PoseGraphParams::schema(), p.graph);
   f("final-refinement", "Final refinement on points", FinalRefinementParams::schema(), p.final_refinement);
+  f("free-space-judge", "Free-space judge of ambiguous stations", FreeSpaceJudgeParams::schema(), p.free_space);
 }
 
 /// {"pair-selection": {...}, "link-weights": {...}, "pose-graph": {...}, "link": {pipeline}}.

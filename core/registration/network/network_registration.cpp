@@ -99,16 +99,71 @@ std::vector<std::size_t> copiesUnchecked(const std::vector<Station>& stations, c
 
 namespace {
 
-/// Stations the control points confirm (Georeference::settled) are not ambiguous: their own
-/// resection decides between the placements the links offered.
-void settleByControl(NetworkResult& out) {
-  if (!out.georeference || !out.georeference->done) return;
-  const auto& settled = out.georeference->settled;
+/// `settled` (sorted) taken off the three ambiguous lists.
+void settle(NetworkResult& out, const std::vector<std::size_t>& settled) {
   for (auto* list : {&out.competing.ambiguous, &out.copies_unchecked, &out.one_loop}) {
     std::vector<std::size_t> kept;
     std::set_difference(list->begin(), list->end(), settled.begin(), settled.end(), std::back_inserter(kept));
     *list = std::move(kept);
   }
+}
+
+/// Stations the control points confirm (Georeference::settled) are not ambiguous: their own
+/// resection decides between the placements the links offered.
+void settleByControl(NetworkResult& out) {
+  if (out.georeference && out.georeference->done) settle(out, out.georeference->settled);
+}
+
+/// The placements the ambiguous stations could have instead of the adopted ones: each dropped
+/// link taken as true (competing_placements.hpp), and each copy the BIM offered a station whose
+/// registration onto it was ambiguous.
+std::vector<PlacementHypothesis> ambiguityHypotheses(const std::vector<Station>& stations,
+                                                     const std::vector<AdjustmentLink>& links,
+                                                     const PoseGraphParams& graph, const NetworkResult& out) {
+  std::vector<PlacementHypothesis> h;
+  for (const auto& c : out.competing.alternatives)
+    if (!c.stations.empty())
+      h.push_back({"the link " + stations[links[c.link].a].name + " - " + stations[links[c.link].b].name +
+                       " taken as true",
+                   c.poses, c.stations, out.adjusted[c.link], std::nullopt});
+  const auto& poses = out.adjustment.poses;
+  if (!stations.back().is_model || !poses.back()) return h;
+  const std::size_t model = stations.size() - 1;
+  for (const Link& l : out.links) {
+    if (l.b != model || l.accepted || !poses[l.a]) continue;
+    for (std::size_t k = 0; k < l.model_candidates.size(); ++k) {
+      const RigidTransform pose = *poses[model] * l.model_candidates[k];
+      if (RigidTransform::translationError(pose, *poses[l.a]) <= graph.drop_translation &&
+          RigidTransform::rotationErrorDeg(pose, *poses[l.a]) <= graph.drop_rotation)
+        continue;
+      PlacementHypothesis copy{"the BIM's placement " + std::to_string(k + 1) + " of " + stations[l.a].name, poses,
+                               {l.a}, std::nullopt, k};
+      copy.poses[l.a] = pose;
+      h.push_back(std::move(copy));
+    }
+  }
+  return h;
+}
+
+/// Stations whose placement evidence from outside the links confirms: the reference station, a
+/// kept link to the BIM, or three control points seen (Georeference::settled); sorted.
+std::vector<std::size_t> confirmedStations(const std::vector<AdjustmentLink>& links, const NetworkResult& out) {
+  std::vector<std::size_t> confirmed{out.reference};
+  for (std::size_t k = 0; k < links.size(); ++k)
+    if (links[k].anchor && !out.adjustment.links[k].dropped) confirmed.push_back(std::min(links[k].a, links[k].b));
+  std::sort(confirmed.begin(), confirmed.end());
+  if (out.georeference && out.georeference->done) sortedUnion(confirmed, out.georeference->settled);
+  confirmed.erase(std::unique(confirmed.begin(), confirmed.end()), confirmed.end());
+  return confirmed;
+}
+
+/// Ambiguous stations the free space of the confirmed ones settles (free_space_judge.hpp).
+void settleByFreeSpace(const std::vector<Station>& stations, const std::vector<AdjustmentLink>& links,
+                       const NetworkParams& params, NetworkResult& out) {
+  out.free_space = judgeByFreeSpace(stations, out.adjustment.poses, out.ambiguous(), confirmedStations(links, out),
+                                    ambiguityHypotheses(stations, links, params.graph, out), params.free_space,
+                                    params.link.visibility);
+  settle(out, out.free_space.settled);
 }
 
 void adjust(const std::vector<Station>& stations, const NetworkParams& params, const ControlSurvey* control,
@@ -118,7 +173,7 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, c
   for (std::size_t k = 0; k < out.links.size(); ++k) {
     const Link& l = out.links[k];
     if (!l.accepted) continue;
-    if (l.decision == "accepted") forced.push_back(links.size());
+    if (l.decision == "accepted" || l.decision == kFreeSpaceDecision) forced.push_back(links.size());
     out.adjusted.push_back(k);
     links.push_back(adjustmentLink(l, stations));
   }
@@ -135,6 +190,7 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, c
     placePartsByOwnControl(stations, links, params, *control, out);
     settleByControl(out);
   }
+  settleByFreeSpace(stations, links, params, out);
   for (std::size_t i = 0; i < stations.size(); ++i)
     if (!out.adjustment.poses[i]) out.unplaced.push_back(i);
   std::vector<GraphEdge> kept;
@@ -143,6 +199,25 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, c
   const auto component = connectedComponents(stations.size(), kept);
   out.parts.assign(*std::max_element(component.begin(), component.end()) + 1, {});
   for (std::size_t i = 0; i < stations.size(); ++i) out.parts[component[i]].push_back(i);
+}
+
+/// `links` with what the free-space judge chose taken as true (decision kFreeSpaceDecision,
+/// forced like the surveyor's accepted links): a dropped link, or a station's link to the BIM
+/// at the copy chosen.
+void takeFreeSpaceChoices(const FreeSpaceJudgement& judged, std::size_t model, std::vector<Link>& links) {
+  for (const auto& [station, h] : judged.chosen) {
+    if (h.link) {
+      links[*h.link].decision = kFreeSpaceDecision;
+      links[*h.link].accepted = true;
+      continue;
+    }
+    for (Link& l : links) {
+      if (l.a != station || l.b != model || !h.bim_candidate) continue;
+      l.transform = l.model_candidates.at(*h.bim_candidate).inverse();
+      l.registered = l.accepted = true;
+      l.decision = kFreeSpaceDecision;
+    }
+  }
 }
 
 /// A result with what the registration of `r` measured (reference, pairs, rounds, times) and
@@ -178,6 +253,13 @@ void adjustAndRefine(const std::vector<Station>& stations, const NetworkParams& 
                      NetworkResult& out, const LockedStations& locked) {
   const auto t0 = std::chrono::steady_clock::now();
   adjust(stations, params, control, out, locked);
+  for (int round = 0; round < params.free_space.max_rounds && !out.free_space.chosen.empty(); ++round) {
+    NetworkResult again = registrationFacts(out);
+    again.links = out.links;
+    takeFreeSpaceChoices(out.free_space, stations.size() - 1, again.links);
+    adjust(stations, params, control, again, locked);
+    out = std::move(again);
+  }
   refineOnPoints(stations, params, control, out, locked);
   out.seconds_adjustment = secondsSince(t0);
 }

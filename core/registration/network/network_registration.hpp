@@ -70,6 +70,9 @@ struct NetworkResult {
   /// The final refinement on points (final-refinement.enabled): its refined pairs are links
   /// (reason "final refinement") of the last adjustment.
   FinalRefinementSummary final_refinement;
+  /// The free space of the placed stations judging the ambiguous ones (free_space_judge.hpp):
+  /// its settled stations are no longer in the three ambiguous lists.
+  FreeSpaceJudgement free_space;
   /// In competing.ambiguous or copies_unchecked: adjusted, but not placed.
   bool isAmbiguous(std::size_t i) const;
   /// The ambiguous stations, sorted (the union of the three lists).

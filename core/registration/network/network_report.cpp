@@ -62,6 +62,25 @@ std::string unplacedByControlWhy(const Georeference& g, std::size_t i) {
   return "the control points contradict the links that placed it, and it sees fewer than 3 of them";
 }
 
+nlohmann::json tallyJson(const FreeSpaceTally& t) {
+  return {{"visible", t.visible}, {"contradicting", t.contradicting}, {"ratio", t.ratio()}};
+}
+
+/// What the free-space judge found for station i (free_space_judge.hpp), or null.
+nlohmann::json freeSpaceJson(const FreeSpaceJudgement& f, std::size_t i) {
+  for (const auto& s : f.stations) {
+    if (s.station != i) continue;
+    nlohmann::json placements = nlohmann::json::array();
+    for (const auto& p : s.placements)
+      placements.push_back({{"source", p.source}, {"tally", tallyJson(p.tally)}, {"judged", p.judged},
+                            {"clean", p.clean}});
+    nlohmann::json j = {{"settled", s.settled}, {"why", s.why}, {"round", s.round}, {"placements", placements}};
+    if (s.decided) j["decided"] = s.placements[*s.decided].source;
+    return j;
+  }
+  return nullptr;
+}
+
 nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& st, std::size_t i) {
   nlohmann::json links = nlohmann::json::array();
   for (std::size_t k = 0; k < r.links.size(); ++k)
@@ -78,6 +97,7 @@ nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& s
     j["settled_by_control"] = true;  // sees 3 control points itself, all within the drop translation
   if (r.georeference && std::binary_search(r.georeference->unplaced.begin(), r.georeference->unplaced.end(), i))
     j["unplaced_why"] = unplacedByControlWhy(*r.georeference, i);
+  if (auto f = freeSpaceJson(r.free_space, i); !f.is_null()) j["free_space"] = std::move(f);
   if (ambiguous)
     j["ambiguous_why"] =
         std::binary_search(r.competing.ambiguous.begin(), r.competing.ambiguous.end(), i)
@@ -152,6 +172,7 @@ nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& s
           {"unplaced", names(st, r.unplaced)}, {"ambiguous", names(st, r.ambiguous())},
           {"copies_unchecked", names(st, r.copies_unchecked)}, {"one_loop", names(st, r.one_loop)},
           {"placed_by_own_control", names(st, r.placed_by_own_control)},
+          {"settled_by_free_space", names(st, r.free_space.settled)}, {"seconds_free_space", r.free_space.seconds},
           {"competing", competingJson(r, st)}, {"parts", parts}, {"solves", r.adjustment.solves},
           {"converged", r.adjustment.converged}, {"covariance", r.adjustment.covariance_ok},
           {"solver", r.adjustment.message}, {"seconds_features", r.seconds_features},
@@ -254,13 +275,17 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
       o << (l.contains("dropped_by") ? "  DROPPED (the control points contradict it)" : "  DROPPED (disagrees with the network)");
     else if (l["flagged"].get<bool>()) o << "  FLAGGED (disagrees with the network)";
     else if (l["bridge"].get<bool>()) o << "  (no loop checks it)";
-    if (l.contains("decision")) o << "  [" << l["decision"].get<std::string>() << " by the surveyor]";
+    if (l.contains("decision"))
+      o << (l["decision"] == kFreeSpaceDecision ? "  [taken as true: the free space of the placed stations chose it]"
+                                                : "  [" + l["decision"].get<std::string>() + " by the surveyor]");
     o << "\n";
   }
   for (const auto& s : j["stations"]) {
     o << "station " << s["name"].get<std::string>() << ": ";
     if (s["ambiguous"].get<bool>()) {
-      o << "AMBIGUOUS (" << s["ambiguous_why"].get<std::string>() << ")\n";
+      o << "AMBIGUOUS (" << s["ambiguous_why"].get<std::string>() << ")";
+      if (s.contains("free_space")) o << "; not settled by the free space: " << s["free_space"]["why"].get<std::string>();
+      o << "\n";
       continue;
     }
     if (!s["placed"].get<bool>()) {
@@ -271,6 +296,8 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
     if (s.value("locked", false)) o << "locked, ";
     if (s.contains("placed_by")) o << "placed by its own control points (no link to the reference), ";
     if (s.value("settled_by_control", false)) o << "confirmed by the 3+ control points it sees, ";
+    if (s.contains("free_space") && s["free_space"]["settled"].get<bool>())
+      o << "ambiguous by its links, " << s["free_space"]["why"].get<std::string>() << ", ";
     o << std::setprecision(2) << "sigma " << 1000 * sp[0].get<double>() << ", " << 1000 * sp[1].get<double>() << ", "
       << 1000 * sp[2].get<double>() << " mm\n";
   }

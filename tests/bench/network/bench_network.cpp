@@ -139,6 +139,16 @@ void writeReport(const std::string& dir, std::uint64_t seed, const NetworkResult
     const RigidTransform expected = to_registered * d.true_poses[i];
     j["stations"][i]["true_rotation_error_deg"] = RigidTransform::rotationErrorDeg(expected, *r.adjustment.poses[i]);
     j["stations"][i]["true_position_error_m"] = RigidTransform::translationError(expected, *r.adjustment.poses[i]);
+    const Eigen::Vector3d at = expected.translation();
+    j["stations"][i]["true_position"] = {at.x(), at.y(), at.z()};
+  }
+  const auto truePose = [&](std::size_t i) { return i < d.true_poses.size() ? to_registered * d.true_poses[i] : RigidTransform(); };
+  for (std::size_t k = 0; k < r.links.size(); ++k) {  // each registered link against the true relation
+    const Link& l = r.links[k];
+    if (!l.registered) continue;
+    const RigidTransform truth = truePose(l.a).inverse() * truePose(l.b);
+    j["links"][k]["true_rotation_error_deg"] = RigidTransform::rotationErrorDeg(truth, l.transform);
+    j["links"][k]["true_translation_error_m"] = RigidTransform::translationError(truth, l.transform);
   }
   std::filesystem::create_directories(dir);
   std::ofstream(dir + "/seed-" + std::to_string(seed) + ".json") << j.dump(1);

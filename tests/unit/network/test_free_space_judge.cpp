@@ -1,0 +1,144 @@
+// The free-space judge (free_space_judge.hpp, docs/NETWORK.md "The free space judges ambiguous
+// stations"): two rooms of the same size side by side, one piece of furniture each, scanned by
+// the simulator; station 1 (a corner of room 0) is the ambiguous one, and its twin placement is
+// the same corner of room 1. The judge must settle it when it is placed right and its twin is
+// the alternative, choose the right placement when the twin is the adopted one, and keep it
+// ambiguous when two placements are clean or when no placed station sees where it is placed.
+#include <gtest/gtest.h>
+
+#include "registration/network/free_space_judge.hpp"
+#include "simulation/building_generator.hpp"
+#include "simulation/presets.hpp"
+#include "simulation/survey.hpp"
+
+namespace plumb {
+namespace {
+
+struct TwinRooms {
+  std::vector<Station> stations;
+  std::vector<std::optional<RigidTransform>> truth;  ///< station -> model frame
+  RigidTransform twin;  ///< room 0 -> room 1 (the shift between the room centres)
+};
+
+/// Stations: 0 room 0 centre, 1 a corner of room 0, 2 room 1 centre.
+TwinRooms scanTwinRooms() {
+  BuildingSpec spec;
+  spec.name = "twin-rooms";
+  spec.column_widths = {4.0, 4.0};
+  spec.row_depths = {5.0};
+  spec.furniture_per_room = 1;
+  spec.seed = 3;
+  const GeneratedBuilding b = generateBuilding(spec);
+  const auto centres = roomCentres(spec, 0);
+  SurveyRequest r;
+  r.tls_stations = {centres[0], centres[0] + Eigen::Vector3d(-1.1, -1.4, 0), centres[1]};
+  r.tls.azimuth_step_deg = r.tls.elevation_step_deg = 0.5;
+  const SimulatedSurvey survey = simulateSurvey(b.model, b.glass_triangles, {}, r);
+  TwinRooms t;
+  t.stations = stationsOf(survey.datasets[0].data, "twin.e57");
+  for (const auto& p : survey.datasets[0].true_poses) t.truth.push_back(p);
+  t.twin = RigidTransform(Eigen::Matrix3d::Identity(), centres[1] - centres[0]);
+  return t;
+}
+
+const TwinRooms& twinRooms() {
+  static const TwinRooms t = scanTwinRooms();
+  return t;
+}
+
+/// Station 1 moved into room 1 (its twin placement) in a copy of `poses`.
+PlacementHypothesis twinOf(const std::vector<std::optional<RigidTransform>>& poses, const RigidTransform& move,
+                           const std::string& source) {
+  PlacementHypothesis h{source, poses, {1}};
+  h.poses[1] = move * *poses[1];
+  return h;
+}
+
+TEST(FreeSpaceJudge, SettlesARightPlacementWhoseTwinTheFurnitureRefutes) {
+  const TwinRooms& t = twinRooms();
+  const auto j = judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {twinOf(t.truth, t.twin, "the twin")},
+                                  FreeSpaceJudgeParams{}, VisibilityParams{});
+  ASSERT_TRUE(j.ran);
+  ASSERT_EQ(j.stations.size(), 1u);
+  const StationJudgement& s = j.stations[0];
+  ASSERT_EQ(s.placements.size(), 2u);  // adopted, the twin
+  const JudgedPlacement &adopted = s.placements[0], &twin = s.placements[1];
+  EXPECT_TRUE(adopted.clean) << s.why;
+  EXPECT_GE(adopted.tally.visible, 2000u);
+  EXPECT_LE(adopted.tally.ratio(), FreeSpaceJudgeParams{}.clean_ratio) << s.why;
+  EXPECT_TRUE(twin.judged);
+  EXPECT_GE(twin.tally.ratio(), FreeSpaceJudgeParams{}.refute_ratio) << s.why;
+  EXPECT_GE(twin.tally.ratio(), 3 * adopted.tally.ratio());
+  ASSERT_TRUE(s.decided);
+  EXPECT_EQ(*s.decided, 0u);
+  EXPECT_TRUE(s.settled) << s.why;
+  EXPECT_EQ(j.settled, std::vector<std::size_t>{1});
+  EXPECT_TRUE(j.chosen.empty());
+  EXPECT_NE(s.why.find("settled by the free space"), std::string::npos) << s.why;
+}
+
+TEST(FreeSpaceJudge, ChoosesTheRightPlacementOverAnAdoptedTwin) {
+  const TwinRooms& t = twinRooms();
+  auto adopted = t.truth;  // the links placed station 1 in room 1, where its twin corner is
+  adopted[1] = t.twin * *t.truth[1];
+  auto truth = twinOf(adopted, t.twin.inverse(), "the BIM's placement 2");
+  truth.bim_candidate = 1;
+  const auto j = judgeByFreeSpace(t.stations, adopted, {1}, {0, 2}, {truth}, FreeSpaceJudgeParams{}, VisibilityParams{});
+  ASSERT_EQ(j.stations.size(), 1u);
+  const StationJudgement& s = j.stations[0];
+  EXPECT_FALSE(s.placements[0].clean);
+  EXPECT_GT(s.placements[0].tally.ratio(), FreeSpaceJudgeParams{}.refute_ratio);
+  EXPECT_FALSE(s.settled);
+  EXPECT_TRUE(j.settled.empty());
+  ASSERT_TRUE(s.decided) << s.why;
+  EXPECT_EQ(*s.decided, 1u);
+  ASSERT_EQ(j.chosen.size(), 1u);
+  EXPECT_EQ(j.chosen[0].first, 1u);
+  EXPECT_EQ(j.chosen[0].second.bim_candidate, std::optional<std::size_t>(1));
+  EXPECT_NE(s.why.find("placed by the free space at the BIM's placement 2"), std::string::npos) << s.why;
+}
+
+TEST(FreeSpaceJudge, TwoCleanPlacementsDecideNothing) {
+  const TwinRooms& t = twinRooms();
+  // The same placement offered twice (a copy a millimetre off): neither refutes the other.
+  auto near = twinOf(t.truth, RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.001, 0, 0)), "a copy");
+  const auto j = judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {near}, FreeSpaceJudgeParams{}, VisibilityParams{});
+  ASSERT_EQ(j.stations.size(), 1u);
+  EXPECT_FALSE(j.stations[0].decided);
+  EXPECT_FALSE(j.stations[0].settled);
+  EXPECT_TRUE(j.settled.empty() && j.chosen.empty());
+  EXPECT_NE(j.stations[0].why.find("does not tell"), std::string::npos) << j.stations[0].why;
+}
+
+TEST(FreeSpaceJudge, NoPlacedStationSeesIt) {
+  const TwinRooms& t = twinRooms();
+  auto adopted = t.truth;  // station 1 placed 500 m east, where no station saw
+  adopted[1] = RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(500, 0, 0)) * *t.truth[1];
+  const auto j = judgeByFreeSpace(t.stations, adopted, {1}, {0, 2}, {}, FreeSpaceJudgeParams{}, VisibilityParams{});
+  ASSERT_EQ(j.stations.size(), 1u);
+  EXPECT_FALSE(j.stations[0].settled);
+  EXPECT_FALSE(j.stations[0].placements[0].judged);
+  EXPECT_EQ(j.stations[0].placements[0].tally.visible, 0u);
+  EXPECT_NE(j.stations[0].why.find("see too little"), std::string::npos) << j.stations[0].why;
+}
+
+TEST(FreeSpaceJudge, OnlyConfirmedStationsObserve) {
+  const TwinRooms& t = twinRooms();  // stations 0 and 2 placed, but nothing outside the links confirms them
+  const auto j = judgeByFreeSpace(t.stations, t.truth, {1}, {}, {twinOf(t.truth, t.twin, "the twin")},
+                                  FreeSpaceJudgeParams{}, VisibilityParams{});
+  ASSERT_EQ(j.stations.size(), 1u);
+  EXPECT_FALSE(j.stations[0].placements[0].judged);
+  EXPECT_FALSE(j.stations[0].settled);
+  EXPECT_TRUE(j.settled.empty() && j.chosen.empty());
+}
+
+TEST(FreeSpaceJudge, DisabledOrNothingAmbiguousJudgesNothing) {
+  const TwinRooms& t = twinRooms();
+  FreeSpaceJudgeParams off;
+  off.enabled = false;
+  EXPECT_FALSE(judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {}, off, VisibilityParams{}).ran);
+  EXPECT_FALSE(judgeByFreeSpace(t.stations, t.truth, {}, {0, 2}, {}, FreeSpaceJudgeParams{}, VisibilityParams{}).ran);
+}
+
+}  // namespace
+}  // namespace plumb
