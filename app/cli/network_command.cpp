@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
@@ -40,6 +41,7 @@
 #include "io/io.hpp"
 #include "io/stream/e57_convert.hpp"
 #include "registration/bounded/bounded_datasets.hpp"
+#include "registration/network/mms_windows.hpp"
 #include "registration/network/network_report.hpp"
 #include "report/network_html.hpp"
 #include "report/report_builder.hpp"
@@ -122,33 +124,63 @@ std::vector<Station> loadStations(const NetworkOptions& o, const NetworkParams& 
                 << " points (-o streams every point again)\n";
     files.push_back({&d.data, d.path.string(), d.voxel});
   }
-  std::vector<Station> stations = stationsOfFiles(files);
+  std::vector<Station> stations = stationsOfFiles(files, p.mms.window);
   if (!o.model.empty()) stations.push_back(modelStation(readModel(o.model), o.model));  // last: the reference
   return stations;
 }
 
-/// -o: every station with its adjusted pose, one scan each, written as it comes (a subsampled
-/// file is streamed again at full resolution; one scan held at a time).
+/// Writes scan `k` of `d` as the stations `first`.. made of it: the scan under its station's
+/// pose, or an MMS pass as one scan per window, each under its window's pose (every point
+/// written once: points without a finite time go with the first window). Returns the stations used.
+std::size_t writeScanStations(E57StreamWriter& writer, const Dataset& d, std::size_t k, const NetworkResult& r,
+                              const std::vector<Station>& stations, std::size_t first) {
+  const Scan& scan = d.scans[k];
+  if (stations[first].mms_pass < 0) {
+    Scan s = scan;
+    s.name = stations[first].name;
+    s.pose = *r.adjustment.poses[first];
+    s.has_pose = true;
+    writer.writeScan(s);
+    return 1;
+  }
+  auto windows = windowsOf(scan, stations[first].window_end - stations[first].window_start);
+  for (std::size_t i = 0; i < scan.cloud.size(); ++i)
+    if (!std::isfinite(scan.cloud.timestamps[i])) windows.front().points.push_back(i);
+  for (std::size_t w = 0; w < windows.size(); ++w) {
+    Scan s;
+    s.name = stations[first + w].name;
+    s.guid = scan.guid.empty() ? "" : scan.guid + "-w" + std::to_string(w);
+    s.original_guids = {scan.guid};
+    s.cloud = scan.cloud.subset(windows[w].points);
+    s.pose = *r.adjustment.poses[first + w];  // a window's frame is the pass's scan frame
+    s.has_pose = true;
+    writer.writeScan(s);
+  }
+  return windows.size();
+}
+
+/// -o: every station with its adjusted pose, one scan each (an MMS pass: one per window),
+/// written as it comes (a subsampled file is streamed again at full resolution; one scan held
+/// at a time).
 void writeRegisteredStations(const std::string& path, const NetworkResult& r, const std::vector<Station>& stations,
                              const std::vector<BoundedDataset>& datasets) {
+  for (const auto& d : datasets)
+    for (const auto& s : stations)
+      if (d.subsampled && s.mms_pass >= 0 && s.file == d.path.string())
+        throw InputError(d.path.string() + ": -o cannot stream an MMS pass cut into windows from a subsampled file; "
+                         "set mms.window=0 (one node per pass) or raise memory.budget");
   E57StreamWriter writer(path);
   std::size_t i = 0;
   std::string crs;
   for (const auto& d : datasets) {
     if (crs.empty()) crs = d.data.coordinate_system;
-    std::vector<ScanHeader> headers;
-    for (std::size_t k = 0; k < d.data.scans.size(); ++k, ++i) headers.push_back({stations[i].name, *r.adjustment.poses[i]});
     if (d.subsampled) {
+      std::vector<ScanHeader> headers;
+      for (std::size_t k = 0; k < d.data.scans.size(); ++k, ++i) headers.push_back({stations[i].name, *r.adjustment.poses[i]});
       appendRePosedScans(d.path, writer, headers);
       continue;
     }
-    for (std::size_t k = 0; k < d.data.scans.size(); ++k) {
-      Scan s = d.data.scans[k];
-      s.name = headers[k].name;
-      s.pose = headers[k].pose;
-      s.has_pose = true;
-      writer.writeScan(s);
-    }
+    for (std::size_t k = 0; k < d.data.scans.size(); ++k) i += writeScanStations(writer, d.data, k, r, stations, i);
   }
   writer.finish(crs);
   printWritten(path, writer.points(), writer.scans(), WriteReport{});

@@ -115,6 +115,9 @@ Task* startNetworkRegistration(AppContext& app, NetworkInputs inputs, const Netw
   const std::vector<LayerRef> holds = inputs.layers();
   return app.tasks.run(QObject::tr("Registering the network"), [inputs = std::move(inputs), params,
                                                                   done](Progress& progress) {
+    if (params.mms.window > 0)  // the desktop maps one station to one scan of a layer
+      throw InputError("MMS passes cut into time windows (mms.window) are registered by plumb-cli network; the "
+                       "desktop registers a pass as one node: set mms.window to 0");
     auto stations = std::make_shared<std::vector<Station>>(buildStations(inputs));
     Progress features = progress.sub(0.0, 0.3);
     detectStationsFeatures(*stations, params.link, features);

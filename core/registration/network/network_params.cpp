@@ -84,6 +84,21 @@ const ParamSchema<FinalRefinementParams>& FinalRefinementParams::schema() {
   return s;
 }
 
+const ParamSchema<MmsWindowParams>& MmsWindowParams::schema() {
+  using P = MmsWindowParams;
+  static const auto s =
+      ParamSchema<P>("mms")
+          .real(&P::window, "window", "MMS window", "s", 0.0, 3600.0,
+                "Seconds of point time per node of an MMS pass (0: the pass is one rigid node)")
+          .real(&P::sigma_translation, "sigma-translation", "Trajectory sigma", "m", 1e-4, 10.0,
+                "Stated accuracy of the trajectory between consecutive windows")
+          .real(&P::sigma_rotation_deg, "sigma-rotation", "Trajectory rotation sigma", "deg", 1e-4, 10.0,
+                "Stated rotation accuracy of the trajectory between consecutive windows", true)
+          .boolean(&P::station_pairs, "station-pairs", "Windows with stations",
+                   "Register every MMS window with every static station (openings), not only with the BIM");
+  return s;
+}
+
 nlohmann::json networkParamsToJson(const NetworkParams& p) {
   nlohmann::json j;
   forEachNetworkParamGroup(p, [&](const char* key, const char*, const auto& schema, const auto& group) {

@@ -98,12 +98,27 @@ struct FinalRefinementParams {
   static const ParamSchema<FinalRefinementParams>& schema();
 };
 
+/// MMS passes as time-windowed nodes (mms_windows.hpp).
+struct MmsWindowParams {
+  /// Seconds of point time per window; 0: a pass is one rigid node (the default, and the
+  /// desktop's only mode: it maps one station to one scan of a layer), [0, 3600].
+  double window = 0.0;
+  /// Stated accuracy of the trajectory between consecutive windows (1 sigma), m, [1e-4, 10] ...
+  double sigma_translation = 0.02;
+  /// ... and deg, [1e-4, 10].
+  double sigma_rotation_deg = 0.02;
+  /// Register every window with every static station (openings); off: with the BIM only.
+  bool station_pairs = true;
+  static const ParamSchema<MmsWindowParams>& schema();
+};
+
 struct NetworkParams {
   PairSelectionParams pairs;
   LinkWeightParams weights;
   PoseGraphParams graph;
   FinalRefinementParams final_refinement;
   FreeSpaceJudgeParams free_space;  ///< free_space_judge.hpp
+  MmsWindowParams mms;              ///< mms_windows.hpp
   PipelineParams link;  ///< the pipeline of each link
 };
 
@@ -115,6 +130,7 @@ void forEachNetworkParamGroup(P& p, F&& f) {
   f("pose-graph", "Global adjustment", PoseGraphParams::schema(), p.graph);
   f("final-refinement", "Final refinement on points", FinalRefinementParams::schema(), p.final_refinement);
   f("free-space-judge", "Free-space judge of ambiguous stations", FreeSpaceJudgeParams::schema(), p.free_space);
+  f("mms", "MMS passes", MmsWindowParams::schema(), p.mms);
 }
 
 /// {"pair-selection": {...}, "link-weights": {...}, "pose-graph": {...}, "link": {pipeline}}.

@@ -8,6 +8,7 @@
 #include "common/error.hpp"
 #include "registration/network/control_parts.hpp"
 #include "registration/network/footprint_pairs.hpp"
+#include "registration/network/mms_windows.hpp"
 
 namespace plumb {
 namespace {
@@ -36,39 +37,56 @@ void registerPairs(const std::vector<Station>& stations, const std::vector<Candi
   }
 }
 
-/// Scan stations: all but a model, which is last.
-std::size_t scanStations(const std::vector<Station>& stations) {
-  return !stations.empty() && stations.back().is_model ? stations.size() - 1 : stations.size();
-}
+/// A static scan station: neither the model nor a window of an MMS pass.
+bool isStatic(const Station& s) { return !s.is_model && s.mms_pass < 0; }
 
-/// Layout similarity of every node pair; the model is similar to nothing (it is paired with
-/// every scan station anyway).
+/// Layout similarity of every node pair; the model and MMS windows are similar to nothing (they
+/// are paired with every static station anyway: firstPairs, mmsPairs).
 std::vector<std::vector<double>> nodeSimilarity(const std::vector<Station>& stations) {
   std::vector<LayoutDescriptor> layouts;
   for (const auto& s : stations) layouts.push_back(s.layout);
   auto similarity = similarityMatrix(layouts);
-  for (std::size_t i = scanStations(stations); i < stations.size(); ++i)
-    for (std::size_t j = 0; j < stations.size(); ++j)
-      if (j != i) similarity[i][j] = similarity[j][i] = 0.0;
+  for (std::size_t i = 0; i < stations.size(); ++i)
+    if (!isStatic(stations[i]))
+      for (std::size_t j = 0; j < stations.size(); ++j)
+        if (j != i) similarity[i][j] = similarity[j][i] = 0.0;
   return similarity;
 }
 
-/// Layout and sequence pairs among the scan stations, then every scan station with the model.
+/// Layout and sequence pairs among the static stations, every static station with the model,
+/// then the MMS windows' pairs (mmsPairs).
 std::vector<CandidatePair> firstPairs(const std::vector<Station>& stations,
-                                      const std::vector<std::vector<double>>& similarity,
-                                      const PairSelectionParams& params) {
-  const std::size_t n = scanStations(stations);
-  std::vector<std::vector<double>> scans(n);
-  for (std::size_t i = 0; i < n; ++i) scans[i].assign(similarity[i].begin(), similarity[i].begin() + long(n));
-  std::vector<CandidatePair> pairs = initialPairs(scans, params);
-  for (std::size_t i = 0; i < n && n < stations.size(); ++i) pairs.push_back({i, n, 0.0, "model"});
+                                      const std::vector<std::vector<double>>& similarity, const NetworkParams& params) {
+  std::vector<std::size_t> statics;
+  for (std::size_t i = 0; i < stations.size(); ++i)
+    if (isStatic(stations[i])) statics.push_back(i);
+  std::vector<std::vector<double>> scans(statics.size());
+  for (std::size_t i = 0; i < statics.size(); ++i)
+    for (std::size_t j : statics) scans[i].push_back(similarity[statics[i]][j]);
+  std::vector<CandidatePair> pairs = initialPairs(scans, params.pairs);
+  for (auto& p : pairs) p.a = statics[p.a], p.b = statics[p.b];
+  if (stations.back().is_model)
+    for (std::size_t i : statics) pairs.push_back({i, stations.size() - 1, 0.0, "model"});
+  const auto mms = mmsPairs(stations, params.mms);
+  pairs.insert(pairs.end(), mms.begin(), mms.end());
   return pairs;
 }
 
-/// Pair rounds: the initial pairs, then the next rounds (nextRound) until none is left.
+/// The trajectory links of the MMS passes (mms_windows.hpp) `links` lacks, first.
+void addTrajectoryLinks(const std::vector<Station>& stations, const NetworkParams& params, std::vector<Link>& links) {
+  std::vector<Link> out;
+  for (auto& t : trajectoryLinks(stations, params.mms))
+    if (std::none_of(links.begin(), links.end(), [&](const Link& l) { return l.a == t.a && l.b == t.b; }))
+      out.push_back(std::move(t));
+  links.insert(links.begin(), out.begin(), out.end());
+}
+
+/// Pair rounds: the trajectory links, the initial pairs, then the next rounds (nextRound) until
+/// none is left.
 void registerLinks(const std::vector<Station>& stations, const NetworkParams& params, NetworkResult& out,
                    Progress* progress) {
-  std::vector<CandidatePair> pairs = firstPairs(stations, nodeSimilarity(stations), params.pairs);
+  addTrajectoryLinks(stations, params, out.links);
+  std::vector<CandidatePair> pairs = firstPairs(stations, nodeSimilarity(stations), params);
   while (!pairs.empty()) {
     ++out.rounds;
     registerPairs(stations, pairs, params, out, progress);
@@ -308,7 +326,7 @@ void checkNetwork(const std::vector<Station>& stations, std::size_t reference, c
 
 std::vector<CandidatePair> plannedPairs(const std::vector<Station>& stations, const NetworkParams& params) {
   checkNetwork(stations, stations.back().is_model ? stations.size() - 1 : 0, params);
-  return firstPairs(stations, nodeSimilarity(stations), params.pairs);
+  return firstPairs(stations, nodeSimilarity(stations), params);
 }
 
 bool acceptedLinksSplit(std::size_t stations, const std::vector<Link>& links) {
@@ -356,6 +374,7 @@ NetworkResult adjustRegisteredLinks(const std::vector<Station>& stations, std::v
                                     std::size_t reference, const NetworkParams& params, const ControlSurvey* control,
                                     const NetworkDecisions& decisions) {
   checkNetwork(stations, reference, params);
+  addTrajectoryLinks(stations, params, links);
   applyDecisions(links, decisions, stations);
   NetworkResult out;
   out.reference = reference;

@@ -90,6 +90,8 @@ nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& s
                       {"placed", r.placed(i)}, {"ambiguous", ambiguous}, {"model", st[i].is_model},
                       {"links", links}};
   if (st[i].subsample_voxel > 0) j["subsample_voxel_m"] = st[i].subsample_voxel;
+  if (st[i].mms_pass >= 0)  // seconds after the pass's first point time
+    j["mms_window_s"] = {{"pass", st[i].mms_pass}, {"start", st[i].window_start}, {"end", st[i].window_end}};
   if (std::binary_search(r.locked.begin(), r.locked.end(), i)) j["locked"] = true;
   if (std::binary_search(r.placed_by_own_control.begin(), r.placed_by_own_control.end(), i))
     j["placed_by"] = "own control points";  // no kept link joins it to the reference

@@ -6,12 +6,17 @@
 //                "model" (the BIM node, last),
 //                "pose": {"matrix"}, "transform": {"matrix"}
 //                (file frame -> registered frame), "sigma_position_m": [x,y,z],
-//                "sigma_rotation_deg": [x,y,z], "links": [link indices]}],
+//                "sigma_rotation_deg": [x,y,z], "links": [link indices],
+//                "free_space" (an ambiguous station judged, free_space_judge.hpp): {"settled",
+//                "why", "round", "decided" (the placement chosen), "placements": [{"source",
+//                "tally": {"visible", "contradicting", "ratio"}, "judged", "clean"}]},
+//                "mms_window_s" (a window of an MMS pass): {"pass", "start", "end"}}],
 //  "links": [{"a", "b", "reason", "similarity", "method", "verdict_level", "verdict", "status",
 //             "warnings", "overlap", "point_rms_m", "weakest_resistance", "sigma_translation_m",
 //             "sigma_rotation_deg", "accepted", "residual_translation_m", "residual_rotation_deg",
 //             "residual_sigma", "flagged", "dropped", "bridge" (a kept link no loop checks),
-//             "triangles_closing", "triangles_failing",
+//             "triangles_closing", "triangles_failing", "decision" ("accepted" / "rejected" by
+//             the surveyor, "free space": taken as true by the free-space judge),
 //             "seconds", "transform" (b's frame -> a's frame), "alternatives": [{"role",
 //             "overlap", "point_rms_m", "rotation_from_chosen_deg", "transform"}] (the other
 //             placements the link's pipeline refined)}],
@@ -24,6 +29,7 @@
 //              "corroborated", "competes", "links_dropped", "sequence_links_dropped",
 //              "model_links_dropped", "stations_moved": [names],
 //              "max_translation_m", "max_rotation_deg"}] (one per dropped link taken as true),
+//              "settled_by_free_space": [names], "seconds_free_space",
 //              "parts": [[names]], "solves", "converged", "covariance", "solver",
 //              "seconds_features", "seconds_links", "seconds_adjustment"},
 //  "georeference" (with control points): {"done", "message", "crs", "scale_factor",

@@ -1,10 +1,12 @@
 #include "registration/network/station.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <map>
 
 #include "common/error.hpp"
+#include "registration/network/mms_windows.hpp"
 
 namespace plumb {
 
@@ -12,10 +14,14 @@ std::string stationName(const Scan& scan, std::size_t index) {
   return scan.name.empty() ? "scan-" + std::to_string(index) : scan.name;
 }
 
-std::vector<Station> stationsOf(const Dataset& data, const std::string& file) {
+std::vector<Station> stationsOf(const Dataset& data, const std::string& file, double mms_window, int first_pass) {
   std::vector<Station> out;
   for (std::size_t i = 0; i < data.scans.size(); ++i) {
     const Scan& scan = data.scans[i];
+    if (mms_window > 0 && isMmsPass(scan)) {
+      for (auto& w : mmsWindows(scan, i, file, first_pass++, mms_window)) out.push_back(std::move(w));
+      continue;
+    }
     Station s;
     s.name = stationName(scan, i);
     s.file = file;
@@ -60,10 +66,12 @@ void detectStationFeatures(Station& station, const PipelineParams& params) {
   station.seconds_features = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::vector<Station> stationsOfFiles(const std::vector<StationFile>& inputs) {
+std::vector<Station> stationsOfFiles(const std::vector<StationFile>& inputs, double mms_window) {
   std::vector<Station> stations;
+  int passes = 0;
   for (const auto& in : inputs)
-    for (auto& s : stationsOf(*in.data, in.file)) {
+    for (auto& s : stationsOf(*in.data, in.file, mms_window, passes)) {
+      passes = std::max(passes, s.mms_pass + 1);
       s.subsample_voxel = in.subsample_voxel;
       stations.push_back(std::move(s));
     }

@@ -28,6 +28,11 @@ struct Station {
   /// The BIM (modelStation): a fixed node whose frame is the output frame; every scan station
   /// is registered onto it. At most one, last in the station list.
   bool is_model = false;
+  /// A window of an MMS pass (mms_windows.hpp): its points of [window_start, window_end) seconds
+  /// after the pass's first point time, in the pass's frame; the pass's number among the
+  /// network's passes, -1 for a static station or the model.
+  int mms_pass = -1;
+  double window_start = 0.0, window_end = 0.0;
 };
 
 /// The BIM as a network node: its own frame is the model frame (file pose identity).
@@ -41,7 +46,10 @@ std::string stationName(const Scan& scan, std::size_t index);
 /// One station per scan of `data` (read from `file`): points in the scan's own frame; a scan
 /// with a pose is a static station whose scanner sits at its frame's origin. Throws FileError
 /// naming the file and scan when a scan holds no points.
-std::vector<Station> stationsOf(const Dataset& data, const std::string& file);
+/// With `mms_window` > 0, a scan with a trajectory (isMmsPass) is cut into windows of that many
+/// seconds instead (mmsWindows), numbered from `first_pass`.
+std::vector<Station> stationsOf(const Dataset& data, const std::string& file, double mms_window = 0.0,
+                                int first_pass = 0);
 
 /// One input of a network: a point dataset as read (whole, or its scans' voxel subsamples), the
 /// file it came from, and the subsample voxel (0: every point).
@@ -53,8 +61,9 @@ struct StationFile {
 
 /// Every scan of every input as a station (stationsOf), each with its file's subsample voxel,
 /// names made unique (makeStationNamesUnique): the stations of `plumb-cli network` and of the
-/// desktop's Network dock, before the model (modelStation, last).
-std::vector<Station> stationsOfFiles(const std::vector<StationFile>& inputs);
+/// desktop's Network dock, before the model (modelStation, last). MMS passes are cut into
+/// windows of `mms_window` seconds (0: one node each).
+std::vector<Station> stationsOfFiles(const std::vector<StationFile>& inputs, double mms_window = 0.0);
 
 /// Detects every station's features (detectStationFeatures), reporting each station to
 /// `progress` and honouring its cancel.

@@ -14,6 +14,10 @@
 // station is unplaced or off by more than 0.02 deg / 5 mm (the acceptance targets).
 // --bim: every station is also registered onto the building's model, which is the reference
 // (errors in the model frame).
+// --mms SECONDS: an MMS pass along the street around the building (in the model frame), cut into
+// windows of that many seconds (core/registration/network/mms_windows.hpp), each a node; the
+// windows placed and their largest error are printed under the seed's row (needs --bim: without
+// it the pass is not tied to the stations' frame).
 // --synthetic: the adjustment alone on synthetic pose graphs (tests/support/synthetic_network):
 // 40 stations on a ring with chords, 1 mm / 0.005 deg noise on every link and one planted wrong
 // link (4 m, 180 deg); per seed: wrong link dropped, largest error of the network and of the
@@ -58,6 +62,7 @@ struct Options {
   bool smoke = false;
   bool synthetic = false;
   bool bim = false;  ///< also register every station onto the building's model (the reference)
+  double mms_window = 0.0;  ///< --mms SECONDS: an MMS pass around the building, cut into windows of that many seconds
   std::vector<std::string> settings;  ///< --set GROUP.KEY=VALUE: network or link pipeline parameters
   int control = 0, check = 0;  ///< --control N,M: N control and M check targets (simulate --control-points)
   std::string report_dir;  ///< when set: each seed's network report, with every station's true error
@@ -68,6 +73,7 @@ struct Options {
 
 struct Campaign {
   SimulatedDataset indoor;
+  std::optional<SimulatedDataset> outdoor;  ///< --mms: the pass, in the model frame
   std::vector<Eigen::Vector3d> station_positions;  ///< model frame, in shot order
   double seconds_simulation = 0.0;
 };
@@ -92,9 +98,12 @@ Campaign simulate(const GeneratedBuilding& b, const Options& o, std::uint64_t se
   r.perturb_station_yaw_deg = 180.0;
   r.perturb_station_shift_m = 20.0;
   r.seed = seed;
+  r.mms = o.mms_window > 0;
   Campaign c;
   c.station_positions = r.tls_stations;
-  c.indoor = simulateSurvey(b.model, b.glass_triangles, b.truth.footprint, r).datasets.at(0);
+  SimulatedSurvey survey = simulateSurvey(b.model, b.glass_triangles, b.truth.footprint, r);
+  c.indoor = std::move(survey.datasets.at(0));
+  if (r.mms) c.outdoor = std::move(survey.datasets.at(1));
   c.seconds_simulation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return c;
 }
@@ -130,7 +139,7 @@ Worst worstError(const std::vector<std::optional<RigidTransform>>& poses, const 
 /// The network report of one seed, each station with its adopted pose's error against the truth
 /// ("true_rotation_error_deg", "true_position_error_m"), for analysis.
 void writeReport(const std::string& dir, std::uint64_t seed, const NetworkResult& r, const std::vector<Station>& st,
-                 const SimulatedDataset& d, std::size_t ref) {
+                 const SimulatedDataset& d, std::size_t ref, const std::optional<SimulatedDataset>& outdoor = {}) {
   nlohmann::json j = networkReportToJson(r, st);
   const bool model_frame = ref >= d.true_poses.size();
   const RigidTransform to_registered = model_frame ? RigidTransform() : d.scan_truths[ref].inverse();
@@ -142,7 +151,10 @@ void writeReport(const std::string& dir, std::uint64_t seed, const NetworkResult
     const Eigen::Vector3d at = expected.translation();
     j["stations"][i]["true_position"] = {at.x(), at.y(), at.z()};
   }
-  const auto truePose = [&](std::size_t i) { return i < d.true_poses.size() ? to_registered * d.true_poses[i] : RigidTransform(); };
+  const auto truePose = [&](std::size_t i) {
+    if (i < d.true_poses.size()) return to_registered * d.true_poses[i];
+    return outdoor && !st[i].is_model ? to_registered * outdoor->true_poses[0] : RigidTransform();  // an MMS window
+  };
   for (std::size_t k = 0; k < r.links.size(); ++k) {  // each registered link against the true relation
     const Link& l = r.links[k];
     if (!l.registered) continue;
@@ -194,10 +206,31 @@ std::optional<RigidTransform> gridFrame(const NetworkResult& r) {
                                         o.y() + (kGridOrigin.y() - o.y()) / kGridScale, kGridOrigin.z()));
 }
 
+/// --mms: how many windows of the pass are placed, and the largest error of the placed ones
+/// (the pass is simulated in the model frame; errors in the reference frame).
+void printMmsWindows(const NetworkResult& r, const std::vector<Station>& st, const SimulatedDataset& indoor,
+                     const SimulatedDataset& outdoor, std::size_t ref) {
+  const RigidTransform to_registered = st[ref].is_model ? RigidTransform() : indoor.scan_truths[ref].inverse();
+  int windows = 0, placed = 0;
+  double rot = 0.0, pos = 0.0;
+  for (std::size_t i = 0; i < st.size(); ++i) {
+    if (st[i].mms_pass < 0) continue;
+    ++windows;
+    if (!r.placed(i)) continue;
+    ++placed;
+    const RigidTransform expected = to_registered * outdoor.true_poses[0];
+    rot = std::max(rot, RigidTransform::rotationErrorDeg(expected, *r.adjustment.poses[i]));
+    pos = std::max(pos, RigidTransform::translationError(expected, *r.adjustment.poses[i]));
+  }
+  std::printf("  mms: %d of %d windows placed, largest error %.4f deg %.2f mm\n", placed, windows, rot, 1000 * pos);
+}
+
 bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
   const Campaign c = simulate(b, o, seed);
   const NetworkParams params = paramsOf(o);
   std::vector<Station> stations = stationsOf(c.indoor.data, "indoor.e57");
+  if (c.outdoor)
+    for (auto& w : stationsOf(c.outdoor->data, "outdoor.e57", o.mms_window)) stations.push_back(std::move(w));
   if (o.bim) stations.push_back(modelStation(b.model, "model.ifc"));
   for (auto& s : stations) detectStationFeatures(s, params.link);
   const std::size_t ref = o.bim ? stations.size() - 1 : 0;
@@ -206,7 +239,7 @@ bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
   const auto ambiguous = r.ambiguous();
   const Worst net = worstError(r.adjustment.poses, c.indoor, ref, ambiguous, gridFrame(r));
   const Worst chain = worstError(r.adjustment.chain_poses, c.indoor, ref, {}, gridFrame(r));
-  if (!o.report_dir.empty()) writeReport(o.report_dir, seed, r, stations, c.indoor, ref);
+  if (!o.report_dir.empty()) writeReport(o.report_dir, seed, r, stations, c.indoor, ref, c.outdoor);
   double loop_max = 0.0, loop_sum = 0.0;
   for (const auto& l : r.adjustment.loops) loop_max = std::max(loop_max, l.translation), loop_sum += l.translation;
   const double loop_mean = r.adjustment.loops.empty() ? 0.0 : loop_sum / double(r.adjustment.loops.size());
@@ -216,6 +249,7 @@ bool runSeed(const GeneratedBuilding& b, const Options& o, std::uint64_t seed) {
               chain.rotation_deg, 1000 * chain.translation_m, r.adjustment.loops.size(), 1000 * loop_mean,
               1000 * loop_max, c.seconds_simulation, r.seconds_features, r.seconds_links, r.seconds_adjustment,
               net.unplaced, ambiguous.size(), net.wrong, networkExitCode(r));
+  if (c.outdoor) printMmsWindows(r, stations, c.indoor, *c.outdoor, ref);
   std::fflush(stdout);
   return net.unplaced == 0 && net.rotation_deg <= 0.02 && net.translation_m <= 0.005;
 }
@@ -386,6 +420,7 @@ Options parse(int argc, char** argv) {
     if (a == "--smoke") o.smoke = true, o.seeds = 1;
     else if (a == "--synthetic") o.synthetic = true;
     else if (a == "--bim") o.bim = true;
+    else if (a == "--mms" && i + 1 < argc) o.mms_window = std::stod(argv[++i]);
     else if (a == "--loop") o.loop = true;
     else if (a == "--corners") o.corners = true;
     else if (a == "--robust-scale" && i + 1 < argc) o.robust_scale = std::stod(argv[++i]);

@@ -7,6 +7,7 @@
 // turn, so wrong links agree with each other: docs/NETWORK.md.)
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -436,6 +437,45 @@ TEST(CliNetwork, TheFinalRefinementOnPointsAdjustsOnEveryOverlappingPair) {
   EXPECT_EQ(int(refined.size()), used);
   EXPECT_LE(report["network"]["pairs_registered"].get<int>(), 10) << "refined pairs are not registered pairs";
   expectEveryStationWithinTarget(test::reportErrors(test::readJsonFile(dir / "sim/truth.json"), report));
+}
+
+TEST(CliNetwork, AnMmsPassIsCutIntoTimeWindowsJoinedByItsTrajectoryAndWrittenWindowByWindow) {
+  const auto dir = test::scratchDir("cli_network_mms_windows");
+  std::ofstream(dir / "rooms.json") << R"({"name": "rooms", "column_widths": [4.0, 4.5], "row_depths": [5.0]})";
+  ASSERT_EQ(test::plumbCli(dir, "simulate --building rooms.json --mms --seed 3 -o sim").exit_code, 0);
+  const Dataset pass = readDataset(dir / "sim/outdoor.e57");
+  ASSERT_EQ(pass.scans.size(), 1u);
+  const auto r = test::plumbCli(dir, "network sim/outdoor.e57 --set mms.window=10 --reference mms@0-10s "
+                                     "--set mms.sigma-translation=0.03 -o windows.e57 --report net.json");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto report = test::readJsonFile(dir / "net.json");
+  ASSERT_EQ(report["stations"].size(), 3u);  // a 28 s pass: [0, 10), [10, 20), [20, 30) s
+  EXPECT_EQ(report["stations"][2]["name"], "mms@20-30s");
+  EXPECT_DOUBLE_EQ(report["stations"][1]["mms_window_s"]["start"].get<double>(), 10.0);
+  int trajectory = 0;
+  for (const auto& l : report["links"]) {
+    EXPECT_EQ(l["reason"], "trajectory");
+    trajectory += l["accepted"].get<bool>();
+  }
+  EXPECT_EQ(trajectory, 2);
+  // The trajectory links are the only ones: each window is a step of the stated 3 cm further.
+  EXPECT_NEAR(report["stations"][1]["sigma_position_m"][0].get<double>(), 0.03, 1e-4);
+  EXPECT_NEAR(report["stations"][2]["sigma_position_m"][0].get<double>(), 0.03 * std::sqrt(2.0), 1e-4);
+  // Written window by window, every point once, each under its (here unchanged) pose.
+  const Dataset out = readDataset(dir / "windows.e57");
+  ASSERT_EQ(out.scans.size(), 3u);
+  std::size_t points = 0;
+  for (const auto& s : out.scans) {
+    points += s.cloud.size();
+    EXPECT_LT(RigidTransform::translationError(s.pose, pass.scans[0].pose), 1e-9) << s.name;
+    EXPECT_TRUE(s.cloud.hasTimestamps() && s.cloud.hasSensorOrigins()) << s.name;
+  }
+  EXPECT_EQ(points, pass.pointCount());
+  EXPECT_EQ(out.scans[1].name, "mms@10-20s");
+  for (double t : out.scans[1].cloud.timestamps) {
+    EXPECT_GE(t - pass.scans[0].cloud.timestamps.front(), 10.0 - 1e-6);
+    EXPECT_LT(t - pass.scans[0].cloud.timestamps.front(), 20.0 + 1e-6);
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "registration/network/free_space_judge.hpp"
+#include "registration/network/network_registration.hpp"
 #include "simulation/building_generator.hpp"
 #include "simulation/presets.hpp"
 #include "simulation/survey.hpp"
@@ -15,6 +16,7 @@ namespace plumb {
 namespace {
 
 struct TwinRooms {
+  BimModel model;
   std::vector<Station> stations;
   std::vector<std::optional<RigidTransform>> truth;  ///< station -> model frame
   RigidTransform twin;  ///< room 0 -> room 1 (the shift between the room centres)
@@ -35,6 +37,7 @@ TwinRooms scanTwinRooms() {
   r.tls.azimuth_step_deg = r.tls.elevation_step_deg = 0.5;
   const SimulatedSurvey survey = simulateSurvey(b.model, b.glass_triangles, {}, r);
   TwinRooms t;
+  t.model = b.model;
   t.stations = stationsOf(survey.datasets[0].data, "twin.e57");
   for (const auto& p : survey.datasets[0].true_poses) t.truth.push_back(p);
   t.twin = RigidTransform(Eigen::Matrix3d::Identity(), centres[1] - centres[0]);
@@ -130,6 +133,50 @@ TEST(FreeSpaceJudge, OnlyConfirmedStationsObserve) {
   EXPECT_FALSE(j.stations[0].placements[0].judged);
   EXPECT_FALSE(j.stations[0].settled);
   EXPECT_TRUE(j.settled.empty() && j.chosen.empty());
+}
+
+/// A link b -> a at `b_in_a`, accepted unless `accepted` is false, weighted 1 mm / 0.01 deg.
+Link handLink(std::size_t a, std::size_t b, const RigidTransform& b_in_a, const std::string& reason,
+              bool accepted = true) {
+  Link l;
+  l.a = a, l.b = b, l.transform = b_in_a, l.reason = reason;
+  l.registered = l.accepted = accepted;
+  l.level = accepted ? VerdictLevel::Usable : VerdictLevel::Failed;
+  l.status = accepted ? "success" : "ambiguous";
+  l.sigma_translation = 0.001, l.sigma_rotation_deg = 0.01;
+  return l;
+}
+
+TEST(FreeSpaceJudge, TheNetworkTakesTheBimCopyTheFreeSpaceChoseAndDropsTheTwinLink) {
+  // Stations 0 and 2 registered onto the model; station 1 ambiguous on it (its copies: the
+  // truth and the twin corner of room 1), placed by one wrong link onto station 0 (the twin).
+  const TwinRooms& t = twinRooms();
+  std::vector<Station> st = t.stations;
+  st.push_back(modelStation(t.model, "twin.ifc"));
+  const std::size_t model = 3;
+  const RigidTransform twin1 = t.twin * *t.truth[1];
+  std::vector<Link> links{handLink(0, model, t.truth[0]->inverse(), "model"),
+                          handLink(2, model, t.truth[2]->inverse(), "model"),
+                          handLink(1, model, RigidTransform(), "model", false),
+                          handLink(0, 1, t.truth[0]->inverse() * twin1, "sequence")};
+  links[2].model_candidates = {twin1, *t.truth[1]};  // the pipeline's chosen one first: the twin
+  const NetworkResult r = adjustRegisteredLinks(st, links, model, NetworkParams{});
+  ASSERT_TRUE(r.adjustment.poses[1]);
+  EXPECT_TRUE(r.placed(1)) << (r.free_space.stations.empty() ? "" : r.free_space.stations[0].why);
+  EXPECT_LT(RigidTransform::translationError(*r.adjustment.poses[1], *t.truth[1]), 0.001);
+  EXPECT_EQ(r.links[2].decision, kFreeSpaceDecision);
+  EXPECT_TRUE(r.links[2].accepted);
+  bool twin_dropped = false;
+  for (std::size_t k = 0; k < r.adjusted.size(); ++k)
+    if (r.adjusted[k] == 3) twin_dropped = r.adjustment.links[k].dropped;
+  EXPECT_TRUE(twin_dropped) << "the wrong link onto station 0 contradicts the copy the free space chose";
+  EXPECT_TRUE(r.complete());
+  // Without the judge, station 1 stays ambiguous at the twin placement.
+  NetworkParams off;
+  off.free_space.enabled = false;
+  const NetworkResult before = adjustRegisteredLinks(st, links, model, off);
+  EXPECT_TRUE(before.isAmbiguous(1));
+  EXPECT_GT(RigidTransform::translationError(*before.adjustment.poses[1], *t.truth[1]), 3.0);
 }
 
 TEST(FreeSpaceJudge, DisabledOrNothingAmbiguousJudgesNothing) {
