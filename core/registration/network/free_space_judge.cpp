@@ -99,13 +99,17 @@ class FreeSpaceTester {
   std::map<std::tuple<std::size_t, std::size_t, int>, FreeSpaceTally> cache_;
 };
 
+/// Two poses of a station are one placement within 5 cm and 0.2 deg (the drop thresholds).
+bool samePlacement(const RigidTransform& a, const RigidTransform& b) {
+  return RigidTransform::translationError(a, b) <= 0.05 && RigidTransform::rotationErrorDeg(a, b) <= 0.2;
+}
+
 /// Station j is where `poses` puts it relative to i as in `adopted`: the hypothesis moved them
-/// together, so their pair says nothing about it (within 5 cm and 0.2 deg, the drop thresholds).
+/// together, so their pair says nothing about it.
 bool movedTogether(std::size_t i, std::size_t j, const std::vector<std::optional<RigidTransform>>& poses,
                    const std::vector<std::optional<RigidTransform>>& adopted) {
   if (!adopted[i] || !adopted[j]) return false;
-  const RigidTransform now = poses[i]->inverse() * *poses[j], before = adopted[i]->inverse() * *adopted[j];
-  return RigidTransform::translationError(now, before) <= 0.05 && RigidTransform::rotationErrorDeg(now, before) <= 0.2;
+  return samePlacement(poses[i]->inverse() * *poses[j], adopted[i]->inverse() * *adopted[j]);
 }
 
 /// Station i placed by `poses` against the observers, each where `poses` puts it, but those the
@@ -136,8 +140,9 @@ struct Judge {
   const FreeSpaceJudgeParams& params;
   FreeSpaceTester& tester;
 
-  JudgedPlacement placement(std::string source, std::optional<std::size_t> h, FreeSpaceTally t) const {
-    JudgedPlacement p{std::move(source), h, t};
+  JudgedPlacement placement(std::string source, std::optional<std::size_t> h, const RigidTransform& pose,
+                            FreeSpaceTally t) const {
+    JudgedPlacement p{std::move(source), h, pose, t};
     p.judged = t.visible >= std::size_t(params.min_visible);
     p.clean = p.judged && t.ratio() <= params.clean_ratio;
     return p;
@@ -152,12 +157,13 @@ struct Judge {
     StationJudgement j;
     j.station = i;
     j.round = round;
-    j.placements.push_back(placement("adopted", std::nullopt, tallyOf(tester, i, poses, poses, {i}, observers, -1)));
+    j.placements.push_back(
+        placement("adopted", std::nullopt, *poses[i], tallyOf(tester, i, poses, poses, {i}, observers, -1)));
     for (std::size_t h = 0; h < hypotheses.size(); ++h) {
       const PlacementHypothesis& hyp = hypotheses[h];
-      if (std::find(hyp.moved.begin(), hyp.moved.end(), i) != hyp.moved.end())
-        j.placements.push_back(
-            placement(hyp.source, h, tallyOf(tester, i, hyp.poses, poses, hyp.moved, observers, int(h))));
+      if (std::find(hyp.moved.begin(), hyp.moved.end(), i) != hyp.moved.end() && hyp.poses[i])
+        j.placements.push_back(placement(hyp.source, h, *hyp.poses[i],
+                                         tallyOf(tester, i, hyp.poses, poses, hyp.moved, observers, int(h))));
     }
     decide(j);
     return j;
@@ -175,17 +181,22 @@ struct Judge {
                            : "no placement of it is clean (adopted: " + percent(p[0].tally) + ")";
       return;
     }
-    for (std::size_t k = 0; k < p.size(); ++k)
-      if (k != best && !refutes(p[best], p[k])) {
+    std::size_t refuted = 0;
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      if (k == best || samePlacement(p[k].pose, p[best].pose)) continue;
+      if (!refutes(p[best], p[k])) {
         j.why = "the free space does not tell " + p[best].source + " (" + percent(p[best].tally) + ") from " +
                 p[k].source + " (" + (p[k].judged ? percent(p[k].tally) : "not seen enough") + ")";
         return;
       }
+      ++refuted;
+    }
+    if (samePlacement(p[best].pose, p[0].pose)) best = 0;  // the adopted placement, offered again
     j.decided = best;
     j.settled = best == 0;
     j.why = (best == 0 ? "settled by the free space: its placement is clean (" : "placed by the free space at " +
                                                                                     p[best].source + " (") +
-            percent(p[best].tally) + ") and refutes " + std::to_string(p.size() - 1) + " other placement(s)";
+            percent(p[best].tally) + ") and refutes " + std::to_string(refuted) + " placement(s) elsewhere";
   }
 };
 

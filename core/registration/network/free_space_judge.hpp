@@ -25,7 +25,9 @@
 //  - clean when at most `clean_ratio` of them lie in the other side's free space;
 //  - refuted by another placement when at least `refute_ratio` of its points, and at least
 //    `decisive_factor` times that placement's share, lie in the free space.
-// The station is decided when one placement is clean and refutes every other (all judged):
+// The station is decided when one placement is clean and refutes every other (all judged) that
+// places it elsewhere (beyond 5 cm or 0.2 deg, the drop thresholds: a dropped link taken as true
+// and a copy of the BIM often place it alike):
 //  - the adopted one: the station is settled, no longer ambiguous;
 //  - a copy the BIM offered: the station is to be placed there (its link to the BIM is taken
 //    as true and the network adjusted again, network_registration.cpp).
@@ -97,6 +99,7 @@ struct PlacementHypothesis {
 struct JudgedPlacement {
   std::string source;          ///< "adopted", or the hypothesis' source
   std::optional<std::size_t> hypothesis;  ///< index into the hypotheses; absent: the adopted placement
+  RigidTransform pose;         ///< the station's pose under it
   FreeSpaceTally tally;
   bool judged = false;         ///< at least min_visible visible points
   bool clean = false;

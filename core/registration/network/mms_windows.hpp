@@ -10,8 +10,9 @@
 //    `sigma_rotation_deg`): where the trajectory drifted, the adjustment bends it at that
 //    weight, and a drift beyond the drop thresholds drops the link (the windows are then placed
 //    by their own links);
-//  - each window is registered onto the BIM (reason "model") and with each static station
-//    (reason "mms": openings seen from inside and outside, the 2023 paper's indoor/outdoor case);
+//  - each window is registered onto the BIM (reason "model") and, with station_pairs, with each
+//    static station (reason "mms": openings seen from inside and outside, the 2023 paper's
+//    indoor/outdoor case);
 //  - windows get no layout or sequence pairs among themselves.
 #include <string>
 #include <vector>

@@ -103,14 +103,30 @@ TEST(FreeSpaceJudge, ChoosesTheRightPlacementOverAnAdoptedTwin) {
 
 TEST(FreeSpaceJudge, TwoCleanPlacementsDecideNothing) {
   const TwinRooms& t = twinRooms();
-  // The same placement offered twice (a copy a millimetre off): neither refutes the other.
-  auto near = twinOf(t.truth, RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.001, 0, 0)), "a copy");
-  const auto j = judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {near}, FreeSpaceJudgeParams{}, VisibilityParams{});
+  // 8 cm off: another placement (beyond the 5 cm drop threshold), yet within the free-space
+  // margin (10 cm + 1 % of the range): the free space cannot refute it.
+  auto off = twinOf(t.truth, RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.08, 0, 0)), "a copy");
+  const auto j = judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {off}, FreeSpaceJudgeParams{}, VisibilityParams{});
   ASSERT_EQ(j.stations.size(), 1u);
+  EXPECT_TRUE(j.stations[0].placements[1].clean) << j.stations[0].why;
   EXPECT_FALSE(j.stations[0].decided);
   EXPECT_FALSE(j.stations[0].settled);
   EXPECT_TRUE(j.settled.empty() && j.chosen.empty());
   EXPECT_NE(j.stations[0].why.find("does not tell"), std::string::npos) << j.stations[0].why;
+}
+
+TEST(FreeSpaceJudge, TheSamePlacementOfferedAgainIsNoCompetitor) {
+  const TwinRooms& t = twinRooms();
+  // A BIM copy 1 mm from the adopted placement, beside the twin: the station is settled.
+  auto same = twinOf(t.truth, RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.001, 0, 0)), "copy 1");
+  same.bim_candidate = 0;
+  const auto j = judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {same, twinOf(t.truth, t.twin, "the twin")},
+                                  FreeSpaceJudgeParams{}, VisibilityParams{});
+  ASSERT_EQ(j.stations.size(), 1u);
+  EXPECT_TRUE(j.stations[0].settled) << j.stations[0].why;
+  EXPECT_EQ(j.settled, std::vector<std::size_t>{1});
+  EXPECT_TRUE(j.chosen.empty()) << "the adopted placement is kept, nothing is taken as true";
+  EXPECT_NE(j.stations[0].why.find("refutes 1 placement(s) elsewhere"), std::string::npos) << j.stations[0].why;
 }
 
 TEST(FreeSpaceJudge, NoPlacedStationSeesIt) {

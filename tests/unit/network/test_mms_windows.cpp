@@ -105,7 +105,9 @@ TEST(MmsWindows, WindowsArePairedWithTheModelAndTheStaticStations) {
   model.name = "model:m";
   model.is_model = true;
   st.push_back(std::move(model));
-  const auto pairs = mmsPairs(st, MmsWindowParams{});
+  MmsWindowParams both;
+  both.station_pairs = true;
+  const auto pairs = mmsPairs(st, both);
   // 2 windows x (the model + 2 static stations)
   ASSERT_EQ(pairs.size(), 6u);
   int with_model = 0, with_stations = 0;
@@ -122,9 +124,7 @@ TEST(MmsWindows, WindowsArePairedWithTheModelAndTheStaticStations) {
   }
   EXPECT_EQ(with_model, 2);
   EXPECT_EQ(with_stations, 4);
-  MmsWindowParams only_model;
-  only_model.station_pairs = false;
-  EXPECT_EQ(mmsPairs(st, only_model).size(), 2u);
+  EXPECT_EQ(mmsPairs(st, MmsWindowParams{}).size(), 2u) << "by default, with the model only";
 }
 
 }  // namespace
