@@ -67,7 +67,11 @@ StationRangeImages::StationRangeImages(const PointCloud& cloud,
   chooseBins(cloud, points, station_of);
   reach_.assign(stations_.size(), 0.0);
   boxes_.assign(stations_.size(), Bounds{});
-  keys_.assign(tableSize(points.size()), kEmpty);
+  // A bin holds one range: the table needs no more slots than the stations have bins (a static
+  // station at 0.5 deg: 720 x 360), however many points fill them.
+  std::size_t bins = 0;
+  for (const auto& g : grids_) bins += std::size_t(g.rows) * std::size_t(g.columns);
+  keys_.assign(tableSize(std::min(points.size(), bins)), kEmpty);
   ranges_.assign(keys_.size(), 0.0f);
   fill(cloud, points, station_of);
 }

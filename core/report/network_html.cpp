@@ -137,7 +137,10 @@ void stations(std::ostringstream& h, const json& r) {
     } else {
       h << "<td></td>";
     }
-    h << "<td>" << esc(s.value("ambiguous_why", std::string())) << "</td></tr>";
+    std::string why = s.value("ambiguous_why", std::string());
+    if (s.contains("free_space"))  // what the free space of the confirmed stations decided
+      why += (why.empty() ? "" : "; ") + s["free_space"]["why"].get<std::string>();
+    h << "<td>" << esc(why) << "</td></tr>";
   }
   h << "</table>\n";
 }

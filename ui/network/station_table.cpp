@@ -64,6 +64,10 @@ void StationTable::fillRow(int row, const nlohmann::json& station, const Network
   QTableWidgetItem* state = cell(stationState(session, std::size_t(row)));
   for (const char* why : {"ambiguous_why", "unplaced_why"})
     if (station.contains(why)) state->setToolTip(QString::fromStdString(station[why].get<std::string>()));
+  if (station.contains("free_space")) {  // what the free space of the confirmed stations decided
+    const QString judged = QString::fromStdString(station["free_space"]["why"].get<std::string>());
+    state->setToolTip(state->toolTip().isEmpty() ? judged : state->toolTip() + "\n" + judged);
+  }
   if (station.contains("placed_by"))
     state->setToolTip(tr("Placed by its own control points: no kept link joins it to the reference"));
   else if (station.value("settled_by_control", false))
