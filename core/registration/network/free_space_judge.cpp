@@ -10,31 +10,9 @@
 
 #include "common/stopwatch.hpp"
 #include "quality/station_range_images.hpp"
+#include "registration/network/robust_adjustment.hpp"
 
 namespace plumb {
-
-const ParamSchema<FreeSpaceJudgeParams>& FreeSpaceJudgeParams::schema() {
-  using P = FreeSpaceJudgeParams;
-  static const auto s =
-      ParamSchema<P>("free-space-judge")
-          .boolean(&P::enabled, "enabled", "Judge ambiguous stations by free space",
-                   "Settle ambiguous stations whose placement the placed stations' free space confirms")
-          .real(&P::clean_ratio, "clean-ratio", "Clean ratio", "", 0.0, 0.2,
-                "A placement is clean when at most this share of its visible points lies in others' free space", true)
-          .real(&P::refute_ratio, "refute-ratio", "Refute ratio", "", 0.0, 1.0,
-                "An alternative placement is refuted when at least this share of its visible points contradicts", true)
-          .real(&P::decisive_factor, "decisive-factor", "Decisive factor", "", 1.0, 1000.0,
-                "... and at least this many times the adopted placement's share", true)
-          .integer(&P::min_visible, "min-visible", "Min visible points", "", 1, 10'000'000,
-                   "Fewer visible tested points: no evidence", true)
-          .integer(&P::test_points, "test-points", "Test points", "", 100, 1'000'000,
-                   "Points of each station tested against each other station", true)
-          .real(&P::box_margin, "box-margin", "Box margin", "m", 0.0, 100.0,
-                "Stations whose placed boxes come this close are tested against each other", true)
-          .integer(&P::max_rounds, "max-rounds", "Max adjustments again", "", 0, 10,
-                   "Adjustments again after the judge placed stations elsewhere, at most", true);
-  return s;
-}
 
 namespace {
 
@@ -99,33 +77,12 @@ class FreeSpaceTester {
   std::map<std::tuple<std::size_t, std::size_t, int>, FreeSpaceTally> cache_;
 };
 
-/// Two poses of a station are one placement within 5 cm and 0.2 deg (the drop thresholds).
-bool samePlacement(const RigidTransform& a, const RigidTransform& b) {
-  return RigidTransform::translationError(a, b) <= 0.05 && RigidTransform::rotationErrorDeg(a, b) <= 0.2;
-}
-
 /// Station j is where `poses` puts it relative to i as in `adopted`: the hypothesis moved them
 /// together, so their pair says nothing about it.
 bool movedTogether(std::size_t i, std::size_t j, const std::vector<std::optional<RigidTransform>>& poses,
-                   const std::vector<std::optional<RigidTransform>>& adopted) {
+                   const std::vector<std::optional<RigidTransform>>& adopted, const PoseGraphParams& graph) {
   if (!adopted[i] || !adopted[j]) return false;
-  return samePlacement(poses[i]->inverse() * *poses[j], adopted[i]->inverse() * *adopted[j]);
-}
-
-/// Station i placed by `poses` against the observers, each where `poses` puts it, but those the
-/// hypothesis moved together with i (`moved`: the stations it places differently from `adopted`).
-FreeSpaceTally tallyOf(FreeSpaceTester& tester, std::size_t i, const std::vector<std::optional<RigidTransform>>& poses,
-                       const std::vector<std::optional<RigidTransform>>& adopted,
-                       const std::vector<std::size_t>& moved, const std::set<std::size_t>& observers, int key) {
-  FreeSpaceTally t;
-  if (!poses[i]) return t;
-  for (std::size_t j : observers) {
-    if (j == i || !poses[j]) continue;
-    const bool moved_j = std::find(moved.begin(), moved.end(), j) != moved.end();
-    if (moved_j && movedTogether(i, j, poses, adopted)) continue;
-    t.add(tester.pair(i, *poses[i], j, *poses[j], key));
-  }
-  return t;
+  return samePlacement(poses[i]->inverse() * *poses[j], adopted[i]->inverse() * *adopted[j], graph);
 }
 
 std::string percent(const FreeSpaceTally& t) {
@@ -138,7 +95,24 @@ struct Judge {
   const std::vector<std::optional<RigidTransform>>& poses;
   const std::vector<PlacementHypothesis>& hypotheses;
   const FreeSpaceJudgeParams& params;
+  const PoseGraphParams& graph;
   FreeSpaceTester& tester;
+
+  /// Station i placed by `at` against the observers, each where `at` puts it, but those the
+  /// hypothesis moved together with i (`moved`: the stations it places differently from the
+  /// adopted solution).
+  FreeSpaceTally tallyOf(std::size_t i, const std::vector<std::optional<RigidTransform>>& at,
+                         const std::vector<std::size_t>& moved, const std::set<std::size_t>& observers,
+                         int key) const {
+    FreeSpaceTally t;
+    for (std::size_t j : observers) {
+      if (j == i || !at[j]) continue;
+      const bool moved_j = std::find(moved.begin(), moved.end(), j) != moved.end();
+      if (moved_j && movedTogether(i, j, at, poses, graph)) continue;
+      t.add(tester.pair(i, *at[i], j, *at[j], key));
+    }
+    return t;
+  }
 
   JudgedPlacement placement(std::string source, std::optional<std::size_t> h, const RigidTransform& pose,
                             FreeSpaceTally t) const {
@@ -158,12 +132,12 @@ struct Judge {
     j.station = i;
     j.round = round;
     j.placements.push_back(
-        placement("adopted", std::nullopt, *poses[i], tallyOf(tester, i, poses, poses, {i}, observers, -1)));
+        placement("adopted", std::nullopt, *poses[i], tallyOf(i, poses, {i}, observers, -1)));
     for (std::size_t h = 0; h < hypotheses.size(); ++h) {
       const PlacementHypothesis& hyp = hypotheses[h];
       if (std::find(hyp.moved.begin(), hyp.moved.end(), i) != hyp.moved.end() && hyp.poses[i])
         j.placements.push_back(placement(hyp.source, h, *hyp.poses[i],
-                                         tallyOf(tester, i, hyp.poses, poses, hyp.moved, observers, int(h))));
+                                         tallyOf(i, hyp.poses, hyp.moved, observers, int(h))));
     }
     decide(j);
     return j;
@@ -183,7 +157,7 @@ struct Judge {
     }
     std::size_t refuted = 0;
     for (std::size_t k = 0; k < p.size(); ++k) {
-      if (k == best || samePlacement(p[k].pose, p[best].pose)) continue;
+      if (k == best || samePlacement(p[k].pose, p[best].pose, graph)) continue;
       if (!refutes(p[best], p[k])) {
         j.why = "the free space does not tell " + p[best].source + " (" + percent(p[best].tally) + ") from " +
                 p[k].source + " (" + (p[k].judged ? percent(p[k].tally) : "not seen enough") + ")";
@@ -191,7 +165,7 @@ struct Judge {
       }
       ++refuted;
     }
-    if (samePlacement(p[best].pose, p[0].pose)) best = 0;  // the adopted placement, offered again
+    if (samePlacement(p[best].pose, p[0].pose, graph)) best = 0;  // the adopted placement, offered again
     j.decided = best;
     j.settled = best == 0;
     j.why = (best == 0 ? "settled by the free space: its placement is clean (" : "placed by the free space at " +
@@ -207,13 +181,14 @@ FreeSpaceJudgement judgeByFreeSpace(const std::vector<Station>& stations,
                                     const std::vector<std::size_t>& ambiguous,
                                     const std::vector<std::size_t>& confirmed,
                                     const std::vector<PlacementHypothesis>& hypotheses,
-                                    const FreeSpaceJudgeParams& params, const VisibilityParams& visibility) {
+                                    const FreeSpaceJudgeParams& params, const PoseGraphParams& graph,
+                                    const VisibilityParams& visibility) {
   FreeSpaceJudgement out;
   if (!params.enabled || ambiguous.empty()) return out;
   const auto t0 = std::chrono::steady_clock::now();
   out.ran = true;
   FreeSpaceTester tester(stations, params, visibility);
-  const Judge judge{poses, hypotheses, params, tester};
+  const Judge judge{poses, hypotheses, params, graph, tester};
   std::set<std::size_t> observers, pending;
   for (std::size_t i = 0; i < stations.size(); ++i) {
     if (stations[i].is_model || !poses[i]) continue;

@@ -26,7 +26,7 @@
 //  - refuted by another placement when at least `refute_ratio` of its points, and at least
 //    `decisive_factor` times that placement's share, lie in the free space.
 // The station is decided when one placement is clean and refutes every other (all judged) that
-// places it elsewhere (beyond 5 cm or 0.2 deg, the drop thresholds: a dropped link taken as true
+// places it elsewhere (beyond the drop thresholds, samePlacement: a dropped link taken as true
 // and a copy of the BIM often place it alike):
 //  - the adopted one: the station is settled, no longer ambiguous;
 //  - a copy the BIM offered: the station is to be placed there (its link to the BIM is taken
@@ -38,39 +38,12 @@
 #include <string>
 #include <vector>
 
-#include "common/params.hpp"
 #include "model/rigid_transform.hpp"
 #include "quality/visibility_evidence.hpp"
+#include "registration/network/network_params.hpp"
 #include "registration/network/station.hpp"
 
 namespace plumb {
-
-struct FreeSpaceJudgeParams {
-  /// Judge ambiguous stations by the free space of the placed stations.
-  bool enabled = true;
-  /// A placement is clean when at most this share of its visible tested points lies in the
-  /// other stations' free space, [0, 0.2]. Measured on office-floor with its BIM (docs/NETWORK.md):
-  /// right placements 0.0000, wrong ones (a doorway station turned onto its twin across the
-  /// corridor) 0.0096 to 0.0205; 0.004 is 2.4 times below the least wrong one. Real right pairs
-  /// reach 0.010-0.016 (docs/VERDICT_SUITES.md): there the judge decides nothing, and the
-  /// stations stay ambiguous.
-  double clean_ratio = 0.004;
-  /// Another placement is refuted when at least this share of its visible points contradicts
-  /// the observers, [0, 1] ...
-  double refute_ratio = 0.005;
-  /// ... and at least this many times the clean placement's share, [1, 1000].
-  double decisive_factor = 3.0;
-  /// Fewer visible tested points than this: the placement is not judged, [1, 1e7].
-  int min_visible = 2000;
-  /// Points of each station tested against each other station (regular sample), [100, 1e6].
-  int test_points = 8000;
-  /// Stations whose placed boxes come within this distance are tested against each other, m,
-  /// [0, 100].
-  double box_margin = 0.5;
-  /// Adjustments again after the judge placed stations at the BIM's copies, at most, [0, 10].
-  int max_rounds = 3;
-  static const ParamSchema<FreeSpaceJudgeParams>& schema();
-};
 
 /// Tested points visible to the other side, and those of them in its free space.
 struct FreeSpaceTally {
@@ -125,13 +98,15 @@ struct FreeSpaceJudgement {
 };
 
 /// Judges the `ambiguous` stations (sorted) of the adopted `poses` against the `hypotheses`,
-/// observed by the `confirmed` stations (sorted; the placed, not ambiguous ones are used). The
-/// model node, if any, is neither judged nor an observer.
+/// observed by the `confirmed` stations (sorted; the placed, not ambiguous ones are used). Two
+/// poses within `graph`'s drop thresholds are one placement. The model node, if any, is neither
+/// judged nor an observer.
 FreeSpaceJudgement judgeByFreeSpace(const std::vector<Station>& stations,
                                     const std::vector<std::optional<RigidTransform>>& poses,
                                     const std::vector<std::size_t>& ambiguous,
                                     const std::vector<std::size_t>& confirmed,
                                     const std::vector<PlacementHypothesis>& hypotheses,
-                                    const FreeSpaceJudgeParams& params, const VisibilityParams& visibility);
+                                    const FreeSpaceJudgeParams& params, const PoseGraphParams& graph,
+                                    const VisibilityParams& visibility);
 
 }  // namespace plumb

@@ -84,6 +84,29 @@ const ParamSchema<FinalRefinementParams>& FinalRefinementParams::schema() {
   return s;
 }
 
+const ParamSchema<FreeSpaceJudgeParams>& FreeSpaceJudgeParams::schema() {
+  using P = FreeSpaceJudgeParams;
+  static const auto s =
+      ParamSchema<P>("free-space-judge")
+          .boolean(&P::enabled, "enabled", "Judge ambiguous stations by free space",
+                   "Settle ambiguous stations whose placement the placed stations' free space confirms")
+          .real(&P::clean_ratio, "clean-ratio", "Clean ratio", "", 0.0, 0.2,
+                "A placement is clean when at most this share of its visible points lies in others' free space", true)
+          .real(&P::refute_ratio, "refute-ratio", "Refute ratio", "", 0.0, 1.0,
+                "An alternative placement is refuted when at least this share of its visible points contradicts", true)
+          .real(&P::decisive_factor, "decisive-factor", "Decisive factor", "", 1.0, 1000.0,
+                "... and at least this many times the adopted placement's share", true)
+          .integer(&P::min_visible, "min-visible", "Min visible points", "", 1, 10'000'000,
+                   "Fewer visible tested points: no evidence", true)
+          .integer(&P::test_points, "test-points", "Test points", "", 100, 1'000'000,
+                   "Points of each station tested against each other station", true)
+          .real(&P::box_margin, "box-margin", "Box margin", "m", 0.0, 100.0,
+                "Stations whose placed boxes come this close are tested against each other", true)
+          .integer(&P::max_rounds, "max-rounds", "Max adjustments again", "", 0, 10,
+                   "Adjustments again after the judge placed stations elsewhere, at most", true);
+  return s;
+}
+
 const ParamSchema<MmsWindowParams>& MmsWindowParams::schema() {
   using P = MmsWindowParams;
   static const auto s =

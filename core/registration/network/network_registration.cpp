@@ -151,9 +151,7 @@ std::vector<PlacementHypothesis> ambiguityHypotheses(const std::vector<Station>&
     if (l.b != model || l.accepted || !poses[l.a]) continue;
     for (std::size_t k = 0; k < l.model_candidates.size(); ++k) {
       const RigidTransform pose = *poses[model] * l.model_candidates[k];
-      if (RigidTransform::translationError(pose, *poses[l.a]) <= graph.drop_translation &&
-          RigidTransform::rotationErrorDeg(pose, *poses[l.a]) <= graph.drop_rotation)
-        continue;
+      if (samePlacement(pose, *poses[l.a], graph)) continue;
       PlacementHypothesis copy{"the BIM's placement " + std::to_string(k + 1) + " of " + stations[l.a].name, poses,
                                {l.a}, std::nullopt, k};
       copy.poses[l.a] = pose;
@@ -180,7 +178,7 @@ void settleByFreeSpace(const std::vector<Station>& stations, const std::vector<A
                        const NetworkParams& params, NetworkResult& out) {
   out.free_space = judgeByFreeSpace(stations, out.adjustment.poses, out.ambiguous(), confirmedStations(links, out),
                                     ambiguityHypotheses(stations, links, params.graph, out), params.free_space,
-                                    params.link.visibility);
+                                    params.graph, params.link.visibility);
   settle(out, out.free_space.settled);
 }
 

@@ -11,6 +11,7 @@
 #include "common/progress.hpp"
 #include "registration/network/competing_placements.hpp"
 #include "registration/network/final_refinement.hpp"
+#include "registration/network/free_space_judge.hpp"
 #include "registration/network/georeference.hpp"
 #include "registration/network/link.hpp"
 #include "registration/network/one_loop_drops.hpp"

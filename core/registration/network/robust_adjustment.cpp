@@ -131,6 +131,11 @@ bool beyondFlag(const EdgeResidual& r, const PoseGraphParams& p) {
   return r.translation > p.flag_translation || r.rotation_deg > p.flag_rotation;
 }
 
+bool samePlacement(const RigidTransform& a, const RigidTransform& b, const PoseGraphParams& p) {
+  return RigidTransform::translationError(a, b) <= p.drop_translation &&
+         RigidTransform::rotationErrorDeg(a, b) <= p.drop_rotation;
+}
+
 NetworkAdjustment adjustNetwork(std::size_t stations, const std::vector<AdjustmentLink>& links,
                                 std::size_t reference, const RigidTransform& reference_pose,
                                 const PoseGraphParams& params, const std::vector<std::size_t>& forced_links,

@@ -59,6 +59,9 @@ PoseGraphEdge poseGraphEdge(const AdjustmentLink& link);
 /// A link's residual beyond the flag thresholds: the link disagrees with the network.
 bool beyondFlag(const EdgeResidual& residual, const PoseGraphParams& params);
 
+/// Two poses of one station are the same placement: within the drop thresholds of each other.
+bool samePlacement(const RigidTransform& a, const RigidTransform& b, const PoseGraphParams& params);
+
 /// Stations held at a given pose (station -> reference frame): the surveyor locked them.
 using LockedStations = std::map<std::size_t, RigidTransform>;
 

@@ -60,7 +60,7 @@ PlacementHypothesis twinOf(const std::vector<std::optional<RigidTransform>>& pos
 TEST(FreeSpaceJudge, SettlesARightPlacementWhoseTwinTheFurnitureRefutes) {
   const TwinRooms& t = twinRooms();
   const auto j = judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {twinOf(t.truth, t.twin, "the twin")},
-                                  FreeSpaceJudgeParams{}, VisibilityParams{});
+                                  FreeSpaceJudgeParams{}, PoseGraphParams{}, VisibilityParams{});
   ASSERT_TRUE(j.ran);
   ASSERT_EQ(j.stations.size(), 1u);
   const StationJudgement& s = j.stations[0];
@@ -86,7 +86,7 @@ TEST(FreeSpaceJudge, ChoosesTheRightPlacementOverAnAdoptedTwin) {
   adopted[1] = t.twin * *t.truth[1];
   auto truth = twinOf(adopted, t.twin.inverse(), "the BIM's placement 2");
   truth.bim_candidate = 1;
-  const auto j = judgeByFreeSpace(t.stations, adopted, {1}, {0, 2}, {truth}, FreeSpaceJudgeParams{}, VisibilityParams{});
+  const auto j = judgeByFreeSpace(t.stations, adopted, {1}, {0, 2}, {truth}, FreeSpaceJudgeParams{}, PoseGraphParams{}, VisibilityParams{});
   ASSERT_EQ(j.stations.size(), 1u);
   const StationJudgement& s = j.stations[0];
   EXPECT_FALSE(s.placements[0].clean);
@@ -106,7 +106,7 @@ TEST(FreeSpaceJudge, TwoCleanPlacementsDecideNothing) {
   // 8 cm off: another placement (beyond the 5 cm drop threshold), yet within the free-space
   // margin (10 cm + 1 % of the range): the free space cannot refute it.
   auto off = twinOf(t.truth, RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.08, 0, 0)), "a copy");
-  const auto j = judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {off}, FreeSpaceJudgeParams{}, VisibilityParams{});
+  const auto j = judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {off}, FreeSpaceJudgeParams{}, PoseGraphParams{}, VisibilityParams{});
   ASSERT_EQ(j.stations.size(), 1u);
   EXPECT_TRUE(j.stations[0].placements[1].clean) << j.stations[0].why;
   EXPECT_FALSE(j.stations[0].decided);
@@ -121,7 +121,7 @@ TEST(FreeSpaceJudge, TheSamePlacementOfferedAgainIsNoCompetitor) {
   auto same = twinOf(t.truth, RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.001, 0, 0)), "copy 1");
   same.bim_candidate = 0;
   const auto j = judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {same, twinOf(t.truth, t.twin, "the twin")},
-                                  FreeSpaceJudgeParams{}, VisibilityParams{});
+                                  FreeSpaceJudgeParams{}, PoseGraphParams{}, VisibilityParams{});
   ASSERT_EQ(j.stations.size(), 1u);
   EXPECT_TRUE(j.stations[0].settled) << j.stations[0].why;
   EXPECT_EQ(j.settled, std::vector<std::size_t>{1});
@@ -133,7 +133,7 @@ TEST(FreeSpaceJudge, NoPlacedStationSeesIt) {
   const TwinRooms& t = twinRooms();
   auto adopted = t.truth;  // station 1 placed 500 m east, where no station saw
   adopted[1] = RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(500, 0, 0)) * *t.truth[1];
-  const auto j = judgeByFreeSpace(t.stations, adopted, {1}, {0, 2}, {}, FreeSpaceJudgeParams{}, VisibilityParams{});
+  const auto j = judgeByFreeSpace(t.stations, adopted, {1}, {0, 2}, {}, FreeSpaceJudgeParams{}, PoseGraphParams{}, VisibilityParams{});
   ASSERT_EQ(j.stations.size(), 1u);
   EXPECT_FALSE(j.stations[0].settled);
   EXPECT_FALSE(j.stations[0].placements[0].judged);
@@ -144,7 +144,7 @@ TEST(FreeSpaceJudge, NoPlacedStationSeesIt) {
 TEST(FreeSpaceJudge, OnlyConfirmedStationsObserve) {
   const TwinRooms& t = twinRooms();  // stations 0 and 2 placed, but nothing outside the links confirms them
   const auto j = judgeByFreeSpace(t.stations, t.truth, {1}, {}, {twinOf(t.truth, t.twin, "the twin")},
-                                  FreeSpaceJudgeParams{}, VisibilityParams{});
+                                  FreeSpaceJudgeParams{}, PoseGraphParams{}, VisibilityParams{});
   ASSERT_EQ(j.stations.size(), 1u);
   EXPECT_FALSE(j.stations[0].placements[0].judged);
   EXPECT_FALSE(j.stations[0].settled);
@@ -199,8 +199,8 @@ TEST(FreeSpaceJudge, DisabledOrNothingAmbiguousJudgesNothing) {
   const TwinRooms& t = twinRooms();
   FreeSpaceJudgeParams off;
   off.enabled = false;
-  EXPECT_FALSE(judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {}, off, VisibilityParams{}).ran);
-  EXPECT_FALSE(judgeByFreeSpace(t.stations, t.truth, {}, {0, 2}, {}, FreeSpaceJudgeParams{}, VisibilityParams{}).ran);
+  EXPECT_FALSE(judgeByFreeSpace(t.stations, t.truth, {1}, {0, 2}, {}, off, PoseGraphParams{}, VisibilityParams{}).ran);
+  EXPECT_FALSE(judgeByFreeSpace(t.stations, t.truth, {}, {0, 2}, {}, FreeSpaceJudgeParams{}, PoseGraphParams{}, VisibilityParams{}).ran);
 }
 
 }  // namespace
