@@ -138,6 +138,7 @@ void stations(std::ostringstream& h, const json& r) {
       h << "<td></td>";
     }
     std::string why = s.value("ambiguous_why", std::string());
+    if (s.value("unchecked", false)) why = "placed by one link no loop checks";
     if (s.contains("free_space"))  // what the free space of the confirmed stations decided
       why += (why.empty() ? "" : "; ") + s["free_space"]["why"].get<std::string>();
     h << "<td>" << esc(why) << "</td></tr>";

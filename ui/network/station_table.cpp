@@ -68,6 +68,10 @@ void StationTable::fillRow(int row, const nlohmann::json& station, const Network
     const QString judged = QString::fromStdString(station["free_space"]["why"].get<std::string>());
     state->setToolTip(state->toolTip().isEmpty() ? judged : state->toolTip() + "\n" + judged);
   }
+  if (station.value("unchecked", false) && !(station.contains("free_space") && station["free_space"]["settled"].get<bool>()))
+    state->setToolTip(tr("Placed by one link no loop checks; the free space of the confirmed stations did not confirm "
+                         "it: check it visually") +
+                      (state->toolTip().isEmpty() ? QString() : "\n" + state->toolTip()));
   if (station.contains("placed_by"))
     state->setToolTip(tr("Placed by its own control points: no kept link joins it to the reference"));
   else if (station.value("settled_by_control", false))

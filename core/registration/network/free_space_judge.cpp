@@ -215,6 +215,7 @@ FreeSpaceJudgement judgeByFreeSpace(const std::vector<Station>& stations,
     }
   }
   std::sort(out.settled.begin(), out.settled.end());
+  out.observers.assign(observers.begin(), observers.end());
   for (auto& [i, j] : last) out.stations.push_back(std::move(j));
   out.seconds = secondsSince(t0);
   return out;

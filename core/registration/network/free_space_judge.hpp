@@ -66,6 +66,9 @@ struct PlacementHypothesis {
   /// placement among its model link's candidates, Link::model_candidates).
   std::optional<std::size_t> link;
   std::optional<std::size_t> bim_candidate;
+  /// The link's transform under the hypothesis (b's frame -> a's frame), when it is not the
+  /// link's own: a competing placement of an ambiguous link (unchecked_stations.hpp).
+  std::optional<RigidTransform> link_transform;
 };
 
 /// A placement of the judged station against the observers.
@@ -94,11 +97,14 @@ struct FreeSpaceJudgement {
   std::vector<std::size_t> settled;        ///< sorted
   /// Stations the free space places elsewhere than adopted: the hypothesis to take as true.
   std::vector<std::pair<std::size_t, PlacementHypothesis>> chosen;
+  /// The observers of the last round: the confirmed stations and the settled ones, sorted.
+  std::vector<std::size_t> observers;
   double seconds = 0.0;
 };
 
-/// Judges the `ambiguous` stations (sorted) of the adopted `poses` against the `hypotheses`,
-/// observed by the `confirmed` stations (sorted; the placed, not ambiguous ones are used). Two
+/// Judges the `ambiguous` stations (sorted; with the unchecked ones, unchecked_stations.hpp) of
+/// the adopted `poses` against the `hypotheses`, observed by the `confirmed` stations (sorted;
+/// the placed ones not judged are used). Two
 /// poses within `graph`'s drop thresholds are one placement. The model node, if any, is neither
 /// judged nor an observer.
 FreeSpaceJudgement judgeByFreeSpace(const std::vector<Station>& stations,

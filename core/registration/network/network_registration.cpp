@@ -9,6 +9,7 @@
 #include "registration/network/control_parts.hpp"
 #include "registration/network/footprint_pairs.hpp"
 #include "registration/network/mms_windows.hpp"
+#include "registration/network/unchecked_stations.hpp"
 
 namespace plumb {
 namespace {
@@ -132,9 +133,10 @@ void settleByControl(NetworkResult& out) {
   if (out.georeference && out.georeference->done) settle(out, out.georeference->settled);
 }
 
-/// The placements the ambiguous stations could have instead of the adopted ones: each dropped
-/// link taken as true (competing_placements.hpp), and each copy the BIM offered a station whose
-/// registration onto it was ambiguous.
+/// The placements the ambiguous and unchecked stations could have instead of the adopted ones:
+/// each dropped link taken as true (competing_placements.hpp), each copy the BIM offered a
+/// station whose registration onto it was ambiguous or is its unchecked link, and each placement
+/// an unchecked station's ambiguous links offer (uncheckedLinkHypotheses).
 std::vector<PlacementHypothesis> ambiguityHypotheses(const std::vector<Station>& stations,
                                                      const std::vector<AdjustmentLink>& links,
                                                      const PoseGraphParams& graph, const NetworkResult& out) {
@@ -144,11 +146,14 @@ std::vector<PlacementHypothesis> ambiguityHypotheses(const std::vector<Station>&
       h.push_back({"the link " + stations[links[c.link].a].name + " - " + stations[links[c.link].b].name +
                        " taken as true",
                    c.poses, c.stations, out.adjusted[c.link], std::nullopt});
+  const auto unchecked_links = uncheckedLinkHypotheses(stations, out, out.unchecked, graph);
+  h.insert(h.end(), unchecked_links.begin(), unchecked_links.end());
   const auto& poses = out.adjustment.poses;
   if (!stations.back().is_model || !poses.back()) return h;
   const std::size_t model = stations.size() - 1;
   for (const Link& l : out.links) {
-    if (l.b != model || l.accepted || !poses[l.a]) continue;
+    if (l.b != model || !poses[l.a]) continue;
+    if (l.accepted && !std::binary_search(out.unchecked.begin(), out.unchecked.end(), l.a)) continue;
     for (std::size_t k = 0; k < l.model_candidates.size(); ++k) {
       const RigidTransform pose = *poses[model] * l.model_candidates[k];
       if (samePlacement(pose, *poses[l.a], graph)) continue;
@@ -162,24 +167,59 @@ std::vector<PlacementHypothesis> ambiguityHypotheses(const std::vector<Station>&
 }
 
 /// Stations whose placement evidence from outside the links confirms: the reference station, a
-/// kept link to the BIM, or three control points seen (Georeference::settled); sorted.
-std::vector<std::size_t> confirmedStations(const std::vector<AdjustmentLink>& links, const NetworkResult& out) {
+/// kept link to the BIM that is not its only, unchecked link (out.unchecked), or three control
+/// points seen (Georeference::settled); sorted.
+std::vector<std::size_t> confirmedStations(const std::vector<AdjustmentLink>& links, const NetworkResult& out,
+                                           const std::vector<std::size_t>& observed_before) {
   std::vector<std::size_t> confirmed{out.reference};
   for (std::size_t k = 0; k < links.size(); ++k)
     if (links[k].anchor && !out.adjustment.links[k].dropped) confirmed.push_back(std::min(links[k].a, links[k].b));
   std::sort(confirmed.begin(), confirmed.end());
   if (out.georeference && out.georeference->done) sortedUnion(confirmed, out.georeference->settled);
   confirmed.erase(std::unique(confirmed.begin(), confirmed.end()), confirmed.end());
-  return confirmed;
+  std::vector<std::size_t> out_confirmed;
+  std::set_difference(confirmed.begin(), confirmed.end(), out.unchecked.begin(), out.unchecked.end(),
+                      std::back_inserter(out_confirmed));
+  sortedUnion(out_confirmed, observed_before);
+  return out_confirmed;
 }
 
-/// Ambiguous stations the free space of the confirmed ones settles (free_space_judge.hpp).
+/// The stations of out.observed_before the adjustment still places alike; sorted.
+std::vector<std::size_t> stillObserving(const NetworkResult& out, const PoseGraphParams& graph) {
+  std::vector<std::size_t> kept;
+  for (const auto& [i, pose] : out.observed_before)
+    if (const auto& now = out.adjustment.poses[i]; now && samePlacement(*now, pose, graph)) kept.push_back(i);
+  std::sort(kept.begin(), kept.end());
+  return kept;
+}
+
+/// The judge's observers of `out` at their poses (NetworkResult::observed_before of the next
+/// adjustment).
+std::vector<std::pair<std::size_t, RigidTransform>> observersOf(const NetworkResult& out) {
+  std::vector<std::pair<std::size_t, RigidTransform>> o;
+  for (const std::size_t i : out.free_space.observers)
+    if (out.adjustment.poses[i]) o.emplace_back(i, *out.adjustment.poses[i]);
+  return o;
+}
+
+/// Ambiguous and unchecked stations the free space of the confirmed ones settles or places
+/// (free_space_judge.hpp); the unchecked ones whose placement it contests become ambiguous.
 void settleByFreeSpace(const std::vector<Station>& stations, const std::vector<AdjustmentLink>& links,
                        const NetworkParams& params, NetworkResult& out) {
-  out.free_space = judgeByFreeSpace(stations, out.adjustment.poses, out.ambiguous(), confirmedStations(links, out),
+  const std::vector<std::size_t> before = stillObserving(out, params.graph);
+  out.unchecked.clear();
+  if (params.free_space.enabled) {
+    const auto unchecked = uncheckedStations(stations, out);
+    std::set_difference(unchecked.begin(), unchecked.end(), before.begin(), before.end(),
+                        std::back_inserter(out.unchecked));
+  }
+  std::vector<std::size_t> judged = out.ambiguous();
+  sortedUnion(judged, out.unchecked);
+  out.free_space = judgeByFreeSpace(stations, out.adjustment.poses, judged, confirmedStations(links, out, before),
                                     ambiguityHypotheses(stations, links, params.graph, out), params.free_space,
                                     params.graph, params.link.visibility);
   settle(out, out.free_space.settled);
+  out.contested = contestedStations(out.free_space, out.unchecked, params.graph);
 }
 
 void adjust(const std::vector<Station>& stations, const NetworkParams& params, const ControlSurvey* control,
@@ -218,13 +258,15 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, c
 }
 
 /// `links` with what the free-space judge chose taken as true (decision kFreeSpaceDecision,
-/// forced like the surveyor's accepted links): a dropped link, or a station's link to the BIM
-/// at the copy chosen.
+/// forced like the surveyor's accepted links): a dropped link, an ambiguous link at the
+/// placement chosen, or a station's link to the BIM at the copy chosen.
 void takeFreeSpaceChoices(const FreeSpaceJudgement& judged, std::size_t model, std::vector<Link>& links) {
   for (const auto& [station, h] : judged.chosen) {
     if (h.link) {
-      links[*h.link].decision = kFreeSpaceDecision;
-      links[*h.link].accepted = true;
+      Link& l = links[*h.link];
+      l.decision = kFreeSpaceDecision;
+      l.accepted = l.registered = true;
+      if (h.link_transform) l.transform = *h.link_transform;
       continue;
     }
     for (Link& l : links) {
@@ -258,6 +300,7 @@ void refineOnPoints(const std::vector<Station>& stations, const NetworkParams& p
   if (!refined.empty()) {
     NetworkResult again = registrationFacts(out);
     again.links = withRefinedPairs(out.links, refined);
+    again.observed_before = observersOf(out);
     adjust(stations, params, control, again, locked);
     out = std::move(again);
   }
@@ -272,6 +315,7 @@ void adjustAndRefine(const std::vector<Station>& stations, const NetworkParams& 
   for (int round = 0; round < params.free_space.max_rounds && !out.free_space.chosen.empty(); ++round) {
     NetworkResult again = registrationFacts(out);
     again.links = out.links;
+    again.observed_before = observersOf(out);
     takeFreeSpaceChoices(out.free_space, stations.size() - 1, again.links);
     adjust(stations, params, control, again, locked);
     out = std::move(again);
@@ -285,13 +329,15 @@ void adjustAndRefine(const std::vector<Station>& stations, const NetworkParams& 
 bool NetworkResult::isAmbiguous(std::size_t i) const {
   return std::binary_search(competing.ambiguous.begin(), competing.ambiguous.end(), i) ||
          std::binary_search(copies_unchecked.begin(), copies_unchecked.end(), i) ||
-         std::binary_search(one_loop.begin(), one_loop.end(), i);
+         std::binary_search(one_loop.begin(), one_loop.end(), i) ||
+         std::binary_search(contested.begin(), contested.end(), i);
 }
 
 std::vector<std::size_t> NetworkResult::ambiguous() const {
   std::vector<std::size_t> out = competing.ambiguous;
   sortedUnion(out, copies_unchecked);
   sortedUnion(out, one_loop);
+  sortedUnion(out, contested);
   return out;
 }
 

@@ -74,15 +74,23 @@ struct NetworkResult {
   /// The free space of the placed stations judging the ambiguous ones (free_space_judge.hpp):
   /// its settled stations are no longer in the three ambiguous lists.
   FreeSpaceJudgement free_space;
-  /// In competing.ambiguous or copies_unchecked: adjusted, but not placed.
+  /// Stations one link nothing checks places (a bridge), judged by the free space with the
+  /// ambiguous ones (unchecked_stations.hpp), sorted; and those of them whose placement the free
+  /// space contests: ambiguous, not placed.
+  std::vector<std::size_t> unchecked, contested;
+  /// The free-space judge's observers of the adjustment before this one, at their poses then
+  /// (after it took a placement as true, or refined on points): those still placed alike
+  /// observe again (NetworkParams::free_space); not reported.
+  std::vector<std::pair<std::size_t, RigidTransform>> observed_before;
+  /// In competing.ambiguous, copies_unchecked, one_loop or contested: adjusted, but not placed.
   bool isAmbiguous(std::size_t i) const;
-  /// The ambiguous stations, sorted (the union of the three lists).
+  /// The ambiguous stations, sorted (the union of the four lists).
   std::vector<std::size_t> ambiguous() const;
   bool placed(std::size_t i) const;  ///< adjusted and not ambiguous
   /// Every station placed, none ambiguous, and georeferenced when control points were given.
   bool complete() const {
     return unplaced.empty() && competing.ambiguous.empty() && copies_unchecked.empty() && one_loop.empty() &&
-           (!georeference || georeference->done);
+           contested.empty() && (!georeference || georeference->done);
   }
 };
 

@@ -107,7 +107,12 @@ nlohmann::json stationJson(const NetworkResult& r, const std::vector<Station>& s
         : std::binary_search(r.one_loop.begin(), r.one_loop.end(), i)
             ? "one loop: a dropped link contradicted the only path placing it, and one loop cannot tell which "
               "link was wrong"
+        : std::binary_search(r.contested.begin(), r.contested.end(), i)
+            ? "contested: one link no loop checks placed it, and the free space of the confirmed stations "
+              "contests that placement"
             : "copies: the BIM fits it in several places and only links no loop checks chose one";
+  else if (std::binary_search(r.unchecked.begin(), r.unchecked.end(), i))
+    j["unchecked"] = true;  // placed by one link no loop checks (a bridge)
   if (const auto& p = r.adjustment.poses[i]) {  // an ambiguous station keeps the adopted pose, for inspection
     j["pose"] = matrixJson(*p);
     j["transform"] = matrixJson(*stationTransform(r, st, i));
@@ -173,6 +178,7 @@ nlohmann::json networkJson(const NetworkResult& r, const std::vector<Station>& s
           {"residual_translation_mean_m", res.mean()}, {"residual_translation_max_m", res.max},
           {"unplaced", names(st, r.unplaced)}, {"ambiguous", names(st, r.ambiguous())},
           {"copies_unchecked", names(st, r.copies_unchecked)}, {"one_loop", names(st, r.one_loop)},
+          {"unchecked", names(st, r.unchecked)}, {"contested", names(st, r.contested)},
           {"placed_by_own_control", names(st, r.placed_by_own_control)},
           {"settled_by_free_space", names(st, r.free_space.settled)}, {"seconds_free_space", r.free_space.seconds},
           {"competing", competingJson(r, st)}, {"parts", parts}, {"solves", r.adjustment.solves},
@@ -299,7 +305,10 @@ std::string networkReportToText(const NetworkResult& r, const std::vector<Statio
     if (s.contains("placed_by")) o << "placed by its own control points (no link to the reference), ";
     if (s.value("settled_by_control", false)) o << "confirmed by the 3+ control points it sees, ";
     if (s.contains("free_space") && s["free_space"]["settled"].get<bool>())
-      o << "ambiguous by its links, " << s["free_space"]["why"].get<std::string>() << ", ";
+      o << (s.value("unchecked", false) ? "one unchecked link placed it, " : "ambiguous by its links, ")
+        << s["free_space"]["why"].get<std::string>() << ", ";
+    else if (s.value("unchecked", false))
+      o << "placed by one link no loop checks, not confirmed by the free space, ";
     o << std::setprecision(2) << "sigma " << 1000 * sp[0].get<double>() << ", " << 1000 * sp[1].get<double>() << ", "
       << 1000 * sp[2].get<double>() << " mm\n";
   }

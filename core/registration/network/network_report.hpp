@@ -3,11 +3,12 @@
 // {"format": "plumb-network-report", "version": 1, "complete": bool, "exit_code": n,
 //  "reference": name,
 //  "stations": [{"name", "file", "scan", "placed", "ambiguous", "ambiguous_why" (when ambiguous),
-//                "model" (the BIM node, last),
+//                "model" (the BIM node, last), "unchecked" (placed by one link no loop checks,
+//                unchecked_stations.hpp),
 //                "pose": {"matrix"}, "transform": {"matrix"}
 //                (file frame -> registered frame), "sigma_position_m": [x,y,z],
 //                "sigma_rotation_deg": [x,y,z], "links": [link indices],
-//                "free_space" (an ambiguous station judged, free_space_judge.hpp): {"settled",
+//                "free_space" (an ambiguous or unchecked station judged, free_space_judge.hpp): {"settled",
 //                "why", "round", "decided" (the placement chosen), "placements": [{"source",
 //                "tally": {"visible", "contradicting", "ratio"}, "judged", "clean"}]},
 //                "mms_window_s" (a window of an MMS pass): {"pass", "start", "end"}}],
@@ -25,7 +26,9 @@
 //              "translation_m", "rotation_deg"}], "loop_translation_mean_m",
 //              "loop_translation_max_m", "loop_rotation_mean_deg", "loop_rotation_max_deg",
 //              "residual_translation_mean_m", "residual_translation_max_m", "unplaced": [names],
-//              "ambiguous": [names], "copies_unchecked": [names], "one_loop": [names], "competing": [{"link",
+//              "ambiguous": [names], "copies_unchecked": [names], "one_loop": [names], "unchecked":
+//              [names] (placed by one link no loop checks), "contested": [names] (of those, the
+//              ones the free space contests: ambiguous), "competing": [{"link",
 //              "corroborated", "competes", "links_dropped", "sequence_links_dropped",
 //              "model_links_dropped", "stations_moved": [names],
 //              "max_translation_m", "max_rotation_deg"}] (one per dropped link taken as true),

@@ -459,8 +459,9 @@ int main(int argc, char** argv) {
     const GeneratedBuilding b = generateBuilding(o.smoke ? smokeBuilding() : buildingPreset(o.preset));
     std::printf("# stations in every room and doorway, each perturbed by yaw +-180 deg, shift <= 20 m; errors vs truth\n");
     std::printf("# targets: rotation <= 0.02 deg, position <= 5 mm; chain = best spanning tree of the same links\n");
-    std::printf("# unpl: not placed (ambiguous included); ambig: ambiguous (two loop-checked placements, or BIM\n"
-                "# copies only unchecked links chose from); stn counts the model with --bim;\n"
+    std::printf("# unpl: not placed (ambiguous included); ambig: ambiguous (two loop-checked placements, one loop,\n"
+                "# BIM copies only unchecked links chose from, or one unchecked link the free space contests);\n"
+                "# stn counts the model with --bim;\n"
                 "# wrong: placed but off by > 0.2 deg or 5 cm (a confident wrong placement when exit is 0 or 3)\n");
     std::printf("%-12s %4s %4s %11s %4s %4s %8s %8s %8s %8s %5s %7s %7s %7s %7s %7s %6s %5s %5s %5s %4s\n", "preset", "seed",
                 "stn", "pairs/all", "acc", "drop", "net_deg", "net_mm", "chn_deg", "chn_mm", "loops", "loop_mm", "loopmax",

@@ -8,6 +8,7 @@
 
 #include "registration/network/free_space_judge.hpp"
 #include "registration/network/network_registration.hpp"
+#include "registration/network/unchecked_stations.hpp"
 #include "simulation/building_generator.hpp"
 #include "simulation/presets.hpp"
 #include "simulation/survey.hpp"
@@ -193,6 +194,88 @@ TEST(FreeSpaceJudge, TheNetworkTakesTheBimCopyTheFreeSpaceChoseAndDropsTheTwinLi
   const NetworkResult before = adjustRegisteredLinks(st, links, model, off);
   EXPECT_TRUE(before.isAmbiguous(1));
   EXPECT_GT(RigidTransform::translationError(*before.adjustment.poses[1], *t.truth[1]), 3.0);
+}
+
+/// Stations 0 and 2 on the model and joined by a link (a loop through the model: both
+/// confirmed), station 1 onto the model by a usable link at `one_on_model` (its only link to
+/// the model), plus `more` links.
+NetworkResult withStationOneOnTheModel(const RigidTransform& one_on_model, std::vector<Link> more = {},
+                                       NetworkParams params = {}) {
+  const TwinRooms& t = twinRooms();
+  std::vector<Station> st = t.stations;
+  st.push_back(modelStation(t.model, "twin.ifc"));
+  const std::size_t model = 3;
+  std::vector<Link> links{handLink(0, model, t.truth[0]->inverse(), "model"),
+                          handLink(2, model, t.truth[2]->inverse(), "model"),
+                          handLink(0, 2, t.truth[0]->inverse() * *t.truth[2], "layout"),
+                          handLink(1, model, one_on_model.inverse(), "model")};
+  links.insert(links.end(), more.begin(), more.end());
+  return adjustRegisteredLinks(st, links, model, params);
+}
+
+TEST(FreeSpaceJudge, AStationOneUnconfirmedLinkPlacesIsJudgedAndObservesOnceSettled) {
+  const TwinRooms& t = twinRooms();
+  const NetworkResult r = withStationOneOnTheModel(*t.truth[1]);
+  EXPECT_EQ(r.unchecked, std::vector<std::size_t>{1}) << "0 and 2 close a loop through the model";
+  EXPECT_TRUE(r.placed(1));
+  EXPECT_EQ(r.free_space.settled, std::vector<std::size_t>{1});
+  EXPECT_TRUE(r.contested.empty());
+  EXPECT_TRUE(r.complete());
+}
+
+TEST(FreeSpaceJudge, AUsableLinkToTheBimPlacingAStationInTheTwinRoomIsContested) {
+  // The BIM link is usable, nothing checks it, and it puts station 1 in room 1, where the
+  // confirmed stations saw through its furniture: ambiguous, not placed.
+  const TwinRooms& t = twinRooms();
+  const NetworkResult r = withStationOneOnTheModel(t.twin * *t.truth[1]);
+  EXPECT_EQ(r.unchecked, std::vector<std::size_t>{1});
+  EXPECT_EQ(r.contested, std::vector<std::size_t>{1});
+  EXPECT_TRUE(r.isAmbiguous(1));
+  EXPECT_FALSE(r.placed(1));
+  EXPECT_FALSE(r.complete());
+  ASSERT_EQ(r.free_space.stations.size(), 1u);
+  EXPECT_FALSE(r.free_space.stations[0].placements[0].clean) << r.free_space.stations[0].why;
+  // Without the judge, the same links place it there.
+  NetworkParams off;
+  off.free_space.enabled = false;
+  const NetworkResult before = withStationOneOnTheModel(t.twin * *t.truth[1], {}, off);
+  EXPECT_TRUE(before.placed(1));
+  EXPECT_GT(RigidTransform::translationError(*before.adjustment.poses[1], *t.truth[1]), 3.0);
+}
+
+TEST(FreeSpaceJudge, AnAmbiguousLinkOfTheUncheckedStationOffersTheRightPlacement) {
+  // Station 1's link onto station 0 was ambiguous: its chosen placement the twin, its competing
+  // one the truth. The free space chooses the truth; that link is taken as true at it and the
+  // wrong link to the BIM is dropped.
+  const TwinRooms& t = twinRooms();
+  const RigidTransform twin1 = t.twin * *t.truth[1];
+  Link ambiguous = handLink(0, 1, t.truth[0]->inverse() * twin1, "layout", false);
+  ambiguous.alternatives.push_back({t.truth[0]->inverse() * *t.truth[1], "competing", 0.9, 0.002});
+  const NetworkResult r = withStationOneOnTheModel(twin1, {ambiguous});
+  ASSERT_TRUE(r.adjustment.poses[1]);
+  EXPECT_TRUE(r.placed(1));
+  EXPECT_LT(RigidTransform::translationError(*r.adjustment.poses[1], *t.truth[1]), 0.001);
+  EXPECT_EQ(r.links[4].decision, kFreeSpaceDecision);
+  EXPECT_TRUE(r.links[4].accepted);
+  EXPECT_LT(RigidTransform::translationError(r.links[4].transform, ambiguous.alternatives[0].transform), 1e-9);
+  bool bim_dropped = false;
+  for (std::size_t k = 0; k < r.adjusted.size(); ++k)
+    if (r.adjusted[k] == 3) bim_dropped = r.adjustment.links[k].dropped;
+  EXPECT_TRUE(bim_dropped) << "the BIM link contradicts the placement the free space chose";
+  EXPECT_TRUE(r.complete());
+}
+
+TEST(FreeSpaceJudge, UncheckedStationsAreThoseOneBridgePlaces) {
+  const TwinRooms& t = twinRooms();
+  const NetworkResult r = withStationOneOnTheModel(*t.truth[1]);
+  EXPECT_EQ(uncheckedStations([&] {
+              auto st = t.stations;
+              st.push_back(modelStation(t.model, "twin.ifc"));
+              return st;
+            }(), r),
+            std::vector<std::size_t>{1});
+  // The station settled is confirmed now: the report says how it was placed.
+  EXPECT_NE(r.free_space.stations.at(0).why.find("settled by the free space"), std::string::npos);
 }
 
 TEST(FreeSpaceJudge, DisabledOrNothingAmbiguousJudgesNothing) {
