@@ -27,6 +27,15 @@ RegistrationSide withoutFeatures(RegistrationSide side) {
   return side;
 }
 
+/// A failed link's transform: the chosen candidate as refined when the pipeline refined it (an
+/// ambiguous link's report.transform is the global step's, unrefined), else `fallback`. What the
+/// free-space judge offers as that link's placement (unchecked_stations.hpp).
+RigidTransform refinedChoice(const std::vector<PlacementCandidate>& candidates, const RigidTransform& fallback) {
+  for (const auto& c : candidates)
+    if (c.role == "chosen" && c.refined) return c.transform;
+  return fallback;
+}
+
 /// The refined candidates other than the chosen one and those converging onto it or ruled out
 /// by the free space.
 std::vector<LinkAlternative> alternativesOf(const PipelineResult& r) {
@@ -92,6 +101,9 @@ Link linkFromReport(const nlohmann::json& j, const CandidatePair& pair, bool ont
       if (!resistance.empty()) link.weakest_resistance = *std::min_element(resistance.begin(), resistance.end());
     }
     link.seconds = secondsOf(j);
+    if (!onto_model && !link.registered && j.contains("candidates"))  // as refinedChoice
+      for (const auto& c : j["candidates"])
+        if (c.value("refined", false) && c.value("role", "") == "chosen") link.transform = matrixFrom(c.at("transform"));
     if (!onto_model && j.contains("candidates"))
       for (const auto& c : j["candidates"])
         if (c.value("refined", false) && (c.value("role", "") == "competing" || c.value("role", "") == "worse"))
@@ -133,6 +145,7 @@ Link registerLink(const Station& a, const Station& b, const CandidatePair& pair,
   link.weakest_resistance = *std::min_element(r.report.direction_resistance.begin(), r.report.direction_resistance.end());
   link.length_scale = r.refinement ? r.refinement->length_scale : 0.0;
   if (!onto_model) link.alternatives = alternativesOf(r);
+  if (!onto_model && !link.registered) link.transform = refinedChoice(r.report.candidates, link.transform);
   if (onto_model)
     for (const auto& c : r.report.candidates)
       if (c.refined) link.model_candidates.push_back(c.transform);

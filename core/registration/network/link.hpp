@@ -28,7 +28,9 @@ struct Link {
   std::size_t a = 0, b = 0;
   std::string reason;        ///< why the pair was tried (CandidatePair::reason)
   double similarity = 0.0;   ///< layout similarity
-  RigidTransform transform;  ///< b's frame -> a's frame (meaningful when registered)
+  /// b's frame -> a's frame: meaningful when registered, and for a link that failed as
+  /// ambiguous, its chosen placement as refined (the competing ones are `alternatives`).
+  RigidTransform transform;
   bool registered = false;   ///< the pipeline gave a transform (usable or check visually)
   bool accepted = false;     ///< used in the adjustment (registered, and verdict accepted)
   VerdictLevel level = VerdictLevel::Failed;

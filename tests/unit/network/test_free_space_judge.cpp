@@ -7,7 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "registration/network/free_space_judge.hpp"
+#include <nlohmann/json.hpp>
+
 #include "registration/network/network_registration.hpp"
+#include "registration/network/network_report.hpp"
 #include "registration/network/unchecked_stations.hpp"
 #include "simulation/building_generator.hpp"
 #include "simulation/presets.hpp"
@@ -221,6 +224,13 @@ TEST(FreeSpaceJudge, AStationOneUnconfirmedLinkPlacesIsJudgedAndObservesOnceSett
   EXPECT_EQ(r.free_space.settled, std::vector<std::size_t>{1});
   EXPECT_TRUE(r.contested.empty());
   EXPECT_TRUE(r.complete());
+  std::vector<Station> st = t.stations;
+  st.push_back(modelStation(t.model, "twin.ifc"));
+  const auto report = networkReportToJson(r, st);
+  EXPECT_TRUE(report["stations"][1].value("unchecked", false));
+  EXPECT_EQ(report["network"]["unchecked"], nlohmann::json::array({st[1].name}));
+  EXPECT_NE(networkReportToText(r, st).find("one unchecked link placed it, settled by the free space"),
+            std::string::npos);
 }
 
 TEST(FreeSpaceJudge, AUsableLinkToTheBimPlacingAStationInTheTwinRoomIsContested) {
@@ -235,6 +245,13 @@ TEST(FreeSpaceJudge, AUsableLinkToTheBimPlacingAStationInTheTwinRoomIsContested)
   EXPECT_FALSE(r.complete());
   ASSERT_EQ(r.free_space.stations.size(), 1u);
   EXPECT_FALSE(r.free_space.stations[0].placements[0].clean) << r.free_space.stations[0].why;
+  std::vector<Station> st = t.stations;
+  st.push_back(modelStation(t.model, "twin.ifc"));
+  const auto report = networkReportToJson(r, st);
+  EXPECT_EQ(report["network"]["contested"], nlohmann::json::array({st[1].name}));
+  EXPECT_EQ(report["stations"][1]["ambiguous_why"].get<std::string>().rfind("contested:", 0), 0u);
+  EXPECT_EQ(networkExitCode(r), 2);
+  EXPECT_NE(networkReportToText(r, st).find("AMBIGUOUS (contested"), std::string::npos);
   // Without the judge, the same links place it there.
   NetworkParams off;
   off.free_space.enabled = false;
