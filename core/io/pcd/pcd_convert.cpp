@@ -132,9 +132,10 @@ std::string readScalarFields(const Records& r, PointCloud& c) {
 }
 
 /// Organized (height > 1): every grid cell kept, NaN included, with its row and column
-/// (`first`: the file's index of the first record).
+/// (`first`: the file's index of the first record). A grid of width 0 has no cell: no grid
+/// (the stream's one-record probe of the columns still passes here; fuzz_pcd found the division).
 void keepGridOrDropNaN(const PcdLayout& layout, std::uint64_t first, PointCloud& c) {
-  if (layout.height <= 1) {
+  if (layout.height <= 1 || layout.width == 0) {
     c.removeNonFinite();
     return;
   }

@@ -164,6 +164,21 @@ TEST(PcdChunks, AsciiAndEmptyFilesTakeTheWholeFileRoute) {
   EXPECT_EQ(g.end.points, 0u);
 }
 
+TEST(PcdChunks, AGridOfZeroWidthIsEmptyNeverACrash) {
+  // WIDTH 0 x HEIGHT 3: no point. fuzz_pcd found the organized-grid code dividing by the width
+  // (SIGFPE in plumb-cli info) before any data was read. Bytes after the declared points are
+  // ignored, as for any PCD (PCL does the same): both routes give an empty cloud.
+  const auto dir = test::scratchDir("pcd_chunks_zero_width");
+  const std::string header = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 0\nHEIGHT 3\nDATA binary\n";
+  for (const std::string& data : {std::string(), std::string(12, '\x01')}) {
+    test::writeAll(dir / "zero.pcd", header + data);
+    EXPECT_EQ(readPcd(dir / "zero.pcd").pointCount(), 0u) << data.size() << " data bytes";
+    const Gather g = streamed(dir / "zero.pcd");
+    EXPECT_EQ(g.all.size(), 0u) << data.size() << " data bytes";
+    EXPECT_EQ(g.end.points, 0u);
+  }
+}
+
 /// The message of the FileError streaming `path` throws ("" if none).
 std::string streamError(const std::filesystem::path& path) {
   try {
