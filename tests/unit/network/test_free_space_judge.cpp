@@ -105,6 +105,30 @@ TEST(FreeSpaceJudge, ChoosesTheRightPlacementOverAnAdoptedTwin) {
   EXPECT_NE(s.why.find("placed by the free space at the BIM's placement 2"), std::string::npos) << s.why;
 }
 
+TEST(FreeSpaceJudge, OfHypothesesPlacingTheStationAlikeTheOneMovingFewestIsTaken) {
+  // Adopted: station 1 in its twin. Two hypotheses put it back at the truth, first a dropped
+  // link taken as true that also moves station 2 (by a few centimetres, so that both tallies
+  // are the same), then a BIM copy moving station 1 alone. Only station 1 was judged: the BIM
+  // copy is taken, not the link with its side effects.
+  const TwinRooms& t = twinRooms();
+  auto adopted = t.truth;
+  adopted[1] = t.twin * *t.truth[1];
+  auto link = twinOf(adopted, t.twin.inverse(), "the link 0 - 1 taken as true");
+  link.moved = {1, 2};
+  link.poses[2] = RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.03, 0, 0)) * *t.truth[2];
+  link.link = 7;
+  auto copy = twinOf(adopted, t.twin.inverse(), "the BIM's placement 2");
+  copy.bim_candidate = 1;
+  const auto j = judgeByFreeSpace(t.stations, adopted, {1}, {0, 2}, {link, copy}, FreeSpaceJudgeParams{},
+                                  PoseGraphParams{}, VisibilityParams{});
+  ASSERT_EQ(j.stations.size(), 1u);
+  EXPECT_TRUE(j.stations[0].placements[1].clean && j.stations[0].placements[2].clean) << j.stations[0].why;
+  ASSERT_EQ(j.chosen.size(), 1u) << j.stations[0].why;
+  EXPECT_EQ(j.chosen[0].second.source, "the BIM's placement 2");
+  EXPECT_FALSE(j.chosen[0].second.link);
+  EXPECT_NE(j.stations[0].why.find("at the BIM's placement 2"), std::string::npos) << j.stations[0].why;
+}
+
 TEST(FreeSpaceJudge, TwoCleanPlacementsDecideNothing) {
   const TwinRooms& t = twinRooms();
   // 8 cm off: another placement (beyond the 5 cm drop threshold), yet within the free-space
