@@ -12,7 +12,8 @@
 // where the stations of that room saw through, and the twin's furniture where it saw through.
 //
 // The judge tests each placement of an ambiguous station, the adopted one and every hypothesis
-// that moves it (a dropped link taken as true, a copy the BIM offered), against the observers,
+// that moves it (a dropped link taken as true, a copy the BIM offered, an unchecked station's
+// ambiguous link at one of its placements), against the observers,
 // in both directions. Observers are stations whose placement evidence from outside the links
 // confirms (the reference station, a kept link to the BIM, three control points): stations
 // placed only by links can be wrong together (office-floor without a BIM places its east half
@@ -104,9 +105,8 @@ struct FreeSpaceJudgement {
 
 /// Judges the `ambiguous` stations (sorted; with the unchecked ones, unchecked_stations.hpp) of
 /// the adopted `poses` against the `hypotheses`, observed by the `confirmed` stations (sorted;
-/// the placed ones not judged are used). Two
-/// poses within `graph`'s drop thresholds are one placement. The model node, if any, is neither
-/// judged nor an observer.
+/// the placed ones not judged are used). Two poses within `graph`'s drop thresholds are one
+/// placement. The model node, if any, is neither judged nor an observer.
 FreeSpaceJudgement judgeByFreeSpace(const std::vector<Station>& stations,
                                     const std::vector<std::optional<RigidTransform>>& poses,
                                     const std::vector<std::size_t>& ambiguous,

@@ -140,11 +140,6 @@ struct ControlSolve {
   std::vector<RigidTransform> poses; ///< ground frame
 };
 
-bool beyondDrop(const RigidTransform& x, const RigidTransform& y, const PoseGraphParams& p) {
-  return RigidTransform::translationError(x, y) > p.drop_translation ||
-         RigidTransform::rotationErrorDeg(x, y) > p.drop_rotation;
-}
-
 /// Start: every placed station moved by `fit`, except a station that sees 3 control points
 /// itself and whose own resection puts it elsewhere (beyond the drop thresholds): the control
 /// says its links placed it wrong, so it starts where the control puts it. A station with fewer
@@ -163,7 +158,7 @@ ControlSolve startControlSolve(const ControlSurvey& survey, const std::vector<Se
       if (!survey.points[s.point].check) own.push_back(s);
     if (spanProblem(survey, own).empty()) {
       const RigidTransform resection = fitControl(survey, own, [](const Seen& s) { return s.observed; });
-      if (beyondDrop(resection, c.poses[i], params)) c.poses[i] = resection;
+      if (!samePlacement(resection, c.poses[i], params)) c.poses[i] = resection;
     } else if (std::any_of(own.begin(), own.end(),
                            [&](const Seen& s) { return misfit(survey, s, c.poses[i]) > grossError(params); })) {
       c.placed[i] = false;

@@ -120,7 +120,8 @@ struct FreeSpaceJudgeParams {
   /// Stations whose placed boxes come within this distance are tested against each other, m,
   /// [0, 100].
   double box_margin = 0.5;
-  /// Adjustments again after the judge placed stations at the BIM's copies, at most, [0, 10].
+  /// Adjustments again after the judge placed stations elsewhere (a link or a BIM copy taken as
+  /// true), at most, [0, 10].
   int max_rounds = 3;
   static const ParamSchema<FreeSpaceJudgeParams>& schema();
 };

@@ -167,10 +167,11 @@ std::vector<PlacementHypothesis> ambiguityHypotheses(const std::vector<Station>&
 }
 
 /// Stations whose placement evidence from outside the links confirms: the reference station, a
-/// kept link to the BIM that is not its only, unchecked link (out.unchecked), or three control
-/// points seen (Georeference::settled); sorted.
+/// kept link to the BIM that is not its only, unchecked link (out.unchecked), three control
+/// points seen (Georeference::settled), or the judge's observers of the previous adjustment
+/// still placed alike (`still_observing`); sorted.
 std::vector<std::size_t> confirmedStations(const std::vector<AdjustmentLink>& links, const NetworkResult& out,
-                                           const std::vector<std::size_t>& observed_before) {
+                                           const std::vector<std::size_t>& still_observing) {
   std::vector<std::size_t> confirmed{out.reference};
   for (std::size_t k = 0; k < links.size(); ++k)
     if (links[k].anchor && !out.adjustment.links[k].dropped) confirmed.push_back(std::min(links[k].a, links[k].b));
@@ -180,23 +181,28 @@ std::vector<std::size_t> confirmedStations(const std::vector<AdjustmentLink>& li
   std::vector<std::size_t> out_confirmed;
   std::set_difference(confirmed.begin(), confirmed.end(), out.unchecked.begin(), out.unchecked.end(),
                       std::back_inserter(out_confirmed));
-  sortedUnion(out_confirmed, observed_before);
+  sortedUnion(out_confirmed, still_observing);
   return out_confirmed;
 }
 
-/// The stations of out.observed_before the adjustment still places alike; sorted.
-std::vector<std::size_t> stillObserving(const NetworkResult& out, const PoseGraphParams& graph) {
+/// Stations at their poses in an adjustment: the free-space judge's observers of the adjustment
+/// before the current one (after it took a placement as true, or refined on points).
+using PlacedObservers = std::vector<std::pair<std::size_t, RigidTransform>>;
+
+/// The stations of `before` the adjustment of `out` still places alike: they observe again;
+/// sorted.
+std::vector<std::size_t> stillObserving(const NetworkResult& out, const PlacedObservers& before,
+                                        const PoseGraphParams& graph) {
   std::vector<std::size_t> kept;
-  for (const auto& [i, pose] : out.observed_before)
+  for (const auto& [i, pose] : before)
     if (const auto& now = out.adjustment.poses[i]; now && samePlacement(*now, pose, graph)) kept.push_back(i);
   std::sort(kept.begin(), kept.end());
   return kept;
 }
 
-/// The judge's observers of `out` at their poses (NetworkResult::observed_before of the next
-/// adjustment).
-std::vector<std::pair<std::size_t, RigidTransform>> observersOf(const NetworkResult& out) {
-  std::vector<std::pair<std::size_t, RigidTransform>> o;
+/// The judge's observers of `out` at their poses: what the next adjustment starts from.
+PlacedObservers observersOf(const NetworkResult& out) {
+  PlacedObservers o;
   for (const std::size_t i : out.free_space.observers)
     if (out.adjustment.poses[i]) o.emplace_back(i, *out.adjustment.poses[i]);
   return o;
@@ -205,8 +211,8 @@ std::vector<std::pair<std::size_t, RigidTransform>> observersOf(const NetworkRes
 /// Ambiguous and unchecked stations the free space of the confirmed ones settles or places
 /// (free_space_judge.hpp); the unchecked ones whose placement it contests become ambiguous.
 void settleByFreeSpace(const std::vector<Station>& stations, const std::vector<AdjustmentLink>& links,
-                       const NetworkParams& params, NetworkResult& out) {
-  const std::vector<std::size_t> before = stillObserving(out, params.graph);
+                       const NetworkParams& params, const PlacedObservers& observed_before, NetworkResult& out) {
+  const std::vector<std::size_t> before = stillObserving(out, observed_before, params.graph);
   out.unchecked.clear();
   if (params.free_space.enabled) {
     const auto unchecked = uncheckedStations(stations, out);
@@ -222,8 +228,10 @@ void settleByFreeSpace(const std::vector<Station>& stations, const std::vector<A
   out.contested = contestedStations(out.free_space, out.unchecked, params.graph);
 }
 
+/// `out`'s accepted links adjusted, checked and judged; `observed_before`: the free-space judge's
+/// observers of the previous adjustment, if any.
 void adjust(const std::vector<Station>& stations, const NetworkParams& params, const ControlSurvey* control,
-            NetworkResult& out, const LockedStations& locked = {}) {
+            NetworkResult& out, const LockedStations& locked = {}, const PlacedObservers& observed_before = {}) {
   std::vector<AdjustmentLink> links;
   std::vector<std::size_t> forced;  // the surveyor's accepted links, local indices
   for (std::size_t k = 0; k < out.links.size(); ++k) {
@@ -246,7 +254,7 @@ void adjust(const std::vector<Station>& stations, const NetworkParams& params, c
     placePartsByOwnControl(stations, links, params, *control, out);
     settleByControl(out);
   }
-  settleByFreeSpace(stations, links, params, out);
+  settleByFreeSpace(stations, links, params, observed_before, out);
   for (std::size_t i = 0; i < stations.size(); ++i)
     if (!out.adjustment.poses[i]) out.unplaced.push_back(i);
   std::vector<GraphEdge> kept;
@@ -300,8 +308,7 @@ void refineOnPoints(const std::vector<Station>& stations, const NetworkParams& p
   if (!refined.empty()) {
     NetworkResult again = registrationFacts(out);
     again.links = withRefinedPairs(out.links, refined);
-    again.observed_before = observersOf(out);
-    adjust(stations, params, control, again, locked);
+    adjust(stations, params, control, again, locked, observersOf(out));
     out = std::move(again);
   }
   out.final_refinement = summary;
@@ -315,9 +322,8 @@ void adjustAndRefine(const std::vector<Station>& stations, const NetworkParams& 
   for (int round = 0; round < params.free_space.max_rounds && !out.free_space.chosen.empty(); ++round) {
     NetworkResult again = registrationFacts(out);
     again.links = out.links;
-    again.observed_before = observersOf(out);
     takeFreeSpaceChoices(out.free_space, stations.size() - 1, again.links);
-    adjust(stations, params, control, again, locked);
+    adjust(stations, params, control, again, locked, observersOf(out));
     out = std::move(again);
   }
   refineOnPoints(stations, params, control, out, locked);

@@ -78,10 +78,6 @@ struct NetworkResult {
   /// ambiguous ones (unchecked_stations.hpp), sorted; and those of them whose placement the free
   /// space contests: ambiguous, not placed.
   std::vector<std::size_t> unchecked, contested;
-  /// The free-space judge's observers of the adjustment before this one, at their poses then
-  /// (after it took a placement as true, or refined on points): those still placed alike
-  /// observe again (NetworkParams::free_space); not reported.
-  std::vector<std::pair<std::size_t, RigidTransform>> observed_before;
   /// In competing.ambiguous, copies_unchecked, one_loop or contested: adjusted, but not placed.
   bool isAmbiguous(std::size_t i) const;
   /// The ambiguous stations, sorted (the union of the four lists).

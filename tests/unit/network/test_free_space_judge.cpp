@@ -53,6 +53,16 @@ const TwinRooms& twinRooms() {
   return t;
 }
 
+/// The three stations, then the model node (index 3).
+const std::vector<Station>& stationsAndModel() {
+  static const std::vector<Station> st = [] {
+    std::vector<Station> s = twinRooms().stations;
+    s.push_back(modelStation(twinRooms().model, "twin.ifc"));
+    return s;
+  }();
+  return st;
+}
+
 /// Station 1 moved into room 1 (its twin placement) in a copy of `poses`.
 PlacementHypothesis twinOf(const std::vector<std::optional<RigidTransform>>& poses, const RigidTransform& move,
                            const std::string& source) {
@@ -195,8 +205,7 @@ TEST(FreeSpaceJudge, TheNetworkTakesTheBimCopyTheFreeSpaceChoseAndDropsTheTwinLi
   // Stations 0 and 2 registered onto the model; station 1 ambiguous on it (its copies: the
   // truth and the twin corner of room 1), placed by one wrong link onto station 0 (the twin).
   const TwinRooms& t = twinRooms();
-  std::vector<Station> st = t.stations;
-  st.push_back(modelStation(t.model, "twin.ifc"));
+  const std::vector<Station>& st = stationsAndModel();
   const std::size_t model = 3;
   const RigidTransform twin1 = t.twin * *t.truth[1];
   std::vector<Link> links{handLink(0, model, t.truth[0]->inverse(), "model"),
@@ -229,8 +238,7 @@ TEST(FreeSpaceJudge, TheNetworkTakesTheBimCopyTheFreeSpaceChoseAndDropsTheTwinLi
 NetworkResult withStationOneOnTheModel(const RigidTransform& one_on_model, std::vector<Link> more = {},
                                        NetworkParams params = {}) {
   const TwinRooms& t = twinRooms();
-  std::vector<Station> st = t.stations;
-  st.push_back(modelStation(t.model, "twin.ifc"));
+  const std::vector<Station>& st = stationsAndModel();
   const std::size_t model = 3;
   std::vector<Link> links{handLink(0, model, t.truth[0]->inverse(), "model"),
                           handLink(2, model, t.truth[2]->inverse(), "model"),
@@ -248,8 +256,7 @@ TEST(FreeSpaceJudge, AStationOneUnconfirmedLinkPlacesIsJudgedAndObservesOnceSett
   EXPECT_EQ(r.free_space.settled, std::vector<std::size_t>{1});
   EXPECT_TRUE(r.contested.empty());
   EXPECT_TRUE(r.complete());
-  std::vector<Station> st = t.stations;
-  st.push_back(modelStation(t.model, "twin.ifc"));
+  const std::vector<Station>& st = stationsAndModel();
   const auto report = networkReportToJson(r, st);
   EXPECT_TRUE(report["stations"][1].value("unchecked", false));
   EXPECT_EQ(report["network"]["unchecked"], nlohmann::json::array({st[1].name}));
@@ -269,8 +276,7 @@ TEST(FreeSpaceJudge, AUsableLinkToTheBimPlacingAStationInTheTwinRoomIsContested)
   EXPECT_FALSE(r.complete());
   ASSERT_EQ(r.free_space.stations.size(), 1u);
   EXPECT_FALSE(r.free_space.stations[0].placements[0].clean) << r.free_space.stations[0].why;
-  std::vector<Station> st = t.stations;
-  st.push_back(modelStation(t.model, "twin.ifc"));
+  const std::vector<Station>& st = stationsAndModel();
   const auto report = networkReportToJson(r, st);
   EXPECT_EQ(report["network"]["contested"], nlohmann::json::array({st[1].name}));
   EXPECT_EQ(report["stations"][1]["ambiguous_why"].get<std::string>().rfind("contested:", 0), 0u);
@@ -309,12 +315,7 @@ TEST(FreeSpaceJudge, AnAmbiguousLinkOfTheUncheckedStationOffersTheRightPlacement
 TEST(FreeSpaceJudge, UncheckedStationsAreThoseOneBridgePlaces) {
   const TwinRooms& t = twinRooms();
   const NetworkResult r = withStationOneOnTheModel(*t.truth[1]);
-  EXPECT_EQ(uncheckedStations([&] {
-              auto st = t.stations;
-              st.push_back(modelStation(t.model, "twin.ifc"));
-              return st;
-            }(), r),
-            std::vector<std::size_t>{1});
+  EXPECT_EQ(uncheckedStations(stationsAndModel(), r), std::vector<std::size_t>{1});
   // The station settled is confirmed now: the report says how it was placed.
   EXPECT_NE(r.free_space.stations.at(0).why.find("settled by the free space"), std::string::npos);
 }
